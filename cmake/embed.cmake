@@ -1,0 +1,19 @@
+# Embeds shaders/ and scenarios/*.json into the binary so `sylva` runs from anywhere and the
+# default scenario needs no file. Lookup: sylva::embedded_file("shaders/terrain.vert").
+function(sylva_embed out_var)
+  set(files)
+  foreach(dir ${ARGN})
+    file(GLOB_RECURSE found CONFIGURE_DEPENDS ${dir}/*.glsl ${dir}/*.vert ${dir}/*.frag
+         ${dir}/*.geom ${dir}/*.comp ${dir}/*.json)
+    list(APPEND files ${found})
+  endforeach()
+  list(SORT files)
+  set(out ${CMAKE_BINARY_DIR}/embedded/embedded_files.cpp)
+  add_custom_command(
+    OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DROOT=${CMAKE_SOURCE_DIR} "-DFILES=${files}"
+            -P ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
+    DEPENDS ${files} ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
+    COMMENT "Embedding shaders and scenarios")
+  set(${out_var} ${out} PARENT_SCOPE)
+endfunction()
