@@ -1,0 +1,34 @@
+#pragma once
+// Owns the thread budget of a run: a tbb::task_arena with exactly `threads` concurrency. Every
+// parallel_for and system task started inside run() stays in that arena, so "--threads 2" means
+// two threads end to end. Results do not depend on it (see parallel.h); only speed does.
+#include <oneapi/tbb/task_arena.h>
+
+#include <memory>
+#include <utility>
+
+namespace sylva::ecs {
+
+class executor {
+public:
+    explicit executor(int threads);  // threads <= 0: TBB's default concurrency
+    executor(const executor&) = delete;
+    executor& operator=(const executor&) = delete;
+
+    int threads() const { return m_threads; }
+
+    // Runs f inside the arena on the calling thread when it can join (TBB reserves one slot for
+    // it); calling run() again from inside f just calls f.
+    template <class F>
+    decltype(auto) run(F&& f) {
+        return m_arena->execute(std::forward<F>(f));
+    }
+
+    tbb::task_arena& arena() { return *m_arena; }
+
+private:
+    int m_threads;
+    std::unique_ptr<tbb::task_arena> m_arena;
+};
+
+}  // namespace sylva::ecs
