@@ -1,0 +1,22 @@
+#include <OpenImageIO/imageio.h>
+#include <stdexcept>
+#include <string>
+
+#include "models/textures.h"
+
+namespace sylva {
+
+void write_image(const image_rgba8& image, const std::filesystem::path& path) {
+    const std::string name = path.string();
+    if (image.width == 0 || image.height == 0 || image.texels.size() != std::size_t(image.width) * image.height * 4)
+        throw std::runtime_error("write_image: " + name + ": image is empty or its texel count is wrong");
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) throw std::runtime_error("write_image: " + name + ": no writer (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4, OIIO::TypeDesc::UINT8);
+    if (!out->open(name, spec)) throw std::runtime_error("write_image: cannot open " + name + ": " + out->geterror());
+    const bool written = out->write_image(OIIO::TypeDesc::UINT8, image.texels.data());
+    const std::string error = written ? std::string() : out->geterror();
+    if (!out->close() || !written) throw std::runtime_error("write_image: cannot write " + name + ": " + error);
+}
+
+}  // namespace sylva

@@ -1,0 +1,97 @@
+#include "models/placement.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <glm/geometric.hpp>
+
+namespace sylva {
+namespace {
+
+heightfield flat_field(double size) {
+    heightfield f;
+    f.resolution = 2;
+    f.size_m = size;
+    f.heights.assign(4, 0.0f);
+    return f;
+}
+
+TEST(placement, points_inside_area_and_count_honoured_when_there_is_room) {
+    const heightfield f = flat_field(200.0);
+    const std::array<double, 4> area{-50.0, 10.0, 30.0, 60.0};
+    const auto p = place_population(f, area, 500, 1.0f, 0.8f, 1.2f, 90.0f, 1);
+    ASSERT_EQ(p.size(), 500u);
+    for (const placement& q : p) {
+        EXPECT_GE(q.xz.x, area[0]);
+        EXPECT_LT(q.xz.x, area[2]);
+        EXPECT_GE(q.xz.y, area[1]);
+        EXPECT_LT(q.xz.y, area[3]);
+        EXPECT_GE(q.scale, 0.8f);
+        EXPECT_LE(q.scale, 1.2f);
+        EXPECT_GE(q.yaw, 0.0f);
+        EXPECT_LT(q.yaw, 6.2832f);
+    }
+}
+
+TEST(placement, pairwise_spacing_is_respected) {
+    const heightfield f = flat_field(100.0);
+    const float spacing = 3.0f;
+    const auto p = place_population(f, {0.0, 0.0, 40.0, 40.0}, 1000, spacing, 1.0f, 1.0f, 90.0f, 5);
+    ASSERT_GT(p.size(), 50u);  // packed: returns fewer than asked, but a fair number
+    EXPECT_LT(p.size(), 1000u);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size(); ++j)
+            ASSERT_GE(glm::length(p[i].xz - p[j].xz), double(spacing)) << i << " " << j;
+}
+
+TEST(placement, steep_ground_is_rejected) {
+    // Left half flat, right half a 45-degree ramp: x in [-10, 0] flat, [0, 10] rising.
+    heightfield f;
+    f.resolution = 21;
+    f.size_m = 20.0;
+    for (int row = 0; row < 21; ++row)
+        for (int column = 0; column < 21; ++column) f.heights.push_back(column > 10 ? float(column - 10) : 0.0f);
+    const auto p = place_population(f, {-10.0, -10.0, 10.0, 10.0}, 400, 0.2f, 1.0f, 1.0f, 30.0f, 2);
+    ASSERT_FALSE(p.empty());
+    for (const placement& q : p) EXPECT_LE(f.slope_deg_at(q.xz.x, q.xz.y), 30.0f);
+    for (const placement& q : p) EXPECT_LT(q.xz.x, 0.6);
+}
+
+TEST(placement, same_seed_same_result_and_seeds_differ) {
+    const heightfield f = generate_terrain(200.0, 33, 20.0f, 4, 0.01f, 3);
+    const std::array<double, 4> area{-100.0, -100.0, 100.0, 100.0};
+    const auto a = place_population(f, area, 300, 2.0f, 0.5f, 1.5f, 25.0f, 9);
+    const auto b = place_population(f, area, 300, 2.0f, 0.5f, 1.5f, 25.0f, 9);
+    const auto c = place_population(f, area, 300, 2.0f, 0.5f, 1.5f, 25.0f, 10);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].xz, b[i].xz);
+        EXPECT_EQ(a[i].scale, b[i].scale);
+        EXPECT_EQ(a[i].yaw, b[i].yaw);
+        EXPECT_EQ(a[i].seed, b[i].seed);
+        EXPECT_EQ(a[i].tint, b[i].tint);
+    }
+    ASSERT_FALSE(c.empty());
+    EXPECT_NE(a[0].xz, c[0].xz);
+}
+
+TEST(placement, hundred_thousand_plants_are_fast) {
+    const heightfield f = generate_terrain(2000.0, 257, 30.0f, 5, 0.004f, 1);
+    const auto start = std::chrono::steady_clock::now();
+    const auto p = place_population(f, {-1000.0, -1000.0, 1000.0, 1000.0}, 100000, 2.0f, 0.8f, 1.2f, 40.0f, 4);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(p.size(), 100000u);
+    EXPECT_LT(seconds, 0.5);
+    std::printf("[          ] placed %zu plants in %.1f ms\n", p.size(), seconds * 1e3);
+}
+
+TEST(placement, edge_cases) {
+    const heightfield f = flat_field(10.0);
+    EXPECT_TRUE(place_population(f, {0.0, 0.0, 1.0, 1.0}, 0, 1.0f, 1.0f, 1.0f, 90.0f, 1).empty());
+    EXPECT_THROW(place_population(f, {1.0, 0.0, 0.0, 1.0}, 5, 1.0f, 1.0f, 1.0f, 90.0f, 1), std::invalid_argument);
+    // Zero spacing: no rejection at all.
+    EXPECT_EQ(place_population(f, {0.0, 0.0, 1.0, 1.0}, 50, 0.0f, 1.0f, 1.0f, 90.0f, 1).size(), 50u);
+}
+
+}  // namespace
+}  // namespace sylva
