@@ -1,0 +1,197 @@
+#pragma once
+// A scenario: everything one playback of Sylva needs (terrain, species, populations, camera and
+// sun paths, shadow and render settings). Plain data with defaults; read from JSON by
+// scenarios/scenario_loader.h, which rejects anything outside the ranges listed here.
+//
+// JSON format. Keys are the field names below (snake_case). Every section and every field is
+// optional unless marked REQUIRED; an absent field keeps its default. Unknown keys are errors.
+// Ranges are inclusive. Integers must be written as JSON integers (960, not 960.0).
+//
+//   name           string           default: the file name without extension
+//   seed           integer          1            0 .. 2^64-1; seeds the plant generators and
+//   placement resolution     [width, height]  [960, 540]   each 1 .. 16384 pixels frames integer 48
+//   1 .. 1000000 fps            number           24           1 .. 1000; frame i is shown at time i
+//   / fps world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world
+//   position
+//                                                (stress-tests double-precision handling)
+//   terrain {
+//     size_m       number           400          1 .. 100000; square, centred on the origin
+//     resolution   integer          129          2 .. 4097 vertices per side
+//     height_m     number           25           0 .. 10000; peak-to-valley scale of the hills
+//     octaves      integer          5            1 .. 16 noise octaves
+//     frequency    number           0.008        0 .. 10 cycles per metre (lowest octave)
+//     seed         integer          7            0 .. 2^64-1
+//     ground_color [r, g, b]        [0.32, 0.30, 0.18]  each 0 .. 1 (linear)
+//   }
+//   species        REQUIRED array of >= 1 {
+//     name               string REQUIRED, non-empty, unique among species
+//     generator          string     "broadleaf"  one of k_tree_generators
+//     height_m           number     12           0.1 .. 150
+//     reduced_distance_m number     60           0 .. 1000000; the reduced mesh is drawn beyond it
+//     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it;
+//                                                must be >= reduced_distance_m
+//   }
+//   populations    REQUIRED array of >= 1 {
+//     species       string REQUIRED  the name of a species
+//     count         integer REQUIRED 1 .. 10000000 plants requested
+//     min_spacing_m number      3           0 .. 1000
+//     scale_min     number      0.8         0.01 .. 100; scale_min <= scale_max
+//     scale_max     number      1.2         0.01 .. 100
+//     area          [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2,
+//     size/2];
+//                                     each -1e9 .. 1e9 m, x0 < x1 and z0 < z1
+//     max_slope_deg number      35          0 .. 90
+//   }
+//   camera {
+//     near_m     number   0.3    0.001 .. 1000
+//     far_m      number   3000   0.01 .. 10000000; must be > near_m
+//     lod_scale  number   1      0.01 .. 100; multiplies every LOD switch distance
+//     keyframes  array of >= 1, times strictly increasing; default: default_camera_keyframes()
+//                (scenario_loader.h), a flight across the terrain over the whole playback {
+//       t                   number REQUIRED  0 .. 1000000 seconds
+//       position            [x, y, z] REQUIRED  each -1e9 .. 1e9 m
+//       target              [x, y, z] REQUIRED  each -1e9 .. 1e9 m; must differ from position
+//       fov_deg             number   55      5 .. 150 (vertical)
+//       relative_to_terrain boolean  true    y of position and target are metres above the
+//                                            terrain under them (else absolute world y)
+//     }
+//   }
+//   sun {
+//     keyframes  array of >= 1, times strictly increasing; default: one key (42, 135) {
+//       t              number REQUIRED   0 .. 1000000 seconds
+//       elevation_deg  number REQUIRED   -90 .. 90
+//       azimuth_deg    number REQUIRED   0 .. 360
+//     }
+//     intensity      number  3   0 .. 1000000
+//     turbidity      number  3   1.7 .. 10 (Preetham sky)
+//     sky_intensity  number  1   0 .. 1000000
+//   }
+//   shadows {
+//     cascades       integer 3     1 .. 4
+//     resolution     integer 1024  256 .. 8192, a power of two
+//     max_distance_m number  250   1 .. 100000
+//     split_lambda   number  0.75  0 .. 1 (0: uniform splits, 1: logarithmic)
+//   }
+//   render {
+//     shadows   boolean  true
+//     exposure  number   1     0.001 .. 1000
+//   }
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scenarios/camera_path.h"
+
+namespace sylva {
+
+// The plant generators a species may name (models/tree_generator.h implements each).
+inline constexpr std::array<std::string_view, 2> k_tree_generators = {"broadleaf", "conifer"};
+
+struct terrain_settings {
+    double size_m = 400.0;
+    std::uint32_t resolution = 129;  // vertices per side
+    float height_m = 25.0f;
+    std::uint32_t octaves = 5;
+    float frequency = 0.008f;  // cycles per metre
+    std::uint64_t seed = 7;
+    glm::vec3 ground_color{0.32f, 0.30f, 0.18f};
+    bool operator==(const terrain_settings&) const = default;
+};
+
+struct species_settings {
+    std::string name;
+    std::string generator = "broadleaf";
+    float height_m = 12.0f;
+    float reduced_distance_m = 60.0f;
+    float max_distance_m = 1500.0f;
+    bool operator==(const species_settings&) const = default;
+};
+
+struct population_settings {
+    std::string species;
+    std::uint32_t count = 0;
+    float min_spacing_m = 3.0f;
+    float scale_min = 0.8f;
+    float scale_max = 1.2f;
+    // x0, z0, x1, z1 in metres. This default is the default terrain's extent; the loader
+    // replaces it with the scenario's own terrain extent when "area" is absent.
+    std::array<double, 4> area{-200.0, -200.0, 200.0, 200.0};
+    float max_slope_deg = 35.0f;
+    bool operator==(const population_settings&) const = default;
+};
+
+// A camera keyframe as the scenario states it. The key is kept whole (the camera path's own
+// type) and the flag says how to read its heights: when above_terrain is true, key.position.y
+// and key.target.y are metres above the terrain under them and are resolved to world heights
+// once the terrain exists (systems/spawn_scenario.cpp).
+struct scenario_camera_key {
+    camera_keyframe key;
+    bool above_terrain = true;
+
+    friend bool operator==(const scenario_camera_key& a, const scenario_camera_key& b) {
+        return a.key.time_s == b.key.time_s && a.key.position == b.key.position &&
+               a.key.target == b.key.target && a.key.fov_deg == b.key.fov_deg &&
+               a.above_terrain == b.above_terrain;
+    }
+};
+
+struct camera_settings {
+    float near_m = 0.3f;
+    float far_m = 3000.0f;
+    float lod_scale = 1.0f;
+    std::vector<scenario_camera_key> keyframes;  // the loader always leaves >= 1
+    bool operator==(const camera_settings&) const = default;
+};
+
+struct sun_keyframe {
+    double t = 0.0;  // seconds
+    float elevation_deg = 42.0f;
+    float azimuth_deg = 135.0f;
+    bool operator==(const sun_keyframe&) const = default;
+};
+
+struct sun_settings {
+    std::vector<sun_keyframe> keyframes{sun_keyframe{}};
+    float intensity = 3.0f;
+    float turbidity = 3.0f;
+    float sky_intensity = 1.0f;
+    bool operator==(const sun_settings&) const = default;
+};
+
+struct shadow_settings {
+    std::uint32_t cascades = 3;
+    std::uint32_t resolution = 1024;  // texels per side of each cascade
+    float max_distance_m = 250.0f;
+    float split_lambda = 0.75f;
+    bool operator==(const shadow_settings&) const = default;
+};
+
+struct render_settings {
+    bool shadows = true;
+    float exposure = 1.0f;
+    bool operator==(const render_settings&) const = default;
+};
+
+struct scenario {
+    std::string name;
+    std::string source;  // the file it came from, or "embedded:scenarios/default.json"
+    std::uint64_t seed = 1;
+    std::uint32_t width = 960;
+    std::uint32_t height = 540;
+    std::uint32_t frames = 48;
+    double fps = 24.0;
+    glm::dvec3 world_offset{0.0};
+    terrain_settings terrain;
+    std::vector<species_settings> species;
+    std::vector<population_settings> populations;
+    camera_settings camera;
+    sun_settings sun;
+    shadow_settings shadows;
+    render_settings render;
+    bool operator==(const scenario&) const = default;
+};
+
+}  // namespace sylva

@@ -1,0 +1,452 @@
+#include "scenarios/scenario_loader.h"
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "scenarios/json_reader.h"
+#include "systems/embedded_files.h"
+
+namespace sylva {
+namespace {
+
+constexpr std::string_view k_default_path = "scenarios/default.json";
+constexpr std::uint64_t k_max_u64 = std::numeric_limits<std::uint64_t>::max();
+constexpr number_range k_coordinate_m{-1e9, 1e9};
+constexpr number_range k_distance_m{0.0, 1e6};
+constexpr number_range k_time_s{0.0, 1e6};
+constexpr number_range k_intensity{0.0, 1e6};
+constexpr integer_range k_seed{0, k_max_u64};
+constexpr integer_range k_image_side_px{1, 16384};
+constexpr float k_default_fov_deg = 55.0f;
+
+// --- checks across fields -------------------------------------------------------------------
+
+// low must be below (strict) or at most high. The defaults are always ordered, so at least one
+// of the two keys is in the document; the problem is reported at the one stated first.
+void expect_ordered(const json_node& node, std::string_view low_key, float low,
+                    std::string_view high_key, float high, bool strict) {
+    if (strict ? low < high : low <= high) return;
+    if (const auto n = node.find(low_key))
+        n->fail(std::string("must be ") + (strict ? "less than " : "at most ") +
+                std::string(high_key) + " (" + format_float(high) + ")");
+    if (const auto n = node.find(high_key))
+        n->fail(std::string("must be ") + (strict ? "greater than " : "at least ") +
+                std::string(low_key) + " (" + format_float(low) + ")");
+    node.fail(std::string(low_key) + " and " + std::string(high_key) + " are out of order");
+}
+
+template <class Key, class TimeOf>
+void expect_increasing_times(const json_node& array, const std::vector<Key>& keys, TimeOf time_of) {
+    for (std::size_t i = 1; i < keys.size(); ++i) {
+        const double previous = time_of(keys[i - 1]);
+        if (!(time_of(keys[i]) > previous))
+            array.at(i).find("t")->fail("keyframe times must be strictly increasing (previous: " +
+                                        format_number(previous) + ")");
+    }
+}
+
+void expect_unique_species(const json_node& array, const scenario& s) {
+    for (std::size_t i = 0; i < s.species.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (s.species[i].name == s.species[j].name)
+                array.at(i).find("name")->fail("duplicate species name (first at /species/" +
+                                               std::to_string(j) + "/name)");
+        }
+    }
+}
+
+void expect_known_species(const json_node& array, const scenario& s) {
+    std::vector<std::string_view> names;
+    for (const auto& sp : s.species) names.push_back(sp.name);
+    for (std::size_t i = 0; i < s.populations.size(); ++i) {
+        if (std::find(names.begin(), names.end(), s.populations[i].species) == names.end())
+            array.at(i).find("species")->fail("unknown species; expected one of: " + join(names));
+    }
+}
+
+// --- fields that are not one JSON scalar per struct field ---------------------------------
+
+void read_resolution(const json_node& n, scenario& s) {
+    const auto& v = n.value();
+    if (!v.is_array() || v.size() != 2) n.fail("expected an array of 2 integers [width, height]");
+    s.width = static_cast<std::uint32_t>(read_integer(n.at(0), k_image_side_px));
+    s.height = static_cast<std::uint32_t>(read_integer(n.at(1), k_image_side_px));
+}
+
+void write_resolution(const scenario& s, nlohmann::json& j) {
+    j["resolution"] = {s.width, s.height};
+}
+
+void read_area(const json_node& n, population_settings& p) {
+    const auto& v = n.value();
+    if (!v.is_array() || v.size() != 4 ||
+        !std::all_of(v.begin(), v.end(), [](const auto& e) { return e.is_number(); }))
+        n.fail("expected an array of 4 numbers [x0, z0, x1, z1]");
+    for (std::size_t i = 0; i < 4; ++i) p.area[i] = read_number(n.at(i), k_coordinate_m);
+    if (!(p.area[0] < p.area[2])) n.fail("empty area: x0 must be less than x1");
+    if (!(p.area[1] < p.area[3])) n.fail("empty area: z0 must be less than z1");
+}
+
+void write_area(const population_settings& p, nlohmann::json& j) {
+    j["area"] = {p.area[0], p.area[1], p.area[2], p.area[3]};
+}
+
+std::array<double, 4> whole_terrain(const terrain_settings& t) {
+    const double half = 0.5 * t.size_m;
+    return {-half, -half, half, half};
+}
+
+// --- one table per struct ------------------------------------------------------------------
+
+const field_table<terrain_settings>& terrain_fields() {
+    using t = terrain_settings;
+    static const auto table = field_table<t>()
+                                  .number("size_m", &t::size_m, {1.0, 1e5})
+                                  .integer("resolution", &t::resolution, {2, 4097})
+                                  .number("height_m", &t::height_m, {0.0, 1e4})
+                                  .integer("octaves", &t::octaves, {1, 16})
+                                  .number("frequency", &t::frequency, {0.0, 10.0})
+                                  .integer("seed", &t::seed, k_seed)
+                                  .vec3("ground_color", &t::ground_color, {0.0, 1.0});
+    return table;
+}
+
+const field_table<species_settings>& species_fields() {
+    using t = species_settings;
+    static const auto table =
+        field_table<t>()
+            .text("name", &t::name)
+            .required()
+            .choice("generator", &t::generator, k_tree_generators)
+            .number("height_m", &t::height_m, {0.1, 150.0})
+            .number("reduced_distance_m", &t::reduced_distance_m, k_distance_m)
+            .number("max_distance_m", &t::max_distance_m, k_distance_m)
+            .check([](const json_node& n, const t& s) {
+                expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "max_distance_m",
+                               s.max_distance_m, false);
+            });
+    return table;
+}
+
+const field_table<population_settings>& population_fields() {
+    using t = population_settings;
+    static const auto table =
+        field_table<t>()
+            .text("species", &t::species)
+            .required()
+            .integer("count", &t::count, {1, 10'000'000})
+            .required()
+            .number("min_spacing_m", &t::min_spacing_m, {0.0, 1000.0})
+            .number("scale_min", &t::scale_min, {0.01, 100.0})
+            .number("scale_max", &t::scale_max, {0.01, 100.0})
+            .add("area", read_area, write_area)
+            .number("max_slope_deg", &t::max_slope_deg, {0.0, 90.0})
+            .check([](const json_node& n, const t& p) {
+                expect_ordered(n, "scale_min", p.scale_min, "scale_max", p.scale_max, false);
+            });
+    return table;
+}
+
+// scenario_camera_key wraps the camera path's own keyframe; these reach into it (const or not).
+constexpr auto key_time = [](auto& k) -> auto& {
+    return k.key.time_s;
+};
+constexpr auto key_position = [](auto& k) -> auto& {
+    return k.key.position;
+};
+constexpr auto key_target = [](auto& k) -> auto& {
+    return k.key.target;
+};
+constexpr auto key_fov = [](auto& k) -> auto& {
+    return k.key.fov_deg;
+};
+
+const field_table<scenario_camera_key>& camera_key_fields() {
+    using t = scenario_camera_key;
+    static const auto table = field_table<t>()
+                                  .number("t", key_time, k_time_s)
+                                  .required()
+                                  .vec3("position", key_position, k_coordinate_m)
+                                  .required()
+                                  .vec3("target", key_target, k_coordinate_m)
+                                  .required()
+                                  .number("fov_deg", key_fov, {5.0, 150.0})
+                                  .boolean("relative_to_terrain", &t::above_terrain)
+                                  .check([](const json_node& n, const t& k) {
+                                      if (k.key.position == k.key.target)
+                                          n.find("target")->fail(
+                                              "must differ from position (the camera looks along "
+                                              "target - position)");
+                                  });
+    return table;
+}
+
+const field_table<camera_settings>& camera_fields() {
+    using t = camera_settings;
+    static const auto table = field_table<t>()
+                                  .number("near_m", &t::near_m, {0.001, 1000.0})
+                                  .number("far_m", &t::far_m, {0.01, 1e7})
+                                  .number("lod_scale", &t::lod_scale, {0.01, 100.0})
+                                  .array("keyframes", &t::keyframes, camera_key_fields(),
+                                         {.check_items =
+                                              [](const json_node& n, const t& c) {
+                                                  expect_increasing_times(n, c.keyframes, key_time);
+                                              }})
+                                  .check([](const json_node& n, const t& c) {
+                                      expect_ordered(n, "near_m", c.near_m, "far_m", c.far_m, true);
+                                  });
+    return table;
+}
+
+const field_table<sun_keyframe>& sun_key_fields() {
+    using t = sun_keyframe;
+    static const auto table = field_table<t>()
+                                  .number("t", &t::t, k_time_s)
+                                  .required()
+                                  .number("elevation_deg", &t::elevation_deg, {-90.0, 90.0})
+                                  .required()
+                                  .number("azimuth_deg", &t::azimuth_deg, {0.0, 360.0})
+                                  .required();
+    return table;
+}
+
+const field_table<sun_settings>& sun_fields() {
+    using t = sun_settings;
+    static const auto table =
+        field_table<t>()
+            .array("keyframes", &t::keyframes, sun_key_fields(),
+                   {.check_items =
+                        [](const json_node& n, const t& sun) {
+                            expect_increasing_times(n, sun.keyframes,
+                                                    [](const sun_keyframe& k) { return k.t; });
+                        }})
+            .number("intensity", &t::intensity, k_intensity)
+            .number("turbidity", &t::turbidity, {1.7, 10.0})
+            .number("sky_intensity", &t::sky_intensity, k_intensity);
+    return table;
+}
+
+const field_table<shadow_settings>& shadow_fields() {
+    using t = shadow_settings;
+    static const auto table =
+        field_table<t>()
+            .integer("cascades", &t::cascades, {1, 4})
+            .integer("resolution", &t::resolution, {256, 8192})
+            .number("max_distance_m", &t::max_distance_m, {1.0, 1e5})
+            .number("split_lambda", &t::split_lambda, {0.0, 1.0})
+            .check([](const json_node& n, const t& s) {
+                if (!std::has_single_bit(s.resolution))
+                    n.find("resolution")->fail("expected a power of two (256, 512, ..., 8192)");
+            });
+    return table;
+}
+
+const field_table<render_settings>& render_fields() {
+    using t = render_settings;
+    static const auto table = field_table<t>()
+                                  .boolean("shadows", &t::shadows)
+                                  .number("exposure", &t::exposure, {0.001, 1000.0});
+    return table;
+}
+
+const field_table<scenario>& scenario_fields() {
+    using t = scenario;
+    static const auto table =
+        field_table<t>()
+            .text("name", &t::name)
+            .integer("seed", &t::seed, k_seed)
+            .add("resolution", read_resolution, write_resolution)
+            .integer("frames", &t::frames, {1, 1'000'000})
+            .number("fps", &t::fps, {1.0, 1000.0})
+            .vec3("world_offset", &t::world_offset, k_coordinate_m)
+            .object("terrain", &t::terrain, terrain_fields())
+            .array("species", &t::species, species_fields(), {.check_items = expect_unique_species})
+            .required()
+            .array("populations", &t::populations, population_fields(),
+                   {.make =
+                        [](const t& s) {
+                            population_settings p;
+                            p.area = whole_terrain(s.terrain);
+                            return p;
+                        },
+                    .check_items = expect_known_species})
+            .required()
+            .object("camera", &t::camera, camera_fields())
+            .object("sun", &t::sun, sun_fields())
+            .object("shadows", &t::shadows, shadow_fields())
+            .object("render", &t::render, render_fields());
+    return table;
+}
+
+// --- text to document ----------------------------------------------------------------------
+
+// nlohmann's message without its "[json.exception...] parse error at line L, column C: "
+// prefix: the position is reported by line_and_column, the same for every library version.
+std::string parse_problem(const nlohmann::json::parse_error& e) {
+    const std::string what = e.what();
+    const std::size_t start = what.find("parse error");
+    const std::size_t colon = what.find(": ", start == std::string::npos ? 0 : start);
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+// nlohmann keeps the last of two equal keys without a word; a key stated twice is almost
+// always an edit gone wrong, so the second one is an error. Tracks the JSON Pointer of the
+// value being parsed to name it.
+class duplicate_key_check {
+public:
+    explicit duplicate_key_check(const std::string& file) : m_file(file) {}
+
+    bool operator()(nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
+        using event_t = nlohmann::json::parse_event_t;
+        switch (event) {
+            case event_t::object_start:
+                m_stack.push_back({true, {}, {}, 0});
+                break;
+            case event_t::array_start:
+                m_stack.push_back({false, {}, {}, 0});
+                break;
+            case event_t::key:
+                add_key(parsed.get<std::string>());
+                break;
+            case event_t::object_end:
+            case event_t::array_end:
+                m_stack.pop_back();
+                end_value();
+                break;
+            case event_t::value:
+                end_value();
+                break;
+        }
+        return true;
+    }
+
+private:
+    struct frame {
+        bool is_object;
+        std::set<std::string> keys;
+        std::string key;
+        std::size_t index;
+    };
+
+    void add_key(std::string key) {
+        frame& f = m_stack.back();
+        f.key = std::move(key);
+        if (!f.keys.insert(f.key).second)
+            throw scenario_error(m_file, pointer(), "", "duplicate key (each key may appear once)");
+    }
+    void end_value() {
+        if (!m_stack.empty() && !m_stack.back().is_object) ++m_stack.back().index;
+    }
+    std::string pointer() const {
+        std::string path;
+        for (const frame& f : m_stack)
+            path += "/" + (f.is_object ? pointer_token(f.key) : std::to_string(f.index));
+        return path;
+    }
+
+    const std::string& m_file;
+    std::vector<frame> m_stack;
+};
+
+nlohmann::json parse_document(std::string_view text, const std::string& file) {
+    duplicate_key_check duplicates(file);
+    try {
+        return nlohmann::json::parse(
+            text, [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+                return duplicates(event, parsed);
+            });
+    } catch (const nlohmann::json::parse_error& e) {
+        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;  // byte is 1-based
+        throw scenario_error(
+            file, "", "",
+            "malformed JSON at " + line_and_column(text, offset) + ": " + parse_problem(e));
+    }
+}
+
+std::string stem_of(std::string_view source_name) {
+    return std::filesystem::path(source_name).stem().string();
+}
+
+std::string what_text(const std::string& file, const std::string& json_path,
+                      const std::string& value, const std::string& problem) {
+    std::string text = file;
+    if (!json_path.empty()) text += ": " + json_path;
+    text += ": " + problem;
+    if (!value.empty()) text += " (got " + value + ")";
+    return text;
+}
+
+}  // namespace
+
+scenario_error::scenario_error(std::string file, std::string json_path, std::string value,
+                               std::string problem)
+    : std::runtime_error(what_text(file, json_path, value, problem)),
+      m_file(std::move(file)),
+      m_json_path(std::move(json_path)),
+      m_value(std::move(value)),
+      m_problem(std::move(problem)) {}
+
+scenario load_scenario_text(std::string_view json_text, std::string_view source_name) {
+    const std::string file(source_name);
+    const nlohmann::json document = parse_document(json_text, file);
+    scenario s;
+    s.source = file;
+    s.name = stem_of(source_name);
+    scenario_fields().read(json_node(document, "", file), s);
+    if (s.camera.keyframes.empty())
+        s.camera.keyframes = default_camera_keyframes(s.terrain, double(s.frames) / s.fps);
+    return s;
+}
+
+scenario load_scenario_file(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw scenario_error(file, "", "",
+                             "cannot open file: " + std::string(std::strerror(EISDIR)));
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw scenario_error(file, "", "",
+                             "cannot open file: " + std::string(std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw scenario_error(file, "", "",
+                             "cannot read file: " + std::string(std::strerror(errno)));
+    return load_scenario_text(text.str(), file);
+}
+
+scenario load_default_scenario() {
+    const std::string source = "embedded:" + std::string(k_default_path);
+    const auto text = embedded_file(k_default_path);
+    if (!text) throw scenario_error(source, "", "", "not embedded in this build");
+    return load_scenario_text(*text, source);
+}
+
+std::vector<scenario_camera_key> default_camera_keyframes(const terrain_settings& terrain,
+                                                          double duration_s) {
+    // South-west to north-east across the middle, looking a quarter of the terrain ahead,
+    // with a rise over the centre to see across the hills.
+    const double reach = 0.3 * terrain.size_m;
+    const glm::dvec3 direction = glm::dvec3(1.0, 0.0, -1.0) / std::sqrt(2.0);
+    const glm::dvec3 look_ahead = direction * (0.25 * terrain.size_m) + glm::dvec3(0.0, -10.0, 0.0);
+    const glm::dvec3 positions[] = {{-reach, 15.0, reach}, {0.0, 25.0, 0.0}, {reach, 15.0, -reach}};
+    std::vector<scenario_camera_key> keys;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double t = duration_s * 0.5 * double(i);
+        keys.push_back({{t, positions[i], positions[i] + look_ahead, k_default_fov_deg}, true});
+    }
+    return keys;
+}
+
+std::string scenario_to_json_text(const scenario& s) {
+    return scenario_fields().write(s).dump(2);
+}
+
+}  // namespace sylva

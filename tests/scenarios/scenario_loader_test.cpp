@@ -1,0 +1,561 @@
+// The scenario loader: the shipped scenarios load with their documented contents, defaults
+// survive a round trip, and every kind of bad document gives exactly one located error.
+#include "scenarios/scenario_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <string>
+
+namespace sylva {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+constexpr std::string_view k_source = "test.json";
+
+std::filesystem::path source_path(std::string_view relative) {
+    return std::filesystem::path(SYLVA_SOURCE_DIR) / relative;
+}
+
+// The smallest valid scenario: one species, one population, everything else defaulted.
+json minimal() {
+    return json::parse(R"({"species": [{"name": "oak"}],
+                           "populations": [{"species": "oak", "count": 10}]})");
+}
+
+// minimal() with the arrays stated (resolution, ground colour, one camera and one sun
+// keyframe), so their elements can be varied by JSON Pointer.
+json with_keyframes() {
+    json j = minimal();
+    j["resolution"] = {960, 540};
+    j["terrain"]["ground_color"] = {0.3, 0.3, 0.2};
+    j["camera"]["keyframes"] =
+        json::parse(R"([{"t": 0, "position": [0, 10, 0], "target": [10, 10, 0]}])");
+    j["sun"]["keyframes"] = json::parse(R"([{"t": 0, "elevation_deg": 40, "azimuth_deg": 100}])");
+    return j;
+}
+
+json set(json j, const std::string& pointer, json value) {
+    j[json::json_pointer(pointer)] = std::move(value);
+    return j;
+}
+
+scenario load(const json& j) {
+    return load_scenario_text(j.dump(), k_source);
+}
+
+struct expected_error {
+    std::string json_path;
+    std::string problem;
+    std::string value;
+};
+
+void expect_error(const json& j, const expected_error& expected) {
+    try {
+        load(j);
+        ADD_FAILURE() << "loaded without error: " << j.dump();
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.file(), k_source);
+        EXPECT_EQ(e.json_path(), expected.json_path);
+        EXPECT_EQ(e.problem(), expected.problem);
+        EXPECT_EQ(e.value(), expected.value);
+    }
+}
+
+std::uint64_t total_count(const scenario& s) {
+    return std::accumulate(
+        s.populations.begin(), s.populations.end(), std::uint64_t{0},
+        [](std::uint64_t sum, const population_settings& p) { return sum + p.count; });
+}
+
+// --- the shipped scenarios ------------------------------------------------------------------
+
+TEST(scenario_loader, default_scenario_has_the_documented_contents) {
+    const scenario s = load_default_scenario();
+    EXPECT_EQ(s.name, "default");
+    EXPECT_EQ(s.source, "embedded:scenarios/default.json");
+    EXPECT_EQ(s.width, 960u);
+    EXPECT_EQ(s.height, 540u);
+    EXPECT_EQ(s.frames, 48u);
+    EXPECT_EQ(s.fps, 24.0);
+    EXPECT_EQ(s.terrain.size_m, 400.0);
+    ASSERT_EQ(s.species.size(), 2u);
+    EXPECT_EQ(s.species[0].name, "oak");
+    EXPECT_EQ(s.species[0].generator, "broadleaf");
+    EXPECT_EQ(s.species[1].name, "spruce");
+    EXPECT_EQ(s.species[1].generator, "conifer");
+    EXPECT_EQ(total_count(s), 3000u);
+    ASSERT_GE(s.camera.keyframes.size(), 2u);
+    EXPECT_EQ(s.camera.keyframes.front().key.position, glm::dvec3(-120.0, 8.0, 140.0));
+    EXPECT_EQ(s.camera.keyframes.back().key.position, glm::dvec3(60.0, 12.0, -60.0));
+    EXPECT_EQ(s.camera.keyframes.back().key.time_s, 2.0);
+    ASSERT_EQ(s.sun.keyframes.size(), 2u);
+    EXPECT_EQ(s.sun.keyframes[0].elevation_deg, 35.0f);
+    EXPECT_EQ(s.sun.keyframes[1].elevation_deg, 38.0f);
+}
+
+TEST(scenario_loader, default_camera_stays_inside_the_terrain_and_near_the_ground) {
+    const scenario s = load_default_scenario();
+    const double half = 0.5 * s.terrain.size_m;
+    for (const auto& k : s.camera.keyframes) {
+        EXPECT_TRUE(k.above_terrain);
+        EXPECT_LT(std::abs(k.key.position.x), half);
+        EXPECT_LT(std::abs(k.key.position.z), half);
+        EXPECT_GE(k.key.position.y, 2.0);
+        EXPECT_LE(k.key.position.y, 25.0);
+    }
+}
+
+TEST(scenario_loader, default_file_on_disk_is_the_embedded_one) {
+    scenario from_disk = load_scenario_file(source_path("scenarios/default.json"));
+    from_disk.source = "embedded:scenarios/default.json";
+    EXPECT_EQ(from_disk, load_default_scenario());
+}
+
+TEST(scenario_loader, tiny_scenario_is_small) {
+    const scenario s = load_scenario_file(source_path("scenarios/tiny.json"));
+    EXPECT_EQ(s.name, "tiny");
+    EXPECT_EQ(s.width, 160u);
+    EXPECT_EQ(s.height, 90u);
+    EXPECT_EQ(s.frames, 4u);
+    EXPECT_EQ(s.terrain.size_m, 120.0);
+    EXPECT_EQ(s.terrain.resolution, 33u);
+    EXPECT_EQ(s.species.size(), 2u);
+    EXPECT_EQ(total_count(s), 60u);
+    EXPECT_EQ(s.camera.keyframes.size(), 3u);
+    EXPECT_EQ(s.shadows.resolution, 512u);
+    EXPECT_EQ(s.shadows.cascades, 2u);
+    // The path covers the whole playback (the last frame is at (frames - 1) / fps).
+    EXPECT_GE(s.camera.keyframes.back().key.time_s, double(s.frames - 1) / s.fps);
+}
+
+// --- defaults -------------------------------------------------------------------------------
+
+TEST(scenario_loader, minimal_scenario_gets_every_default) {
+    const scenario s = load(minimal());
+    const scenario defaults;
+    EXPECT_EQ(s.name, "test");
+    EXPECT_EQ(s.source, k_source);
+    EXPECT_EQ(s.seed, defaults.seed);
+    EXPECT_EQ(s.width, defaults.width);
+    EXPECT_EQ(s.height, defaults.height);
+    EXPECT_EQ(s.frames, defaults.frames);
+    EXPECT_EQ(s.fps, defaults.fps);
+    EXPECT_EQ(s.world_offset, defaults.world_offset);
+    EXPECT_EQ(s.terrain, defaults.terrain);
+    species_settings oak;
+    oak.name = "oak";
+    EXPECT_EQ(s.species, std::vector{oak});
+    population_settings trees;
+    trees.species = "oak";
+    trees.count = 10;
+    EXPECT_EQ(s.populations, std::vector{trees});  // area: the default terrain's extent
+    EXPECT_EQ(s.camera.near_m, defaults.camera.near_m);
+    EXPECT_EQ(s.camera.far_m, defaults.camera.far_m);
+    EXPECT_EQ(s.camera.lod_scale, defaults.camera.lod_scale);
+    EXPECT_EQ(s.camera.keyframes, default_camera_keyframes(s.terrain, 2.0));
+    EXPECT_EQ(s.sun, defaults.sun);
+    EXPECT_EQ(s.shadows, defaults.shadows);
+    EXPECT_EQ(s.render, defaults.render);
+}
+
+TEST(scenario_loader, every_default_written_out_loads_the_same_as_none) {
+    scenario stated = load_scenario_file(source_path("tests/scenarios/data/all_defaults.json"));
+    scenario implied = load(minimal());
+    stated.source = implied.source;
+    implied.name = "minimal";
+    EXPECT_EQ(stated, implied);
+}
+
+TEST(scenario_loader, population_area_defaults_to_the_scenario_terrain) {
+    const scenario s = load(set(minimal(), "/terrain/size_m", 100));
+    EXPECT_EQ(s.populations[0].area, (std::array<double, 4>{-50.0, -50.0, 50.0, 50.0}));
+}
+
+TEST(scenario_loader, default_camera_path_flies_within_the_terrain_over_the_playback) {
+    terrain_settings terrain;
+    terrain.size_m = 1000.0;
+    const auto keys = default_camera_keyframes(terrain, 3.0);
+    ASSERT_GE(keys.size(), 2u);
+    EXPECT_EQ(keys.front().key.time_s, 0.0);
+    EXPECT_EQ(keys.back().key.time_s, 3.0);
+    for (const auto& k : keys) {
+        EXPECT_LT(std::abs(k.key.position.x), 500.0);
+        EXPECT_LT(std::abs(k.key.position.z), 500.0);
+        EXPECT_NE(k.key.position, k.key.target);
+    }
+}
+
+TEST(scenario_loader, round_trip_through_json_text_keeps_every_field) {
+    for (scenario s : {load(minimal()), load_default_scenario(),
+                       load_scenario_file(source_path("scenarios/tiny.json"))}) {
+        SCOPED_TRACE(s.name);
+        s.world_offset = {1e6 + 0.125, -3.5, 2e6};
+        const scenario again = load_scenario_text(scenario_to_json_text(s), s.source);
+        EXPECT_EQ(again, s);
+    }
+}
+
+TEST(scenario_loader, relative_to_terrain_false_gives_absolute_heights) {
+    const scenario s =
+        load(set(with_keyframes(), "/camera/keyframes/0/relative_to_terrain", false));
+    EXPECT_FALSE(s.camera.keyframes[0].above_terrain);
+    EXPECT_EQ(s.camera.keyframes[0].key.fov_deg, 55.0f);
+}
+
+// --- errors: reading the document -----------------------------------------------------------
+
+TEST(scenario_loader, missing_file_cannot_be_opened) {
+    const auto path = source_path("tests/scenarios/data/no_such_file.json");
+    try {
+        load_scenario_file(path);
+        ADD_FAILURE() << "loaded a missing file";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.file(), path.string());
+        EXPECT_EQ(e.json_path(), "");
+        EXPECT_EQ(e.value(), "");
+        EXPECT_EQ(e.problem(), "cannot open file: No such file or directory");
+        EXPECT_EQ(std::string(e.what()),
+                  path.string() + ": cannot open file: No such file or directory");
+    }
+}
+
+TEST(scenario_loader, malformed_json_reports_line_and_column) {
+    const std::string text = "{\n  \"seed\": 1,\n  \"frames\": }\n";
+    try {
+        load_scenario_text(text, k_source);
+        ADD_FAILURE() << "parsed malformed JSON";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), "");
+        EXPECT_EQ(e.value(), "");
+        EXPECT_THAT(e.problem(), StartsWith("malformed JSON at line 3, column 13: "));
+        EXPECT_THAT(e.problem(), HasSubstr("unexpected '}'"));
+        EXPECT_THAT(std::string(e.what()), StartsWith("test.json: malformed JSON at line 3"));
+    }
+}
+
+TEST(scenario_loader, truncated_json_reports_the_end) {
+    try {
+        load_scenario_text("{\"seed\": 1", k_source);
+        ADD_FAILURE() << "parsed truncated JSON";
+    } catch (const scenario_error& e) {
+        EXPECT_THAT(e.problem(), StartsWith("malformed JSON at line 1, column 11: "));
+    }
+}
+
+TEST(scenario_loader, duplicate_keys_are_rejected_where_they_repeat) {
+    const std::string text = R"({"species": [{"name": "oak"}],
+        "populations": [{"species": "oak", "count": 10}, {"species": "oak", "count": 5, "count": 6}]})";
+    try {
+        load_scenario_text(text, k_source);
+        ADD_FAILURE() << "loaded a duplicate key";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), "/populations/1/count");
+        EXPECT_EQ(e.problem(), "duplicate key (each key may appear once)");
+        EXPECT_EQ(e.value(), "");
+    }
+    // The same key in different objects is fine.
+    EXPECT_NO_THROW(load_scenario_text(R"({"species": [{"name": "a"}, {"name": "b"}],
+        "populations": [{"species": "a", "count": 1}]})",
+                                       k_source));
+}
+
+TEST(scenario_loader, document_must_be_an_object) {
+    expect_error(json::array({1, 2}), {"", "expected an object", "[1,2]"});
+}
+
+TEST(scenario_loader, error_message_names_file_pointer_problem_and_value) {
+    const auto path = source_path("tests/scenarios/data/bad_keyframe.json");
+    try {
+        load_scenario_file(path);
+        ADD_FAILURE() << "loaded a bad keyframe";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(std::string(e.what()), path.string() +
+                                             ": /camera/keyframes/2/position: expected an array "
+                                             "of 3 numbers (got \"abc\")");
+    }
+}
+
+// --- errors: unknown fields -----------------------------------------------------------------
+
+TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
+    expect_error(set(minimal(), "/sead", 4),
+                 {"/sead",
+                  "unknown field; expected one of: name, seed, resolution, frames, fps, "
+                  "world_offset, terrain, species, populations, camera, sun, shadows, render",
+                  "4"});
+}
+
+TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"/terrain/size", "size_m, resolution, height_m, octaves, frequency, seed, ground_color"},
+        {"/species/0/heigth_m", "name, generator, height_m, reduced_distance_m, max_distance_m"},
+        {"/populations/0/spacing",
+         "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg"},
+        {"/camera/fov", "near_m, far_m, lod_scale, keyframes"},
+        {"/camera/keyframes/0/fov", "t, position, target, fov_deg, relative_to_terrain"},
+        {"/sun/elevation", "keyframes, intensity, turbidity, sky_intensity"},
+        {"/sun/keyframes/0/time", "t, elevation_deg, azimuth_deg"},
+        {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
+        {"/render/msaa", "shadows, exposure"},
+    };
+    for (const auto& [pointer, known] : cases) {
+        SCOPED_TRACE(pointer);
+        expect_error(set(with_keyframes(), pointer, true),
+                     {pointer, "unknown field; expected one of: " + known, "true"});
+    }
+}
+
+TEST(scenario_loader, unknown_field_path_escapes_slash_and_tilde) {
+    json j = minimal();
+    j["terrain"]["a/b~c"] = 1;
+    expect_error(j, {"/terrain/a~1b~0c",
+                     "unknown field; expected one of: size_m, resolution, height_m, octaves, "
+                     "frequency, seed, ground_color",
+                     "1"});
+}
+
+// --- errors: types --------------------------------------------------------------------------
+
+TEST(scenario_loader, wrong_types_are_named) {
+    const expected_error cases[] = {
+        {"/camera/keyframes/0/position", "expected an array of 3 numbers", "\"abc\""},
+        {"/terrain", "expected an object", "\"abc\""},
+        {"/species", "expected an array", "\"abc\""},
+        {"/frames", "expected an integer from 1 to 1000000", "\"abc\""},
+        {"/fps", "expected a number", "\"abc\""},
+        {"/render/shadows", "expected true or false", "\"abc\""},
+        {"/species/0/generator", "unknown value; expected one of: broadleaf, conifer", "\"abc\""},
+        {"/name", "expected a string", "7"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.json_path);
+        const json value = c.value == "7" ? json(7) : json("abc");
+        expect_error(set(with_keyframes(), c.json_path, value), c);
+    }
+}
+
+TEST(scenario_loader, integers_must_be_written_as_integers) {
+    expect_error(set(minimal(), "/frames", 4.5),
+                 {"/frames", "expected an integer from 1 to 1000000", "4.5"});
+    expect_error(set(minimal(), "/frames", 4.0),
+                 {"/frames", "expected an integer from 1 to 1000000", "4.0"});
+}
+
+TEST(scenario_loader, vector_with_a_wrong_element_is_rejected_as_a_whole) {
+    expect_error(set(minimal(), "/world_offset", json::array({1, "2", 3})),
+                 {"/world_offset", "expected an array of 3 numbers", "[1,\"2\",3]"});
+    expect_error(set(minimal(), "/terrain/ground_color", json::array({0.5, 0.5})),
+                 {"/terrain/ground_color", "expected an array of 3 numbers", "[0.5,0.5]"});
+}
+
+TEST(scenario_loader, long_values_are_cut_in_the_message) {
+    const std::string long_name(200, 'x');
+    try {
+        load(set(minimal(), "/frames", long_name));
+        ADD_FAILURE() << "loaded a string as frames";
+    } catch (const scenario_error& e) {
+        EXPECT_LE(e.value().size(), 60u);
+        EXPECT_THAT(e.value(), StartsWith("\"xxxx"));
+        EXPECT_THAT(e.value(), ::testing::EndsWith("..."));
+    }
+}
+
+// --- errors: ranges -------------------------------------------------------------------------
+
+struct range_case {
+    std::string pointer;
+    json min_ok, max_ok, below, above;
+    std::string problem;
+};
+
+TEST(scenario_loader, values_at_the_limits_load_and_just_outside_are_rejected) {
+    const range_case cases[] = {
+        {"/resolution/0", 1, 16384, 0, 16385, "out of range; expected an integer from 1 to 16384"},
+        {"/resolution/1", 1, 16384, -1, 16385, "out of range; expected an integer from 1 to 16384"},
+        {"/frames", 1, 1000000, 0, 1000001, "out of range; expected an integer from 1 to 1000000"},
+        {"/fps", 1, 1000, 0.99, 1000.5, "out of range; expected a number from 1 to 1000"},
+        {"/terrain/size_m", 1, 1e5, 0.5, 100001,
+         "out of range; expected a number from 1 to 100000"},
+        {"/terrain/resolution", 2, 4097, 1, 4098,
+         "out of range; expected an integer from 2 to 4097"},
+        {"/terrain/octaves", 1, 16, 0, 17, "out of range; expected an integer from 1 to 16"},
+        {"/terrain/ground_color/1", 0, 1, -0.01, 1.01,
+         "out of range; expected a number from 0 to 1"},
+        {"/species/0/height_m", 0.1, 150, 0.09, 150.5,
+         "out of range; expected a number from 0.1 to 150"},
+        {"/populations/0/count", 1, 10000000, 0, 10000001,
+         "out of range; expected an integer from 1 to 10000000"},
+        {"/populations/0/max_slope_deg", 0, 90, -1, 91,
+         "out of range; expected a number from 0 to 90"},
+        {"/camera/lod_scale", 0.01, 100, 0.009, 101,
+         "out of range; expected a number from 0.01 to 100"},
+        {"/camera/keyframes/0/fov_deg", 5, 150, 4.9, 150.1,
+         "out of range; expected a number from 5 to 150"},
+        {"/camera/keyframes/0/t", 0, 1e6, -0.001, 1000001,
+         "out of range; expected a number from 0 to 1000000"},
+        {"/sun/keyframes/0/elevation_deg", -90, 90, -90.5, 90.5,
+         "out of range; expected a number from -90 to 90"},
+        {"/sun/keyframes/0/azimuth_deg", 0, 360, -0.5, 360.5,
+         "out of range; expected a number from 0 to 360"},
+        {"/sun/intensity", 0, 1e6, -1, 1e6 + 1,
+         "out of range; expected a number from 0 to 1000000"},
+        {"/sun/turbidity", 1.7, 10, 1.69, 10.01, "out of range; expected a number from 1.7 to 10"},
+        {"/shadows/cascades", 1, 4, 0, 5, "out of range; expected an integer from 1 to 4"},
+        {"/shadows/resolution", 256, 8192, 128, 16384,
+         "out of range; expected an integer from 256 to 8192"},
+        {"/shadows/split_lambda", 0, 1, -0.01, 1.01, "out of range; expected a number from 0 to 1"},
+        {"/render/exposure", 0.001, 1000, 0.0009, 1001,
+         "out of range; expected a number from 0.001 to 1000"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.pointer);
+        EXPECT_NO_THROW(load(set(with_keyframes(), c.pointer, c.min_ok)));
+        EXPECT_NO_THROW(load(set(with_keyframes(), c.pointer, c.max_ok)));
+        expect_error(set(with_keyframes(), c.pointer, c.below),
+                     {c.pointer, c.problem, c.below.dump()});
+        expect_error(set(with_keyframes(), c.pointer, c.above),
+                     {c.pointer, c.problem, c.above.dump()});
+    }
+}
+
+TEST(scenario_loader, seeds_take_the_whole_64_bit_range) {
+    const std::uint64_t max = std::numeric_limits<std::uint64_t>::max();
+    EXPECT_EQ(load(set(minimal(), "/seed", max)).seed, max);
+    EXPECT_EQ(load(set(minimal(), "/terrain/seed", 0)).terrain.seed, 0u);
+    expect_error(
+        set(minimal(), "/seed", -1),
+        {"/seed", "out of range; expected an integer from 0 to 18446744073709551615", "-1"});
+}
+
+TEST(scenario_loader, resolution_must_be_two_integers) {
+    expect_error(set(minimal(), "/resolution", json::array({960})),
+                 {"/resolution", "expected an array of 2 integers [width, height]", "[960]"});
+}
+
+TEST(scenario_loader, shadow_resolution_must_be_a_power_of_two) {
+    expect_error(set(minimal(), "/shadows/resolution", 1000),
+                 {"/shadows/resolution", "expected a power of two (256, 512, ..., 8192)", "1000"});
+    EXPECT_EQ(load(set(minimal(), "/shadows/resolution", 2048)).shadows.resolution, 2048u);
+}
+
+// --- errors: structure and references -------------------------------------------------------
+
+TEST(scenario_loader, missing_required_items_are_named) {
+    json no_species = minimal();
+    no_species.erase("species");
+    expect_error(no_species, {"/species", "missing required item \"species\"", "nothing"});
+    json no_populations = minimal();
+    no_populations.erase("populations");
+    expect_error(no_populations,
+                 {"/populations", "missing required item \"populations\"", "nothing"});
+    json no_count = minimal();
+    no_count["populations"][0].erase("count");
+    expect_error(no_count, {"/populations/0/count", "missing required item \"count\"", "nothing"});
+    json no_time = with_keyframes();
+    no_time["camera"]["keyframes"][0].erase("t");
+    expect_error(no_time, {"/camera/keyframes/0/t", "missing required item \"t\"", "nothing"});
+    json no_name = minimal();
+    no_name["species"][0].erase("name");
+    expect_error(no_name, {"/species/0/name", "missing required item \"name\"", "nothing"});
+}
+
+TEST(scenario_loader, empty_lists_are_rejected) {
+    for (const std::string pointer :
+         {"/species", "/populations", "/camera/keyframes", "/sun/keyframes"}) {
+        SCOPED_TRACE(pointer);
+        expect_error(set(minimal(), pointer, json::array()),
+                     {pointer, "expected at least 1 item", "[]"});
+    }
+}
+
+TEST(scenario_loader, population_must_name_a_known_species) {
+    json j = minimal();
+    j["species"].push_back({{"name", "spruce"}, {"generator", "conifer"}});
+    j["populations"][0]["species"] = "elm";
+    expect_error(
+        j, {"/populations/0/species", "unknown species; expected one of: oak, spruce", "\"elm\""});
+}
+
+TEST(scenario_loader, species_names_must_be_unique) {
+    json j = minimal();
+    j["species"].push_back({{"name", "oak"}, {"generator", "conifer"}});
+    expect_error(
+        j, {"/species/1/name", "duplicate species name (first at /species/0/name)", "\"oak\""});
+}
+
+TEST(scenario_loader, empty_species_name_is_rejected) {
+    expect_error(set(minimal(), "/species/0/name", ""),
+                 {"/species/0/name", "expected a non-empty string", "\"\""});
+}
+
+TEST(scenario_loader, camera_keyframe_times_must_increase_strictly) {
+    json j = with_keyframes();
+    j["camera"]["keyframes"].push_back(
+        json::parse(R"({"t": 1, "position": [1, 10, 0], "target": [10, 10, 0]})"));
+    j["camera"]["keyframes"].push_back(
+        json::parse(R"({"t": 1, "position": [2, 10, 0], "target": [10, 10, 0]})"));
+    expect_error(j, {"/camera/keyframes/2/t",
+                     "keyframe times must be strictly increasing (previous: 1)", "1"});
+}
+
+TEST(scenario_loader, sun_keyframe_times_must_increase_strictly) {
+    json j = with_keyframes();
+    j["sun"]["keyframes"].push_back(
+        json::parse(R"({"t": 2.5, "elevation_deg": 30, "azimuth_deg": 100})"));
+    j["sun"]["keyframes"].push_back(
+        json::parse(R"({"t": 0.5, "elevation_deg": 30, "azimuth_deg": 100})"));
+    expect_error(j, {"/sun/keyframes/2/t",
+                     "keyframe times must be strictly increasing (previous: 2.5)", "0.5"});
+}
+
+TEST(scenario_loader, camera_must_look_somewhere) {
+    expect_error(
+        set(with_keyframes(), "/camera/keyframes/0/target", json::array({0, 10, 0})),
+        {"/camera/keyframes/0/target",
+         "must differ from position (the camera looks along target - position)", "[0,10,0]"});
+}
+
+TEST(scenario_loader, area_must_not_be_empty) {
+    expect_error(set(minimal(), "/populations/0/area", json::array({10, 0, 10, 5})),
+                 {"/populations/0/area", "empty area: x0 must be less than x1", "[10,0,10,5]"});
+    expect_error(set(minimal(), "/populations/0/area", json::array({0, 5, 10, 4})),
+                 {"/populations/0/area", "empty area: z0 must be less than z1", "[0,5,10,4]"});
+    expect_error(
+        set(minimal(), "/populations/0/area", json::array({0, 5, 10})),
+        {"/populations/0/area", "expected an array of 4 numbers [x0, z0, x1, z1]", "[0,5,10]"});
+}
+
+TEST(scenario_loader, ordered_pairs_are_checked_at_the_stated_key) {
+    expect_error(set(minimal(), "/populations/0/scale_min", 1.5),
+                 {"/populations/0/scale_min", "must be at most scale_max (1.2)", "1.5"});
+    expect_error(set(minimal(), "/populations/0/scale_max", 0.5),
+                 {"/populations/0/scale_max", "must be at least scale_min (0.8)", "0.5"});
+    expect_error(set(minimal(), "/camera/far_m", 0.3),
+                 {"/camera/far_m", "must be greater than near_m (0.3)", "0.3"});
+    expect_error(
+        set(minimal(), "/species/0/reduced_distance_m", 2000),
+        {"/species/0/reduced_distance_m", "must be at most max_distance_m (1500)", "2000"});
+}
+
+TEST(scenario_loader, only_the_first_problem_is_reported) {
+    json j = set(minimal(), "/frames", 0);
+    j["fps"] = 0;
+    j["bogus"] = 1;
+    // Unknown keys are checked before any field; fields in their documented order.
+    expect_error(j, {"/bogus",
+                     "unknown field; expected one of: name, seed, resolution, frames, fps, "
+                     "world_offset, terrain, species, populations, camera, sun, shadows, render",
+                     "1"});
+    j.erase("bogus");
+    expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
+}
+
+}  // namespace
+}  // namespace sylva
