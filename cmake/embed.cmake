@@ -9,11 +9,16 @@ function(sylva_embed out_var)
   endforeach()
   list(SORT files)
   set(out ${CMAKE_BINARY_DIR}/embedded/embedded_files.cpp)
+  # The file list travels in a file: a CMake list on a command line would be split by the shell.
+  set(list_file ${CMAKE_BINARY_DIR}/embedded/embedded_files.txt)
+  file(WRITE ${list_file}.tmp "${files}")
+  file(COPY_FILE ${list_file}.tmp ${list_file} ONLY_IF_DIFFERENT)
   add_custom_command(
     OUTPUT ${out}
-    COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DROOT=${CMAKE_SOURCE_DIR} "-DFILES=${files}"
+    COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DROOT=${CMAKE_SOURCE_DIR} -DLIST_FILE=${list_file}
             -P ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
-    DEPENDS ${files} ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
+    DEPENDS ${files} ${list_file} ${CMAKE_SOURCE_DIR}/cmake/embed_files.cmake
+    VERBATIM
     COMMENT "Embedding shaders and scenarios")
   set(${out_var} ${out} PARENT_SCOPE)
 endfunction()

@@ -15,6 +15,7 @@ struct camera {
     float near_plane = 0.3f;
     float far_plane = 3000.0f;
     float lod_scale = 1.0f;  // multiplies every LOD switch distance
+    float viewport_height_px = 540.0f;
     // Derived each frame by update_camera, camera-relative (the eye is at the origin).
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};

@@ -1,0 +1,28 @@
+// sylva: real-time rendering of plant ecosystems. See README.md, or `sylva --help`.
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "app/commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Sylva renders landscapes with hundreds of thousands of plants in real time and measures\n"
+        "what each millisecond buys. Run `sylva COMMAND --help` for a command's options."};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Every command's options");
+    std::vector<std::pair<CLI::App*, sylva::command_runner>> commands;
+    auto* play = app.add_subcommand("play", "Play a scenario headless: frames (PNG) and metrics.json");
+    commands.emplace_back(play, sylva::add_play_command(*play));
+    auto* view = app.add_subcommand("view", "Open a window and walk through a scenario");
+    commands.emplace_back(view, sylva::add_view_command(*view));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : sylva::k_exit_bad_input;
+    }
+    spdlog::set_pattern("[sylva] %v");
+    for (auto& [command, run] : commands)
+        if (command->parsed()) return run();
+    return sylva::k_exit_bad_input;
+}

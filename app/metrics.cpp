@@ -1,0 +1,133 @@
+#include "app/metrics.h"
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+namespace sylva {
+
+std::string_view representation_name(representation r) {
+    constexpr std::array<std::string_view, static_cast<std::size_t>(representation::count)> k_names = {
+        "none", "mesh_full", "mesh_reduced", "points", "lines", "billboard_cloud", "shell",
+        "foliage_clusters"};
+    return k_names[static_cast<std::size_t>(r)];
+}
+
+std::string describe_machine() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    std::string model = "unknown CPU";
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    const std::size_t mid = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(mid), values.end());
+    double m = values[mid];
+    if (values.size() % 2 == 0) {
+        const double lower = *std::max_element(values.begin(), values.begin() + std::ptrdiff_t(mid));
+        m = 0.5 * (m + lower);
+    }
+    return m;
+}
+
+namespace {
+
+nlohmann::json named_ms(const std::vector<std::pair<std::string, double>>& entries) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, ms] : entries) j[name] = ms;
+    return j;
+}
+
+nlohmann::json frame_json(const frame_record& f) {
+    nlohmann::json instances = nlohmann::json::object();
+    for (std::size_t r = 1; r < f.instances.size(); ++r)
+        instances[std::string(representation_name(static_cast<representation>(r)))] = f.instances[r];
+    return {{"frame", f.frame},
+            {"time_s", f.time_s},
+            {"frame_ms", f.frame_ms},
+            {"cpu_ms", f.cpu_ms},
+            {"gpu_ms", f.gpu_ms},
+            {"systems", named_ms(f.systems)},
+            {"passes", named_ms(f.passes)},
+            {"triangles", f.triangles},
+            {"shadow_triangles", f.shadow_triangles},
+            {"points", f.points},
+            {"lines", f.lines},
+            {"instances", instances},
+            {"upload_bytes", f.upload_bytes},
+            {"draw_calls", f.draw_calls},
+            {"image_hash", f.image_hash},
+            {"state_hash", f.state_hash}};
+}
+
+// Median of one named entry (system or pass) over all frames.
+nlohmann::json median_by_name(const std::vector<frame_record>& frames,
+                              std::vector<std::pair<std::string, double>> frame_record::*field) {
+    nlohmann::json out = nlohmann::json::object();
+    if (frames.empty()) return out;
+    for (std::size_t i = 0; i < (frames.front().*field).size(); ++i) {
+        std::vector<double> values;
+        for (const auto& f : frames) values.push_back((f.*field)[i].second);
+        out[(frames.front().*field)[i].first] = median(values);
+    }
+    return out;
+}
+
+nlohmann::json summary_json(const run_info& info, const std::vector<frame_record>& frames) {
+    auto med = [&](double frame_record::*field) {
+        std::vector<double> values;
+        for (const auto& f : frames) values.push_back(f.*field);
+        return median(values);
+    };
+    std::vector<double> triangles;
+    for (const auto& f : frames) triangles.push_back(double(f.triangles));
+    return {{"scenario", info.scenario},
+            {"source", info.source},
+            {"frames", frames.size()},
+            {"width", info.width},
+            {"height", info.height},
+            {"threads", info.threads},
+            {"plants", info.plants},
+            {"source_triangles", info.source_triangles},
+            {"setup_ms", info.setup_ms},
+            {"median_frame_ms", med(&frame_record::frame_ms)},
+            {"median_cpu_ms", med(&frame_record::cpu_ms)},
+            {"median_gpu_ms", med(&frame_record::gpu_ms)},
+            {"median_triangles", median(triangles)},
+            {"median_systems_ms", median_by_name(frames, &frame_record::systems)},
+            {"median_passes_ms", median_by_name(frames, &frame_record::passes)},
+            {"machine", info.machine},
+            {"gl_renderer", info.gl_renderer},
+            {"gl_version", info.gl_version},
+            {"gl_backend", info.backend}};
+}
+
+}  // namespace
+
+void write_metrics_json(const std::filesystem::path& path, const run_info& info,
+                        const std::vector<frame_record>& frames) {
+    nlohmann::json root;
+    root["frames"] = nlohmann::json::array();
+    for (const auto& f : frames) root["frames"].push_back(frame_json(f));
+    root["summary"] = summary_json(info, frames);
+    const std::filesystem::path temporary = path.string() + ".tmp";
+    {
+        std::ofstream out(temporary);
+        if (!out) throw std::runtime_error("cannot write " + temporary.string());
+        out << root.dump(2) << '\n';
+        if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    }
+    std::filesystem::rename(temporary, path);
+}
+
+}  // namespace sylva

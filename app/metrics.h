@@ -1,0 +1,59 @@
+#pragma once
+// Per-frame measurements and their JSON form (metrics.json): what a frame cost on the CPU per
+// system, on the GPU per pass, what it drew and uploaded, and hashes of its image and state that
+// must not depend on the thread count.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "components/lod_state.h"
+
+namespace sylva {
+
+struct frame_record {
+    std::uint64_t frame = 0;
+    double time_s = 0.0;
+    double frame_ms = 0.0;  // wall time of the whole frame, GPU finished
+    double cpu_ms = 0.0;    // systems plus GL command recording, without waiting for the GPU
+    double gpu_ms = 0.0;    // sum of the GPU pass timers
+    std::vector<std::pair<std::string, double>> systems;  // ms per system, schedule order
+    std::vector<std::pair<std::string, double>> passes;   // GPU ms per render pass
+    std::uint64_t triangles = 0;         // in the camera's view
+    std::uint64_t shadow_triangles = 0;  // in the shadow cascades
+    std::uint64_t points = 0;
+    std::uint64_t lines = 0;
+    std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances{};
+    std::uint64_t upload_bytes = 0;
+    std::uint32_t draw_calls = 0;
+    std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)
+    std::uint64_t state_hash = 0;  // FNV-1a of the LOD state and the draw list
+};
+
+struct run_info {
+    std::string scenario;
+    std::string source;
+    std::string gl_renderer;
+    std::string gl_version;
+    std::string backend;
+    std::string machine;  // CPU model and core count
+    int threads = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::size_t plants = 0;
+    std::uint64_t source_triangles = 0;
+    double setup_ms = 0.0;  // building assets, world and GPU resources
+};
+
+std::string_view representation_name(representation r);
+std::string describe_machine();
+double median(std::vector<double> values);
+
+// Writes metrics.json atomically (temporary file, then rename); throws naming the path.
+void write_metrics_json(const std::filesystem::path& path, const run_info& info,
+                        const std::vector<frame_record>& frames);
+
+}  // namespace sylva

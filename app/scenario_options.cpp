@@ -1,0 +1,31 @@
+#include "app/scenario_options.h"
+
+#include "scenarios/scenario_loader.h"
+
+namespace sylva {
+
+void add_scenario_options(CLI::App& command, scenario_options& options) {
+    command.add_option("scenario", options.path,
+                       "Scenario JSON file (see README: scenario format); default: the embedded "
+                       "scenarios/default.json");
+    command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")
+        ->check(CLI::Range(1u, 1000000u));
+    command.add_option("--width", options.width, "Image width in pixels (overrides the scenario)")
+        ->check(CLI::Range(16u, 16384u));
+    command.add_option("--height", options.height, "Image height in pixels (overrides the scenario)")
+        ->check(CLI::Range(16u, 16384u));
+    command.add_option("--threads", options.threads,
+                       "Worker threads for the frame's systems (0: every hardware thread). Results "
+                       "are bit-identical for any value")
+        ->check(CLI::Range(0, 256));
+}
+
+scenario load_with_overrides(const scenario_options& options) {
+    scenario s = options.path.empty() ? load_default_scenario() : load_scenario_file(options.path);
+    if (options.frames) s.frames = *options.frames;
+    if (options.width) s.width = *options.width;
+    if (options.height) s.height = *options.height;
+    return s;
+}
+
+}  // namespace sylva

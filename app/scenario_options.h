@@ -1,0 +1,24 @@
+#pragma once
+// Options every command that plays a scenario shares: which scenario, and the overrides of its
+// frame count, resolution and thread count.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "scenarios/scenario.h"
+
+namespace sylva {
+
+struct scenario_options {
+    std::string path;  // empty: the embedded default scenario
+    std::optional<std::uint32_t> frames;
+    std::optional<std::uint32_t> width;
+    std::optional<std::uint32_t> height;
+    int threads = 0;
+};
+
+void add_scenario_options(CLI::App& command, scenario_options& options);
+// Loads the scenario (or the default) and applies the overrides; throws scenario_error.
+scenario load_with_overrides(const scenario_options& options);
+
+}  // namespace sylva

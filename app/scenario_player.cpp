@@ -1,0 +1,155 @@
+#include "app/scenario_player.h"
+
+#include <chrono>
+#include <thread>
+
+#include "components/lod_state.h"
+#include "systems/build_draw_list_system.h"
+#include "systems/cull_system.h"
+#include "systems/fit_shadow_cascades_system.h"
+#include "systems/frame_stats.h"
+#include "systems/project_environment_system.h"
+#include "systems/render/pass_timer.h"
+#include "systems/render/submit_system.h"
+#include "systems/select_representation_system.h"
+#include "systems/spawn_scenario.h"
+#include "systems/update_camera_system.h"
+#include "systems/update_sun_system.h"
+
+namespace sylva {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+
+double ms_since(clock_type::time_point start) {
+    return std::chrono::duration<double, std::milli>(clock_type::now() - start).count();
+}
+
+int resolve_threads(int threads) {
+    if (threads > 0) return threads;
+    const unsigned hw = std::thread::hardware_concurrency();
+    return hw ? int(hw) : 1;
+}
+
+// The frame (DESIGN.md §2): playback → cull → select → lighting → build → submit.
+void register_frame_systems(ecs::schedule& schedule) {
+    schedule.add<update_camera_system>();
+    schedule.add<update_sun_system>();
+    schedule.add<cull_system>();
+    schedule.add<select_representation_system>();
+    schedule.add<project_environment_system>();
+    schedule.add<fit_shadow_cascades_system>();
+    schedule.add<build_draw_list_system>();
+    schedule.add<submit_system>();
+    schedule.build();
+}
+
+render::renderer_settings renderer_settings_of(const scenario& s) {
+    render::renderer_settings r;
+    r.width = int(s.width);
+    r.height = int(s.height);
+    r.shadow_resolution = int(s.shadows.resolution);
+    r.cascades = int(s.shadows.cascades);
+    r.shadows = s.render.shadows;
+    r.exposure = s.render.exposure;
+    return r;
+}
+
+}  // namespace
+
+std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    std::uint64_t h = seed;
+    for (std::size_t i = 0; i < bytes; ++i) {
+        h ^= p[i];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+scenario_player::scenario_player(scenario s, int threads, render::gl_context* context)
+    : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
+    const auto start = clock_type::now();
+    m_assets = build_scene_assets(m_scenario);
+    const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
+    register_frame_systems(m_schedule);
+
+    render_device device;
+    device.terrain_origin = m_scenario.world_offset;
+    if (context) {
+        m_renderer = std::make_unique<render::renderer>(renderer_settings_of(m_scenario), m_assets);
+        device.renderer = m_renderer.get();
+        m_info.gl_renderer = context->renderer();
+        m_info.gl_version = context->version();
+        m_info.backend = context->backend_name();
+    }
+    m_world.set_resource(device);
+
+    m_info.scenario = m_scenario.name;
+    m_info.source = m_scenario.source;
+    m_info.machine = describe_machine();
+    m_info.threads = m_executor.threads();
+    m_info.width = m_scenario.width;
+    m_info.height = m_scenario.height;
+    m_info.plants = report.plants;
+    const auto& plants = m_world.table<plant_instance>();
+    for (std::size_t i = 0; i < plants.size(); ++i)
+        m_info.source_triangles +=
+            m_assets.library.species[static_cast<std::size_t>(plants.data()[i].species)].triangles_full;
+    m_info.setup_ms = ms_since(start);
+}
+
+scenario_player::~scenario_player() = default;
+
+void scenario_player::set_frame(std::uint64_t frame) { m_frame = frame; }
+
+frame_record scenario_player::step() {
+    m_world.resource<playback_clock>().frame = m_frame;
+    m_world.set_frame_index(m_frame);
+    const auto start = clock_type::now();
+    m_executor.run([&] { m_schedule.run(m_world, m_executor); });
+    frame_record record;
+    record.frame_ms = ms_since(start);
+    record.frame = m_frame;
+    record.time_s = m_world.resource<playback_clock>().time_s();
+
+    const frame_stats& stats = m_world.resource<frame_stats>();
+    for (const auto& [name, ms] : m_schedule.last_timings()) {
+        record.systems.emplace_back(std::string(name), ms);
+        if (name != submit_system::k_name) record.cpu_ms += ms;
+    }
+    record.cpu_ms += stats.submit_cpu_ms;
+    for (std::size_t p = 0; p < stats.gpu_pass_ms.size(); ++p)
+        record.passes.emplace_back(std::string(render::k_gpu_pass_names[p]), stats.gpu_pass_ms[p]);
+    record.gpu_ms = stats.gpu_ms;
+    const draw_list& draws = m_world.resource<draw_list>();
+    record.triangles = draws.triangles;
+    record.shadow_triangles = draws.shadow_triangles;
+    record.points = draws.points;
+    record.lines = draws.lines;
+    record.instances = draws.instances_by_representation;
+    record.upload_bytes = stats.upload_bytes;
+    record.draw_calls = stats.draw_calls;
+    record.state_hash = state_hash();
+    ++m_frame;
+    return record;
+}
+
+image_rgba8 scenario_player::capture() const {
+    return m_renderer ? m_renderer->read_color() : image_rgba8{};
+}
+
+void scenario_player::present(int window_width, int window_height) const {
+    if (m_renderer) m_renderer->present(window_width, window_height);
+}
+
+std::uint64_t scenario_player::state_hash() const {
+    const auto& lod = m_world.table<lod_state>();
+    std::uint64_t h = fnv1a(lod.data(), lod.size() * sizeof(lod_state));
+    const draw_list& draws = m_world.resource<draw_list>();
+    h = fnv1a(draws.items.data(), draws.items.size() * sizeof(draw_item), h);
+    h = fnv1a(draws.instances.data(), draws.instances.size() * sizeof(instance_gpu), h);
+    return h;
+}
+
+}  // namespace sylva

@@ -1,0 +1,56 @@
+#pragma once
+// Plays a scenario: builds its assets and ECS world, registers the frame's systems in their
+// phases, and runs one frame per step() on the executor, submitting to the renderer when there
+// is a GL context (without one, the same frame loop runs CPU-only for tests and benchmarks).
+#include <cstdint>
+#include <memory>
+
+#include "app/metrics.h"
+#include "ecs/executor.h"
+#include "ecs/schedule.h"
+#include "ecs/world.h"
+#include "models/image.h"
+#include "scenarios/scenario.h"
+#include "systems/render/gl_context.h"
+#include "systems/render/renderer.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+class scenario_player {
+public:
+    // `context` may be null: then nothing is rendered. `threads` 0 means every hardware thread.
+    scenario_player(scenario s, int threads, render::gl_context* context);
+    ~scenario_player();
+
+    frame_record step();  // plays the current frame, then advances to the next
+    image_rgba8 capture() const;
+    // Blits the last frame to the window's default framebuffer (view).
+    void present(int window_width, int window_height) const;
+    void set_frame(std::uint64_t frame);
+    std::uint64_t frame() const { return m_frame; }
+
+    // FNV-1a over every plant's LOD state and the sorted draw list: equal for any thread count.
+    std::uint64_t state_hash() const;
+
+    const scenario& settings() const { return m_scenario; }
+    const scene_assets& assets() const { return m_assets; }
+    ecs::world& world() { return m_world; }
+    const ecs::schedule& schedule() const { return m_schedule; }
+    run_info info() const { return m_info; }
+
+private:
+    scenario m_scenario;
+    scene_assets m_assets;
+    ecs::world m_world;
+    ecs::schedule m_schedule;
+    ecs::executor m_executor;
+    std::unique_ptr<render::renderer> m_renderer;
+    run_info m_info;
+    std::uint64_t m_frame = 0;
+};
+
+// FNV-1a 64 over bytes (image and state hashes).
+std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed = 0xcbf29ce484222325ULL);
+
+}  // namespace sylva

@@ -1,0 +1,177 @@
+// `sylva view`: a window onto a scenario. It plays the scenario's camera path; F switches to
+// flying by hand (W/A/S/D, Q/E, drag with the left mouse button to look), Space pauses, N steps
+// one frame, Escape quits. An overlay shows the frame's measurements.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "app/commands.h"
+#include "app/scenario_options.h"
+#include "app/scenario_player.h"
+#include "components/camera.h"
+#include "models/textures.h"
+#include "scenarios/scenario_loader.h"
+#include "systems/playback.h"
+#include "systems/render/render_target.h"
+
+namespace sylva {
+namespace {
+
+struct view_options {
+    scenario_options scenario;
+    std::uint32_t exit_after = 0;  // frames; 0 = run until closed
+    std::string screenshot;
+    bool hidden = false;
+    bool overlay = true;
+};
+
+struct walk_state {
+    bool paused = false;
+    bool step = false;
+    bool flying = false;
+    double last_x = 0.0, last_y = 0.0;
+    bool dragging = false;
+    float yaw = 0.0f, pitch = 0.0f;
+};
+
+void key_callback(GLFWwindow* window, int key, int, int action, int) {
+    auto* state = static_cast<walk_state*>(glfwGetWindowUserPointer(window));
+    if (action != GLFW_PRESS) return;
+    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (key == GLFW_KEY_SPACE) state->paused = !state->paused;
+    if (key == GLFW_KEY_N) state->step = true;
+    if (key == GLFW_KEY_F) state->flying = !state->flying;
+}
+
+// Moves the camera by hand: yaw/pitch from mouse drags, position from keys (metres/second).
+void fly(GLFWwindow* window, walk_state& state, camera& cam, float dt) {
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window, &x, &y);
+    const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS &&
+                      !ImGui::GetIO().WantCaptureMouse;
+    if (down && state.dragging) {
+        state.yaw -= float(x - state.last_x) * 0.004f;
+        state.pitch = std::clamp(state.pitch - float(y - state.last_y) * 0.004f, -1.5f, 1.5f);
+    }
+    state.dragging = down;
+    state.last_x = x;
+    state.last_y = y;
+    cam.forward = {std::cos(state.pitch) * std::sin(state.yaw), std::sin(state.pitch),
+                   -std::cos(state.pitch) * std::cos(state.yaw)};
+    const glm::vec3 right = glm::normalize(glm::cross(cam.forward, glm::vec3(0, 1, 0)));
+    const float speed = (glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ? 60.0f : 12.0f) * dt;
+    glm::vec3 move{0.0f};
+    if (glfwGetKey(window, GLFW_KEY_W) == GLFW_PRESS) move += cam.forward;
+    if (glfwGetKey(window, GLFW_KEY_S) == GLFW_PRESS) move -= cam.forward;
+    if (glfwGetKey(window, GLFW_KEY_D) == GLFW_PRESS) move += right;
+    if (glfwGetKey(window, GLFW_KEY_A) == GLFW_PRESS) move -= right;
+    if (glfwGetKey(window, GLFW_KEY_E) == GLFW_PRESS) move.y += 1.0f;
+    if (glfwGetKey(window, GLFW_KEY_Q) == GLFW_PRESS) move.y -= 1.0f;
+    cam.position += glm::dvec3(move * speed);
+}
+
+void draw_overlay(const frame_record& r, const walk_state& state, const run_info& info) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    ImGui::Begin("Sylva", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::Text("%s  frame %llu  t=%.2f s%s%s", info.scenario.c_str(),
+                static_cast<unsigned long long>(r.frame), r.time_s, state.paused ? "  [paused]" : "",
+                state.flying ? "  [flying]" : "");
+    ImGui::Text("frame %.1f ms  cpu %.1f ms  gpu %.1f ms", r.frame_ms, r.cpu_ms, r.gpu_ms);
+    for (const auto& [name, ms] : r.systems) ImGui::Text("  %-22s %6.2f ms", name.c_str(), ms);
+    for (const auto& [name, ms] : r.passes) ImGui::Text("  gpu %-18s %6.2f ms", name.c_str(), ms);
+    ImGui::Text("triangles %llu (+%llu shadow)  draws %u", static_cast<unsigned long long>(r.triangles),
+                static_cast<unsigned long long>(r.shadow_triangles), r.draw_calls);
+    ImGui::Text("instances: full %u  reduced %u", r.instances[1], r.instances[2]);
+    ImGui::Text("%zu plants  %s", info.plants, info.gl_renderer.c_str());
+    ImGui::TextDisabled("F fly  WASDQE move  drag look  Space pause  N step  Esc quit");
+    ImGui::End();
+}
+
+int view(const view_options& o) {
+    scenario s;
+    try {
+        s = load_with_overrides(o.scenario);
+    } catch (const scenario_error& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
+    }
+    try {
+        render::context_options context_options;
+        context_options.width = int(s.width);
+        context_options.height = int(s.height);
+        context_options.headless = false;
+        context_options.visible = !o.hidden;
+        context_options.title = "Sylva — " + s.name;
+        auto context = render::create_context(context_options);
+        scenario_player player(s, o.scenario.threads, context.get());
+        walk_state state;
+        GLFWwindow* window = context->window();
+        glfwSetWindowUserPointer(window, &state);
+        glfwSetKeyCallback(window, key_callback);
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+        ImGui_ImplOpenGL3_Init("#version 450");
+
+        std::uint32_t shown = 0;
+        double last_time = glfwGetTime();
+        while (context->poll_events()) {
+            const double now = glfwGetTime();
+            auto& track = player.world().resource<camera_track>();
+            track.follow = !state.flying;
+            if (state.flying) fly(window, state, player.world().single<camera>(), float(now - last_time));
+            last_time = now;
+            const std::uint64_t frame = player.frame();
+            frame_record record = player.step();
+            if (state.paused && !state.step) player.set_frame(frame);
+            state.step = false;
+            player.present(context->width(), context->height());
+            ++shown;
+            if (!o.screenshot.empty() && o.exit_after && shown == o.exit_after)
+                write_image(render::read_default_framebuffer(context->width(), context->height()),
+                            o.screenshot);
+            if (o.overlay) {
+                ImGui_ImplOpenGL3_NewFrame();
+                ImGui_ImplGlfw_NewFrame();
+                ImGui::NewFrame();
+                draw_overlay(record, state, player.info());
+                ImGui::Render();
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            }
+            context->swap_buffers();
+            if (o.exit_after && shown >= o.exit_after) break;
+        }
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    } catch (const std::exception& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_failure;
+    }
+    return k_exit_ok;
+}
+
+}  // namespace
+
+command_runner add_view_command(CLI::App& app) {
+    auto options = std::make_shared<view_options>();
+    add_scenario_options(app, options->scenario);
+    app.add_option("--exit-after", options->exit_after,
+                   "Close after this many frames (0: when the window is closed)");
+    app.add_option("--screenshot", options->screenshot,
+                   "With --exit-after: save the last frame (without the overlay) to this PNG");
+    app.add_flag("--hidden", options->hidden, "Keep the window hidden (automated tests)");
+    app.add_flag("!--no-overlay", options->overlay, "Hide the statistics overlay");
+    return [options] { return view(*options); };
+}
+
+}  // namespace sylva

@@ -1,0 +1,72 @@
+// Shading of terrain, bark and leaves: sun light with cascaded shadows plus sky light from the
+// environment's SH irradiance, leaves lit from behind by transmitted sunlight; then fog and tone
+// mapping. MATERIAL_LEAF alpha-tests (also in the shadow pass, so leaves cast leaf shadows).
+#include "common.glsl"
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+in float v_tint;
+flat in float v_layer;
+
+layout(binding = 0) uniform sampler2DArray u_albedo;
+#ifndef SHADOW_PASS
+layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
+out vec4 out_color;
+#endif
+
+#ifndef SHADOW_PASS
+// Cascade chosen by view depth; 3x3 hardware-PCF taps (each a bilinear 2x2 compare), with the
+// sample pushed along the normal by about one texel to avoid acne on slopes.
+float sun_visibility(vec3 position, vec3 normal, float view_depth) {
+    if (u_sun_direction.w < 0.5) return 1.0;
+    int count = int(u_sun_radiance.w);
+    int cascade = count - 1;
+    for (int i = 0; i < count; ++i) {
+        if (view_depth < u_cascade_split_far[i]) { cascade = i; break; }
+    }
+    if (view_depth > u_cascade_split_far[count - 1]) return 1.0;
+    vec3 offset_position = position + normal * (1.5 * u_cascade_texel_world[cascade]);
+    vec4 light = u_cascade_view_projection[cascade] * vec4(offset_position, 1.0);
+    vec3 p = light.xyz / light.w * 0.5 + 0.5;
+    if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+    float texel = u_params.y;
+    float bias = 0.0005;
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            sum += texture(u_shadow_map, vec4(p.xy + vec2(x, y) * texel, float(cascade), p.z - bias));
+    return sum / 9.0;
+}
+#endif
+
+void main() {
+#ifdef MATERIAL_GROUND
+    vec4 albedo = texture(u_albedo, vec3(v_uv * u_params.w, v_layer));
+#else
+    vec4 albedo = texture(u_albedo, vec3(v_uv, v_layer));
+#endif
+#ifdef MATERIAL_LEAF
+    if (albedo.a < 0.5) discard;
+#endif
+#ifndef SHADOW_PASS
+    vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
+    vec3 n = normalize(v_normal);
+#ifdef MATERIAL_LEAF
+    if (!gl_FrontFacing) n = -n;  // leaves are thin double-sided cards
+#endif
+    vec3 l = u_sun_direction.xyz;
+    float view_depth = -(u_view * vec4(v_position, 1.0)).z;
+    float visibility = sun_visibility(v_position, n, view_depth);
+    float n_dot_l = dot(n, l);
+    vec3 sun = u_sun_radiance.rgb * visibility;
+    vec3 sky = sh_irradiance(n);
+    vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
+#ifdef MATERIAL_LEAF
+    // Sunlight transmitted through the leaf blade when lit from behind.
+    radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
+#endif
+    vec3 color = apply_fog(radiance, length(v_position));
+    out_color = vec4(tone_map(color), 1.0);
+#endif
+}

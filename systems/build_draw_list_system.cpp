@@ -1,0 +1,140 @@
+#include "systems/build_draw_list_system.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "ecs/parallel.h"
+
+namespace sylva {
+namespace {
+
+struct chunk_totals {
+    std::uint32_t items = 0;
+};
+
+// What one plant contributes: its mesh, and a bit per pass it is drawn in.
+struct plant_draws {
+    std::uint16_t mesh = 0;
+    std::uint32_t pass_mask = 0;  // bit i: render_pass i
+    float distance = 0.0f;
+};
+
+class draw_builder {
+public:
+    draw_builder(const camera& cam, const species_library& library, const cascade_set& cascades)
+        : m_camera(cam), m_library(library) {
+        m_cascade_count = cascades.count;
+        for (int c = 0; c < cascades.count; ++c)
+            m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
+    }
+
+    plant_draws classify(const world_transform& t, const bounds& b, const plant_instance& p,
+                         const lod_state& lod) const {
+        plant_draws d;
+        if (lod.current == representation::none) return d;
+        const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
+        d.mesh = lod.current == representation::mesh_full ? species.mesh_full : species.mesh_reduced;
+        const glm::vec3 base{t.position - m_camera.position};
+        const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
+        d.distance = glm::length(base);
+        if (lod.visible) d.pass_mask |= 1u << unsigned(render_pass::opaque);
+        if (lod.in_shadow_range)
+            for (int c = 0; c < m_cascade_count; ++c)
+                if (sphere_overlaps_cascade(m_cascades[std::size_t(c)], center, b.radius))
+                    d.pass_mask |= 1u << unsigned(shadow_pass(c));
+        return d;
+    }
+
+private:
+    const camera& m_camera;
+    const species_library& m_library;
+    std::array<cascade_bounds, k_max_cascades> m_cascades{};
+    int m_cascade_count = 0;
+};
+
+std::uint32_t popcount(std::uint32_t v) { return std::uint32_t(__builtin_popcount(v)); }
+
+instance_gpu make_instance(const camera& cam, const world_transform& t, const plant_instance& p,
+                           const fade_alpha& fade, const species_library& library) {
+    instance_gpu g;
+    g.position = glm::vec3(t.position - cam.position);
+    g.yaw = t.yaw;
+    g.scale = t.scale;
+    g.tint = float(p.tint) / 65535.0f * 2.0f - 1.0f;
+    g.fade = fade.value;
+    g.texture_layer = library.species[static_cast<std::size_t>(p.species)].texture_layer;
+    return g;
+}
+
+}  // namespace
+
+cascade_bounds make_cascade_bounds(const glm::mat4& m) {
+    cascade_bounds c;
+    c.light_view_projection = m;
+    // For an orthographic projection the rows' lengths are the clip units per metre.
+    c.radius_scale = {glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])),
+                      glm::length(glm::vec3(m[0][1], m[1][1], m[2][1])),
+                      glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]))};
+    return c;
+}
+
+bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius) {
+    const glm::vec4 p = cascade.light_view_projection * glm::vec4(center, 1.0f);
+    const glm::vec3 r = cascade.radius_scale * radius;
+    return std::abs(p.x) <= 1.0f + r.x && std::abs(p.y) <= 1.0f + r.y && p.z <= 1.0f + r.z;
+}
+
+void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ctx) {
+    const camera& cam = ctx.single<camera>();
+    const auto& library = ctx.resource<species_library>();
+    const draw_builder builder(cam, library, ctx.resource<cascade_set>());
+    auto plants = ctx.query<const world_transform, const bounds, const plant_instance, const lod_state>();
+    const std::size_t n = plants.size();
+    const std::size_t chunk = ecs::k_default_chunk;
+    const std::size_t chunks = (n + chunk - 1) / chunk;
+    draw_list& list = ctx.resource_mut<draw_list>();
+
+    // Pass 1: how many items each chunk adds. Pass 2: write them at the prefix-sum offsets.
+    std::vector<std::uint32_t>& offsets = list.chunk_offsets;
+    offsets.assign(chunks + 1, 0);
+    ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
+        std::uint32_t count = 0;
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
+                                          const plant_instance& p, const lod_state& lod) {
+            count += popcount(builder.classify(t, b, p, lod).pass_mask);
+        });
+        offsets[c + 1] = count;
+    });
+    for (std::size_t c = 0; c < chunks; ++c) offsets[c + 1] += offsets[c];
+    list.items.resize(offsets[chunks]);
+    ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
+        draw_item* out = list.items.data() + offsets[c];
+        std::uint32_t index = std::uint32_t(begin);
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
+                                          const plant_instance& p, const lod_state& lod) {
+            const plant_draws d = builder.classify(t, b, p, lod);
+            const std::uint32_t depth = quantize_depth(d.distance);
+            for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
+                const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
+                *out++ = {make_sort_key({pass, d.mesh, depth}), index, 0};
+            }
+            ++index;
+        });
+    });
+    radix_sort_draw_items(list.items, list.scratch);
+
+    // Instance records in sorted order; the tables are aligned, so a dense index reads them all.
+    const auto transforms = ctx.read<world_transform>().data();
+    const auto instances = ctx.read<plant_instance>().data();
+    const auto fades = ctx.read<fade_alpha>().data();
+    list.instances.resize(list.items.size());
+    ctx.parallel_for(list.items.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t k = list.items[i].instance;
+            list.instances[i] = make_instance(cam, transforms[k], instances[k], fades[k], library);
+        }
+    });
+    build_batches(list, library);
+}
+
+}  // namespace sylva

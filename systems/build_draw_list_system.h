@@ -1,0 +1,39 @@
+#pragma once
+// Turns the frame's LOD decisions into the draw list: one draw item per (visible plant, opaque
+// pass) and per (shadow-casting plant, cascade it overlaps), keyed by pass, mesh and depth.
+// Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
+// is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
+// instanced batches with their camera-relative instance records.
+#include "components/bounds.h"
+#include "components/camera.h"
+#include "components/fade_alpha.h"
+#include "components/lod_state.h"
+#include "components/plant_instance.h"
+#include "components/transform.h"
+#include "ecs/system.h"
+#include "systems/draw_list.h"
+#include "systems/lighting/shadow_cascades.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+// A cascade's light-space box as the caster test needs it.
+struct cascade_bounds {
+    glm::mat4 light_view_projection{1.0f};
+    glm::vec3 radius_scale{1.0f};  // clip-space units per metre along x, y, z
+};
+// True when a sphere (camera-relative) may cast into the cascade: inside its x/y extent and
+// not behind its far plane (anything towards the sun may cast).
+bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius);
+cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
+
+struct build_draw_list_system {
+    static constexpr std::string_view k_name = "build_draw_list";
+    static constexpr ecs::phase k_phase = ecs::phase::build;
+    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, fade_alpha,
+                             species_library, cascade_set>;
+    using writes = ecs::writes<draw_list>;
+    static void run(ecs::system_context<build_draw_list_system>& ctx);
+};
+
+}  // namespace sylva

@@ -1,0 +1,18 @@
+#pragma once
+// What the submission measured for the frame, for metrics.json. Written by submit (main thread).
+#include <array>
+#include <cstdint>
+
+namespace sylva {
+
+struct frame_stats {
+    std::array<double, 3> gpu_pass_ms{};  // shadow, opaque, sky (render::k_gpu_pass_names)
+    double gpu_ms = 0.0;
+    double submit_cpu_ms = 0.0;
+    double finish_ms = 0.0;  // time spent waiting for the GPU to finish
+    std::uint64_t upload_bytes = 0;
+    std::uint32_t draw_calls = 0;
+    std::uint32_t indirect_commands = 0;
+};
+
+}  // namespace sylva

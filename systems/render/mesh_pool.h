@@ -1,0 +1,48 @@
+#pragma once
+// Every mesh of the scene in one shared vertex buffer and one shared index buffer, so a whole
+// pass is one vertex array binding and a handful of multi-draw-indirect calls.
+#include <cstdint>
+#include <vector>
+
+#include "models/mesh.h"
+#include "systems/render/gl_objects.h"
+
+namespace sylva::render {
+
+struct gpu_submesh {
+    std::uint32_t first_index = 0;  // in the shared index buffer
+    std::uint32_t index_count = 0;
+    std::int32_t base_vertex = 0;   // in the shared vertex buffer
+    material_kind material = material_kind::bark;
+};
+
+struct gpu_mesh {
+    std::vector<gpu_submesh> submeshes;
+    std::uint32_t triangle_count = 0;
+};
+
+class mesh_pool {
+public:
+    mesh_pool();
+    // Uploads the mesh; the returned id is its index (stable for the pool's lifetime).
+    std::uint16_t add(const mesh_data& mesh);
+    const gpu_mesh& get(std::uint16_t id) const { return m_meshes.at(id); }
+    std::size_t size() const { return m_meshes.size(); }
+    GLuint vertex_array() const { return m_vao.id(); }
+    std::uint64_t uploaded_bytes() const { return m_uploaded_bytes; }
+
+private:
+    void reserve(std::size_t vertex_count, std::size_t index_count);
+
+    gl_vertex_array m_vao;
+    gl_buffer m_vertices;
+    gl_buffer m_indices;
+    std::size_t m_vertex_capacity = 0;
+    std::size_t m_index_capacity = 0;
+    std::size_t m_vertex_count = 0;
+    std::size_t m_index_count = 0;
+    std::uint64_t m_uploaded_bytes = 0;
+    std::vector<gpu_mesh> m_meshes;
+};
+
+}  // namespace sylva::render

@@ -1,0 +1,65 @@
+#include "systems/render/render_target.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace sylva::render {
+
+render_target::render_target(int width, int height)
+    : m_width(width), m_height(height), m_color(make_texture(GL_TEXTURE_2D)),
+      m_depth(make_texture(GL_TEXTURE_2D)), m_framebuffer(make_framebuffer()) {
+    glTextureStorage2D(m_color.id(), 1, GL_RGBA8, width, height);
+    glTextureStorage2D(m_depth.id(), 1, GL_DEPTH_COMPONENT24, width, height);
+    glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT0, m_color.id(), 0);
+    glNamedFramebufferTexture(m_framebuffer.id(), GL_DEPTH_ATTACHMENT, m_depth.id(), 0);
+    if (glCheckNamedFramebufferStatus(m_framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("render_target: framebuffer incomplete");
+}
+
+void render_target::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    glViewport(0, 0, m_width, m_height);
+}
+
+image_rgba8 render_target::read_color() const {
+    image_rgba8 image;
+    image.width = std::uint32_t(m_width);
+    image.height = std::uint32_t(m_height);
+    const std::size_t row = std::size_t(m_width) * 4;
+    std::vector<std::uint8_t> bottom_up(row * std::size_t(m_height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(m_color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottom_up.size()),
+                      bottom_up.data());
+    image.texels.resize(bottom_up.size());
+    for (int y = 0; y < m_height; ++y)  // GL's first row is the bottom one
+        std::memcpy(&image.texels[std::size_t(y) * row],
+                    &bottom_up[std::size_t(m_height - 1 - y) * row], row);
+    return image;
+}
+
+void render_target::blit_to_default(int window_width, int window_height) const {
+    glBlitNamedFramebuffer(m_framebuffer.id(), 0, 0, 0, m_width, m_height, 0, 0, window_width,
+                           window_height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+}  // namespace sylva::render
+
+namespace sylva::render {
+
+image_rgba8 read_default_framebuffer(int width, int height) {
+    image_rgba8 image;
+    image.width = std::uint32_t(width);
+    image.height = std::uint32_t(height);
+    const std::size_t row = std::size_t(width) * 4;
+    std::vector<std::uint8_t> bottom_up(row * std::size_t(height));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
+    image.texels.resize(bottom_up.size());
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&image.texels[std::size_t(y) * row], &bottom_up[std::size_t(height - 1 - y) * row], row);
+    return image;
+}
+
+}  // namespace sylva::render

@@ -1,0 +1,287 @@
+#include "systems/render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <numbers>
+
+#include "systems/lighting/sky_model.h"
+#include "systems/render/frame_uniforms.h"
+#include "systems/render/textures.h"
+
+namespace sylva::render {
+namespace {
+
+constexpr GLuint k_instance_binding = 1;
+constexpr int k_sky_width = 128;
+constexpr int k_sky_height = 64;
+constexpr float k_fog_density = 0.0009f;
+
+constexpr std::size_t material_index(material_kind m) { return static_cast<std::size_t>(m); }
+
+void setup_instance_attributes(GLuint vao) {
+    // instance_gpu (systems/draw_list.h): two vec4 attributes, advanced once per instance.
+    glVertexArrayAttribFormat(vao, 3, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vao, 4, 4, GL_FLOAT, GL_FALSE, 16);
+    for (GLuint a : {3u, 4u}) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribBinding(vao, a, k_instance_binding);
+    }
+    glVertexArrayBindingDivisor(vao, k_instance_binding, 1);
+}
+
+// The sky's radiance on an equirectangular grid, matching the lookup in shaders/sky.frag.
+std::vector<float> sky_radiance_grid(const sky_model& sky) {
+    std::vector<float> rgb(std::size_t(k_sky_width) * k_sky_height * 3);
+    for (int j = 0; j < k_sky_height; ++j) {
+        const float theta = (float(j) + 0.5f) / k_sky_height * std::numbers::pi_v<float>;
+        for (int i = 0; i < k_sky_width; ++i) {
+            const float phi = ((float(i) + 0.5f) / k_sky_width - 0.5f) * 2.0f * std::numbers::pi_v<float>;
+            glm::vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+            glm::vec3 l = sky.radiance(d);
+            std::memcpy(&rgb[(std::size_t(j) * k_sky_width + i) * 3], &l, sizeof(l));
+        }
+    }
+    return rgb;
+}
+
+sky_model sky_of(const frame_view& view) {
+    sky_model sky;
+    sky.sun_direction = view.sun_light->direction;
+    sky.turbidity = view.sky->turbidity;
+    sky.sky_intensity = view.sky->sky_intensity;
+    sky.ground_albedo = view.sky->ground_albedo;
+    return sky;
+}
+
+}  // namespace
+
+renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
+    : m_settings(settings), m_ring(std::size_t(4) << 20), m_target(settings.width, settings.height),
+      m_terrain_mesh(assets.terrain_mesh), m_ground_uv_scale(assets.ground_uv_scale_m) {
+    for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
+        std::uint16_t id = m_meshes.add(assets.meshes[i]);
+        if (id != i) throw std::logic_error("renderer: mesh ids must follow scene_assets order");
+    }
+    setup_instance_attributes(m_meshes.vertex_array());
+    m_leaf_textures = make_texture_array(assets.leaf_textures, false);
+    m_bark_textures = make_texture_array(assets.bark_textures, true);
+    m_ground_texture = make_texture_array(std::span(&assets.ground_texture, 1), true);
+    if (settings.shadows)
+        m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
+    m_static_upload_bytes = m_meshes.uploaded_bytes();
+    for (const auto* images : {&assets.leaf_textures, &assets.bark_textures})
+        for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
+    m_static_upload_bytes += assets.ground_texture.texels.size();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+}
+
+renderer::~renderer() = default;
+
+GLuint renderer::surface_program(material_kind material, bool shadow) {
+    program_source source{"surface.vert", "surface.frag", {}};
+    if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
+    if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
+    if (shadow) {
+        source.defines.push_back("SHADOW_PASS");
+        // Opaque casters need no fragment shader at all: depth only.
+        if (material != material_kind::leaf) source.fragment.clear();
+    }
+    return m_shaders.program(source);
+}
+
+void renderer::update_sky_texture(const frame_view& view) {
+    if (m_sky_texture && m_sky_revision == view.sky->sky_revision) return;
+    std::vector<float> grid = sky_radiance_grid(sky_of(view));
+    m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
+    m_sky_revision = view.sky->sky_revision;
+    m_frame_upload_bytes += grid.size() * sizeof(float);
+}
+
+void renderer::write_uniforms(const frame_view& view) {
+    const camera& cam = *view.view_camera;
+    frame_uniforms u;
+    u.view = cam.view;
+    u.projection = cam.projection;
+    u.view_projection = cam.projection * cam.view;
+    u.inverse_view_projection = glm::inverse(u.view_projection);
+    m_cascade_count = m_shadow_maps ? std::min(view.cascades->count, m_shadow_maps->cascades()) : 0;
+    for (int c = 0; c < m_cascade_count; ++c) {
+        u.cascade_view_projection[c] = view.cascades->light_view_projection[std::size_t(c)];
+        u.cascade_split_far[c] = view.cascades->split_far[std::size_t(c)];
+        u.cascade_texel_world[c] = view.cascades->texel_world_size[std::size_t(c)];
+    }
+    const sun& s = *view.sun_light;
+    const bool sun_up = s.direction.y > -0.05f;
+    u.sun_direction = glm::vec4(s.direction, m_cascade_count > 0 && sun_up ? 1.0f : 0.0f);
+    u.sun_radiance = glm::vec4(sun_up ? s.color * s.intensity : glm::vec3(0.0f), float(m_cascade_count));
+    for (int i = 0; i < 9; ++i) u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
+    // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
+    glm::vec3 horizon{0.0f};
+    for (int i = 0; i < 9; ++i) horizon += view.sky->irradiance_sh[std::size_t(i)] * (i == 0 ? 0.282095f : 0.0f);
+    u.fog = glm::vec4(horizon / std::numbers::pi_v<float> * 0.9f, k_fog_density);
+    const float texel = m_shadow_maps ? 1.0f / float(m_shadow_maps->resolution()) : 0.0f;
+    u.params = glm::vec4(m_settings.exposure, texel, view.time_s, 1.0f / m_ground_uv_scale);
+
+    auto block = m_ring.allocate(sizeof(frame_uniforms), 256);
+    std::memcpy(block.data, &u, sizeof(u));
+    m_uniform_offset = std::size_t(block.offset);
+    m_frame_upload_bytes += sizeof(u);
+}
+
+void renderer::write_instances(const frame_view& view) {
+    const auto& instances = view.draws->instances;
+    const std::size_t bytes = (instances.size() + 1) * sizeof(instance_gpu);
+    auto block = m_ring.allocate(bytes, 256);
+    std::memcpy(block.data, instances.data(), instances.size() * sizeof(instance_gpu));
+    instance_gpu terrain;
+    terrain.position = view.terrain_position;
+    std::memcpy(static_cast<std::byte*>(block.data) + instances.size() * sizeof(instance_gpu), &terrain,
+                sizeof(terrain));
+    glVertexArrayVertexBuffer(m_meshes.vertex_array(), k_instance_binding, m_ring.buffer(),
+                              block.offset, sizeof(instance_gpu));
+    m_frame_upload_bytes += bytes;
+}
+
+void renderer::write_commands(const draw_list& draws) {
+    // Group commands by (pass, material): each group is one glMultiDrawElementsIndirect.
+    static_assert(sizeof(indirect_command) == 20);
+    auto& groups = m_command_groups;
+    for (auto& g : groups) g.clear();
+    auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count) {
+        for (const auto& sub : mesh.submeshes)
+            groups[std::size_t(pass) * 3 + material_index(sub.material)].push_back(
+                {sub.index_count, count, sub.first_index, sub.base_vertex, first});
+    };
+    for (const auto& batch : draws.batches) {
+        if (is_shadow_pass(batch.pass) && int(batch.pass) >= m_cascade_count) continue;
+        add(batch.pass, m_meshes.get(batch.mesh), batch.first_instance, batch.instance_count);
+    }
+    const auto terrain_instance = std::uint32_t(draws.instances.size());
+    add(render_pass::opaque, m_meshes.get(m_terrain_mesh), terrain_instance, 1);
+    for (int c = 0; c < m_cascade_count; ++c)
+        add(shadow_pass(c), m_meshes.get(m_terrain_mesh), terrain_instance, 1);
+
+    m_indirect_commands = 0;
+    for (std::size_t g = 0; g < k_command_groups; ++g) {
+        auto& range = m_commands[g / 3][g % 3];
+        range = {};
+        if (groups[g].empty()) continue;
+        const std::size_t bytes = groups[g].size() * sizeof(indirect_command);
+        auto block = m_ring.allocate(bytes, 16);
+        std::memcpy(block.data, groups[g].data(), bytes);
+        range = {std::size_t(block.offset), std::uint32_t(groups[g].size())};
+        m_indirect_commands += range.count;
+        m_frame_upload_bytes += bytes;
+    }
+}
+
+void renderer::draw_group(const command_range& range, GLuint program, bool cull_back_faces) {
+    if (range.count == 0) return;
+    glUseProgram(program);
+    if (cull_back_faces)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
+    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(range.offset), GLsizei(range.count), 0);
+    ++m_draw_calls;
+}
+
+void renderer::draw_shadow_cascades() {
+    if (m_cascade_count == 0) return;
+    m_timer.begin(gpu_pass::shadow);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);
+    for (int c = 0; c < m_cascade_count; ++c) {
+        m_shadow_maps->bind_layer(c);
+        const GLuint ground = surface_program(material_kind::ground, true);
+        glUseProgram(ground);
+        glUniform1i(glGetUniformLocation(ground, "u_cascade"), c);
+        const auto& groups = m_commands[std::size_t(shadow_pass(c))];
+        draw_group(groups[material_index(material_kind::ground)], ground, false);
+        const GLuint bark = surface_program(material_kind::bark, true);
+        glUseProgram(bark);
+        glUniform1i(glGetUniformLocation(bark, "u_cascade"), c);
+        draw_group(groups[material_index(material_kind::bark)], bark, false);
+        const GLuint leaf = surface_program(material_kind::leaf, true);
+        glUseProgram(leaf);
+        glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
+        glBindTextureUnit(0, m_leaf_textures.id());
+        draw_group(groups[material_index(material_kind::leaf)], leaf, false);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    m_timer.end();
+}
+
+void renderer::draw_opaque() {
+    m_timer.begin(gpu_pass::opaque);
+    m_target.bind();
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());
+    const auto& groups = m_commands[std::size_t(render_pass::opaque)];
+    glBindTextureUnit(0, m_ground_texture.id());
+    draw_group(groups[material_index(material_kind::ground)], surface_program(material_kind::ground, false), true);
+    glBindTextureUnit(0, m_bark_textures.id());
+    draw_group(groups[material_index(material_kind::bark)], surface_program(material_kind::bark, false), true);
+    glBindTextureUnit(0, m_leaf_textures.id());
+    draw_group(groups[material_index(material_kind::leaf)], surface_program(material_kind::leaf, false), false);
+    m_timer.end();
+}
+
+void renderer::draw_sky() {
+    // Drawn last at the far plane: only pixels no surface covered are shaded.
+    m_timer.begin(gpu_pass::sky);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(m_shaders.program({"sky.vert", "sky.frag", {}}));
+    glBindTextureUnit(0, m_sky_texture.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++m_draw_calls;
+    glDepthMask(GL_TRUE);
+    m_timer.end();
+}
+
+void renderer::render(const frame_view& view) {
+    m_frame_upload_bytes = 0;
+    m_draw_calls = 0;
+    const auto& draws = *view.draws;
+    std::size_t commands = (draws.batches.size() + 8) * 3;
+    std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
+                               (draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
+                               commands * sizeof(indirect_command) + 16 * 16;
+    m_ring.begin_frame(bytes_needed);
+    update_sky_texture(view);
+    write_uniforms(view);
+    write_instances(view);
+    write_commands(draws);
+
+    glBindVertexArray(m_meshes.vertex_array());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, m_ring.buffer());
+    glBindBufferRange(GL_UNIFORM_BUFFER, 0, m_ring.buffer(), GLintptr(m_uniform_offset),
+                      sizeof(frame_uniforms));
+    draw_shadow_cascades();
+    draw_opaque();
+    draw_sky();
+    m_ring.end_frame();
+}
+
+submit_stats renderer::finish() {
+    glFinish();
+    submit_stats stats;
+    stats.gpu_pass_ms = m_timer.read();
+    for (double ms : stats.gpu_pass_ms) stats.gpu_ms += ms;
+    stats.upload_bytes = m_frame_upload_bytes;
+    stats.draw_calls = m_draw_calls;
+    stats.indirect_commands = m_indirect_commands;
+    return stats;
+}
+
+void renderer::present(int window_width, int window_height) const {
+    m_target.blit_to_default(window_width, window_height);
+}
+
+}  // namespace sylva::render

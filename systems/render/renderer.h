@@ -1,0 +1,124 @@
+#pragma once
+// The GL submission of a frame: shadow cascades, opaque surfaces (terrain, bark, alpha-tested
+// leaves) and the sky, each pass a few multi-draw-indirect calls over the shared mesh pool with
+// per-instance data streamed through the persistent frame ring. Owned and called only by the
+// thread that owns the GL context (the submit system is a main-thread system).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "components/camera.h"
+#include "components/environment.h"
+#include "components/sun.h"
+#include "models/image.h"
+#include "systems/draw_list.h"
+#include "systems/lighting/shadow_cascades.h"
+#include "systems/render/frame_ring.h"
+#include "systems/render/mesh_pool.h"
+#include "systems/render/pass_timer.h"
+#include "systems/render/render_target.h"
+#include "systems/render/shader_library.h"
+#include "systems/render/shadow_maps.h"
+#include "systems/scene_assets.h"
+
+namespace sylva::render {
+
+struct renderer_settings {
+    int width = 960;
+    int height = 540;
+    int shadow_resolution = 1024;
+    int cascades = 3;
+    bool shadows = true;
+    float exposure = 1.0f;
+};
+
+// What one frame draws, gathered by the submit system from the ECS.
+struct frame_view {
+    const camera* view_camera = nullptr;
+    const sun* sun_light = nullptr;
+    const environment* sky = nullptr;
+    const cascade_set* cascades = nullptr;
+    const draw_list* draws = nullptr;
+    glm::vec3 terrain_position{0.0f};  // camera-relative
+    float time_s = 0.0f;
+};
+
+struct submit_stats {
+    std::array<double, static_cast<int>(gpu_pass::count)> gpu_pass_ms{};
+    double gpu_ms = 0.0;
+    std::uint64_t upload_bytes = 0;  // bytes written to the ring and textures this frame
+    std::uint32_t draw_calls = 0;
+    std::uint32_t indirect_commands = 0;
+};
+
+class renderer {
+public:
+    renderer(const renderer_settings& settings, const scene_assets& assets);
+    ~renderer();
+    renderer(const renderer&) = delete;
+    renderer& operator=(const renderer&) = delete;
+
+    // Records and submits the frame (returns once the GL commands are issued).
+    void render(const frame_view& view);
+    // Waits for the GPU and returns the frame's timings and traffic.
+    submit_stats finish();
+    image_rgba8 read_color() const { return m_target.read_color(); }
+    void present(int window_width, int window_height) const;
+    std::size_t programs_compiled() const { return m_shaders.compiled_count(); }
+    std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
+
+private:
+    struct command_range {
+        std::size_t offset = 0;  // bytes into the ring buffer
+        std::uint32_t count = 0;
+    };
+    // Indirect command groups per pass (shadow cascades and opaque) and material.
+    using pass_commands = std::array<command_range, 3>;
+    // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
+    struct indirect_command {
+        std::uint32_t count;
+        std::uint32_t instance_count;
+        std::uint32_t first_index;
+        std::int32_t base_vertex;
+        std::uint32_t base_instance;
+    };
+    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * 3;
+
+    void update_sky_texture(const frame_view& view);
+    void write_uniforms(const frame_view& view);
+    void write_instances(const frame_view& view);
+    void write_commands(const draw_list& draws);
+    void draw_group(const command_range& range, GLuint program, bool cull_back_faces);
+    void draw_shadow_cascades();
+    void draw_opaque();
+    void draw_sky();
+    GLuint surface_program(material_kind material, bool shadow);
+
+    renderer_settings m_settings;
+    shader_library m_shaders;
+    mesh_pool m_meshes;
+    frame_ring m_ring;
+    render_target m_target;
+    std::unique_ptr<shadow_maps> m_shadow_maps;
+    pass_timer m_timer;
+    gl_texture m_leaf_textures;
+    gl_texture m_bark_textures;
+    gl_texture m_ground_texture;
+    gl_texture m_sky_texture;
+    std::uint64_t m_sky_revision = 0;
+    std::uint16_t m_terrain_mesh = 0;
+    float m_ground_uv_scale = 4.0f;
+    std::array<pass_commands, static_cast<int>(render_pass::count)> m_commands{};
+    // Commands per (pass, material) before they are copied to the ring; kept to avoid
+    // allocating in the frame loop.
+    std::array<std::vector<indirect_command>, k_command_groups> m_command_groups;
+    std::size_t m_uniform_offset = 0;
+    int m_cascade_count = 0;
+    std::uint64_t m_frame_upload_bytes = 0;
+    std::uint64_t m_static_upload_bytes = 0;
+    std::uint32_t m_draw_calls = 0;
+    std::uint32_t m_indirect_commands = 0;
+};
+
+}  // namespace sylva::render

@@ -1,0 +1,35 @@
+#include "systems/render/submit_system.h"
+
+#include <chrono>
+
+namespace sylva {
+
+void submit_system::run(ecs::system_context<submit_system>& ctx) {
+    auto& device = ctx.resource_mut<render_device>();
+    if (!device.renderer) return;
+    const camera& cam = ctx.single<camera>();
+    const auto start = std::chrono::steady_clock::now();
+    render::frame_view view;
+    view.view_camera = &cam;
+    view.sun_light = &ctx.single<sun>();
+    view.sky = &ctx.single<environment>();
+    view.cascades = &ctx.resource<cascade_set>();
+    view.draws = &ctx.resource<draw_list>();
+    view.terrain_position = glm::vec3(device.terrain_origin - cam.position);
+    view.time_s = float(ctx.resource<playback_clock>().time_s());
+    device.renderer->render(view);
+    const auto issued = std::chrono::steady_clock::now();
+    const render::submit_stats s = device.renderer->finish();
+    const auto finished = std::chrono::steady_clock::now();
+
+    frame_stats& stats = ctx.resource_mut<frame_stats>();
+    stats.gpu_pass_ms = s.gpu_pass_ms;
+    stats.gpu_ms = s.gpu_ms;
+    stats.upload_bytes = s.upload_bytes;
+    stats.draw_calls = s.draw_calls;
+    stats.indirect_commands = s.indirect_commands;
+    stats.submit_cpu_ms = std::chrono::duration<double, std::milli>(issued - start).count();
+    stats.finish_ms = std::chrono::duration<double, std::milli>(finished - issued).count();
+}
+
+}  // namespace sylva

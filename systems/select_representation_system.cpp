@@ -1,0 +1,34 @@
+#include "systems/select_representation_system.h"
+
+#include <glm/geometric.hpp>
+
+#include "ecs/parallel.h"
+
+namespace sylva {
+
+representation choose_representation(const species_entry& species, float distance_m, float scale,
+                                      float lod_scale) {
+    return distance_m < species.reduced_distance_m * scale * lod_scale ? representation::mesh_full
+                                                                       : representation::mesh_reduced;
+}
+
+void select_representation_system::run(ecs::system_context<select_representation_system>& ctx) {
+    const camera& cam = ctx.single<camera>();
+    const auto& library = ctx.resource<species_library>().species;
+    auto plants = ctx.query<const world_transform, const plant_instance, lod_state>();
+    ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
+                                          lod_state& lod) {
+            lod.previous = lod.current;
+            if (!lod.visible && !lod.in_shadow_range) {
+                lod.current = representation::none;
+                return;
+            }
+            const float distance = float(glm::length(t.position - cam.position));
+            lod.current = choose_representation(library[static_cast<std::size_t>(p.species)], distance,
+                                                t.scale, cam.lod_scale);
+        });
+    });
+}
+
+}  // namespace sylva

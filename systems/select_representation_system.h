@@ -1,0 +1,27 @@
+#pragma once
+// Chooses each visible plant's representation from its distance to the camera (scaled by the
+// plant's size and the camera's lod_scale): the full mesh near, the reduced mesh beyond the
+// species' switch distance. The point/line, billboard-cloud and LoDF work add their own choices
+// here. Records the previous choice so transitions can fade between them.
+#include "components/camera.h"
+#include "components/lod_state.h"
+#include "components/plant_instance.h"
+#include "components/transform.h"
+#include "ecs/system.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+// The representation for a plant at `distance_m` (pure, for tests).
+representation choose_representation(const species_entry& species, float distance_m, float scale,
+                                     float lod_scale);
+
+struct select_representation_system {
+    static constexpr std::string_view k_name = "select_representation";
+    static constexpr ecs::phase k_phase = ecs::phase::select;
+    using reads = ecs::reads<camera, world_transform, plant_instance, species_library>;
+    using writes = ecs::writes<lod_state>;
+    static void run(ecs::system_context<select_representation_system>& ctx);
+};
+
+}  // namespace sylva

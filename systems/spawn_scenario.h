@@ -1,0 +1,25 @@
+#pragma once
+// Turns a scenario into something to draw: builds the scene's meshes, textures and terrain
+// (build_scene_assets, CPU only) and fills an ECS world with the camera, the sun and one entity
+// per plant plus the resources the per-frame systems read (spawn_scenario).
+#include "ecs/world.h"
+#include "scenarios/scenario.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+scene_assets build_scene_assets(const scenario& s);
+
+struct spawn_report {
+    std::size_t plants = 0;
+    std::size_t requested = 0;  // what the populations asked for (placement may fit fewer)
+};
+
+// Creates the entities and resources; aligns the plant component tables so every per-frame
+// query over plants is a linear walk.
+spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_assets& assets);
+
+// Scenario keyframes with heights above the terrain resolved to absolute world positions.
+std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const heightfield& terrain);
+
+}  // namespace sylva
