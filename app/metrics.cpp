@@ -64,6 +64,8 @@ nlohmann::json frame_json(const frame_record& f) {
             {"points", f.points},
             {"lines", f.lines},
             {"instances", instances},
+            {"submit_record_ms", f.submit_record_ms},
+            {"submit_issue_ms", f.submit_issue_ms},
             {"upload_bytes", f.upload_bytes},
             {"draw_calls", f.draw_calls},
             {"image_hash", f.image_hash},

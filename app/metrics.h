@@ -27,6 +27,8 @@ struct frame_record {
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances{};
+    double submit_record_ms = 0.0;  // Sylva's CPU work to prepare the GL submission
+    double submit_issue_ms = 0.0;   // issuing the GL calls (llvmpipe does vertex work here)
     std::uint64_t upload_bytes = 0;
     std::uint32_t draw_calls = 0;
     std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)

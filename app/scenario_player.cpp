@@ -129,6 +129,8 @@ frame_record scenario_player::step() {
     record.lines = draws.lines;
     record.instances = draws.instances_by_representation;
     record.upload_bytes = stats.upload_bytes;
+    record.submit_record_ms = stats.record_ms;
+    record.submit_issue_ms = stats.submit_cpu_ms;
     record.draw_calls = stats.draw_calls;
     record.state_hash = state_hash();
     ++m_frame;

@@ -2,6 +2,7 @@
 // Owns the thread budget of a run: a tbb::task_arena with exactly `threads` concurrency. Every
 // parallel_for and system task started inside run() stays in that arena, so "--threads 2" means
 // two threads end to end. Results do not depend on it (see parallel.h); only speed does.
+#include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <memory>
@@ -28,6 +29,10 @@ public:
 
 private:
     int m_threads;
+    // TBB caps its worker pool at the hardware thread count; asking for more threads than cores
+    // (determinism tests run 4 threads on 2 cores) needs the cap raised, or the arena silently
+    // gets fewer workers.
+    std::unique_ptr<tbb::global_control> m_worker_limit;
     std::unique_ptr<tbb::task_arena> m_arena;
 };
 

@@ -21,9 +21,9 @@ constexpr std::uint64_t k_texture_seed = 0x7e47u;
 
 // Linear albedos (roughly measured ranges: green leaves reflect 5-15% in the visible, bark and
 // soil 10-25%), so the renderer's lighting, not the texture, sets the brightness.
-constexpr glm::vec3 k_leaf_green{0.07f, 0.20f, 0.035f};
-constexpr glm::vec3 k_needle_green{0.035f, 0.11f, 0.035f};
-constexpr glm::vec3 k_twig_brown{0.14f, 0.09f, 0.05f};
+constexpr glm::vec3 k_leaf_green{0.040f, 0.095f, 0.018f};
+constexpr glm::vec3 k_needle_green{0.020f, 0.060f, 0.014f};
+constexpr glm::vec3 k_twig_brown{0.07f, 0.045f, 0.028f};
 constexpr glm::vec3 k_grass{0.07f, 0.15f, 0.035f};
 constexpr glm::vec3 k_soil{0.16f, 0.11f, 0.06f};
 
@@ -103,7 +103,7 @@ shape_sample leaf_blade(glm::vec2 p, const blade& b) {
     const float distance = std::min({half_width - side, along, b.length - along});
     const float across = half_width > 0.0f ? side / half_width : 1.0f;
     const float shade = 0.85f + 0.3f * value_noise(double(p.x) * 40.0, double(p.y) * 40.0, k_texture_seed);
-    const glm::vec3 lit = glm::vec3(0.16f, 0.30f, 0.08f);
+    const glm::vec3 lit = glm::vec3(0.08f, 0.16f, 0.04f);
     const glm::vec3 c = b.colour * shade * (1.0f - 0.25f * across * across);  // darker towards the rim
     return {distance, c + (lit - c) * 0.55f * vein_light(s, across)};
 }
@@ -127,19 +127,65 @@ image_rgba8 rasterise(std::uint32_t size, Shapes shapes) {
     return image;
 }
 
+// A leafy twig seen from above: about two dozen overlapping ovate leaves on a central twig and
+// its side shoots, filling an ovoid with ~60% cover, so a card reads as a clump of foliage and
+// keeps its outline in the coarse mip levels (the renderer alpha-tests at 0.5).
 std::vector<blade> broadleaf_spray() {
     rng random(k_texture_seed, 1);
-    auto tint = [&] { return k_leaf_green * glm::vec3(random.uniform(0.85f, 1.15f), random.uniform(0.85f, 1.15f), 1.0f); };
+    auto tint = [&] { return k_leaf_green * glm::vec3(random.uniform(0.8f, 1.2f), random.uniform(0.8f, 1.2f), 1.0f); };
     auto dir = [](float deg) { return glm::vec2(std::sin(deg * k_pi / 180.0f), -std::cos(deg * k_pi / 180.0f)); };
-    return {{{0.5f, 0.36f}, dir(0.0f), 0.32f, tint()},    {{0.5f, 0.54f}, dir(-47.0f), 0.40f, tint()},
-            {{0.5f, 0.58f}, dir(49.0f), 0.39f, tint()},   {{0.5f, 0.79f}, dir(-63.0f), 0.38f, tint()},
-            {{0.5f, 0.83f}, dir(61.0f), 0.37f, tint()}};
+    std::vector<blade> blades;
+    // Terminal leaves at the tip of the twig.
+    blades.push_back({{0.5f, 0.30f}, dir(random.uniform(-8.0f, 8.0f)), 0.26f, tint()});
+    blades.push_back({{0.5f, 0.34f}, dir(-28.0f), 0.26f, tint()});
+    blades.push_back({{0.5f, 0.35f}, dir(30.0f), 0.26f, tint()});
+    const int pairs = 11;
+    for (int i = 0; i < pairs; ++i) {
+        const float t = (float(i) + 0.5f) / float(pairs);  // 0 at the stalk, 1 near the tip
+        const float y = 0.86f - 0.50f * t;
+        for (const float side : {-1.0f, 1.0f}) {
+            const float angle = side * (random.uniform(40.0f, 95.0f) - 25.0f * t);
+            const float length = random.uniform(0.30f, 0.38f) * (1.0f - 0.25f * t);
+            const glm::vec2 base{0.5f + side * random.uniform(0.0f, 0.06f), y + random.uniform(-0.03f, 0.03f)};
+            blades.push_back({base, dir(angle), length, tint()});
+        }
+    }
+    // Leaves of the side shoots, filling the ovoid around the twig: each points away from the
+    // clump's centre, so the outline is leaf tips all round.
+    const glm::vec2 centre{0.5f, 0.55f};
+    for (int i = 0; i < 22; ++i) {
+        const float a = random.uniform(0.0f, 2.0f * k_pi);
+        const float r = std::sqrt(random.uniform(0.15f, 1.0f));
+        const glm::vec2 base = centre + glm::vec2(std::cos(a) * 0.22f, std::sin(a) * 0.26f) * r;
+        const glm::vec2 out = glm::normalize(base - centre + glm::vec2(0.0f, -0.05f));
+        const float turn = random.uniform(-0.4f, 0.4f);
+        const glm::vec2 axis{out.x * std::cos(turn) - out.y * std::sin(turn), out.x * std::sin(turn) + out.y * std::cos(turn)};
+        blades.push_back({base, axis, random.uniform(0.2f, 0.28f), tint()});
+    }
+    // Keep every blade (tip and widest part) inside a clear border, so clamped sampling and the
+    // mip chain never smear leaf into the card's edge.
+    for (blade& b : blades) {
+        const glm::vec2 perp{-b.axis.y, b.axis.x};
+        for (int k = 0; k < 16; ++k) {
+            bool inside = true;
+            for (const float s : {0.35f, 0.7f, 1.0f}) {
+                const float half = ovate_half_width(s) * b.length;
+                for (const float w : {-half, half}) {
+                    const glm::vec2 q = b.base + b.axis * (s * b.length) + perp * w;
+                    inside = inside && q.x > 0.04f && q.x < 0.96f && q.y > 0.04f && q.y < 0.96f;
+                }
+            }
+            if (inside) break;
+            b.length *= 0.92f;
+        }
+    }
+    return blades;
 }
 
 image_rgba8 broadleaf_leaf_texture(std::uint32_t size) {
     const std::vector<blade> blades = broadleaf_spray();
     return rasterise(size, [&](glm::vec2 p) {
-        shape_sample best = capsule(p, {0.5f, 0.99f}, {0.5f, 0.34f}, 0.012f, k_twig_brown);
+        shape_sample best = capsule(p, {0.5f, 0.97f}, {0.5f, 0.4f}, 0.01f, k_twig_brown);
         for (const blade& b : blades) composite(best, leaf_blade(p, b));
         return best;
     });
@@ -150,21 +196,46 @@ struct needle {
     glm::vec3 colour;
 };
 
-// Needles alternate left and right along the twig, angled 50-65 degrees towards the tip and
-// shortening towards it, so the spray has the pointed outline of a fir shoot.
+// A spruce shoot: a main twig with side shoots angled towards the tip, every shoot densely
+// set with short needles on both sides (and some pointing at the viewer, seen as short
+// strokes), shoots shortening towards the tip so the spray has a pointed ovoid outline. Dense
+// enough (~60% cover) that the card keeps its outline in the coarse mip levels.
 std::vector<needle> needle_spray() {
     rng random(k_texture_seed, 2);
     std::vector<needle> needles;
-    const int count = 64;
-    for (int i = 0; i < count; ++i) {
-        const float t = (float(i) + 0.5f) / float(count);
-        const float y = 0.96f - 0.82f * t;
-        const float side = (i % 2 == 0) ? 1.0f : -1.0f;
-        const float angle = random.uniform(50.0f, 65.0f) * k_pi / 180.0f;
-        const float length = (0.40f - 0.24f * t) * random.uniform(0.85f, 1.05f);
-        const glm::vec2 a{0.5f, y};
-        const glm::vec2 b = a + glm::vec2(side * std::sin(angle), -std::cos(angle)) * length;
-        needles.push_back({a, b, k_needle_green * random.uniform(0.8f, 1.25f)});
+    auto add_shoot = [&](glm::vec2 from, glm::vec2 to, float needle_length) {
+        const glm::vec2 along = to - from;
+        const float length = glm::length(along);
+        const glm::vec2 axis = along / length;
+        const glm::vec2 perp{-axis.y, axis.x};
+        const int count = std::max(4, static_cast<int>(length / 0.011f));
+        for (int i = 0; i < count; ++i) {
+            const float t = (float(i) + random.uniform(0.2f, 0.8f)) / float(count);
+            const glm::vec2 a = from + along * t;
+            const float side = (i % 2 == 0) ? 1.0f : -1.0f;
+            const float angle = random.uniform(35.0f, 70.0f) * k_pi / 180.0f;
+            const float l = needle_length * (1.0f - 0.35f * t) * random.uniform(0.8f, 1.1f);
+            const glm::vec2 d = axis * std::cos(angle) + perp * (side * std::sin(angle));
+            needles.push_back({a, a + d * l, k_needle_green * random.uniform(0.75f, 1.3f)});
+            if (i % 3 == 0) {  // a needle towards the viewer: foreshortened, along the shoot
+                const glm::vec2 q = a + perp * random.uniform(-0.3f, 0.3f) * l;
+                needles.push_back({q, q + axis * (0.4f * l), k_needle_green * random.uniform(0.9f, 1.4f)});
+            }
+        }
+    };
+    const glm::vec2 stalk{0.5f, 0.95f};
+    const glm::vec2 tip{0.5f, 0.07f};
+    add_shoot(stalk, tip, 0.09f);
+    const int shoots = 7;
+    for (int i = 0; i < shoots; ++i) {
+        const float t = (float(i) + 0.5f) / float(shoots);
+        const glm::vec2 from = stalk + (tip - stalk) * (0.08f + 0.8f * t);
+        for (const float side : {-1.0f, 1.0f}) {
+            const float angle = random.uniform(45.0f, 60.0f) * k_pi / 180.0f;
+            const float length = (0.44f - 0.34f * t) * random.uniform(0.85f, 1.05f);
+            const glm::vec2 to = from + glm::vec2(side * std::sin(angle), -std::cos(angle)) * length;
+            add_shoot(from, to, 0.08f);
+        }
     }
     return needles;
 }
@@ -172,8 +243,8 @@ std::vector<needle> needle_spray() {
 image_rgba8 conifer_leaf_texture(std::uint32_t size) {
     const std::vector<needle> needles = needle_spray();
     return rasterise(size, [&](glm::vec2 p) {
-        shape_sample best = capsule(p, {0.5f, 0.99f}, {0.5f, 0.1f}, 0.016f, k_twig_brown);
-        for (const needle& n : needles) composite(best, capsule(p, n.a, n.b, 0.011f, n.colour));
+        shape_sample best = capsule(p, {0.5f, 0.97f}, {0.5f, 0.1f}, 0.008f, k_twig_brown);
+        for (const needle& n : needles) composite(best, capsule(p, n.a, n.b, 0.01f, n.colour));
         return best;
     });
 }
@@ -215,8 +286,8 @@ image_rgba8 generate_leaf_texture(std::string_view generator, std::uint32_t size
 
 image_rgba8 generate_bark_texture(std::string_view generator, std::uint32_t size) {
     require_generator(generator);
-    if (generator == "conifer") return bark_texture(size, {9, {0.20f, 0.12f, 0.08f}, {0.06f, 0.035f, 0.025f}, 3.0f});
-    return bark_texture(size, {6, {0.22f, 0.20f, 0.17f}, {0.07f, 0.06f, 0.05f}, 6.0f});
+    if (generator == "conifer") return bark_texture(size, {9, {0.09f, 0.052f, 0.036f}, {0.022f, 0.015f, 0.011f}, 3.0f});
+    return bark_texture(size, {6, {0.11f, 0.095f, 0.075f}, {0.028f, 0.024f, 0.020f}, 6.0f});
 }
 
 image_rgba8 generate_ground_texture(std::uint32_t size) {

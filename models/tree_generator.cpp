@@ -120,9 +120,9 @@ void add_leaves(const tree_params& p, const tree_skeleton& tree, const stem& s, 
         const glm::vec3 axis = glm::normalize(node.tangent * std::cos(down) + radial * std::sin(down));
         const float nominal = p.leaf_length_m * random.vary(1.0f, k_leaf_size_variation);
         const float length = nominal * size_scale;
-        // An enlarged card is centred where the full-size leaf's centre would be, so it grows
-        // both ways instead of pushing the crown's outline out by its whole extra length.
-        const glm::vec3 base = node.position + radial * node.radius + axis * (0.5f * (nominal - length));
+        // An enlarged card keeps the full-size leaf's tip and grows back towards the inside of
+        // the crown, so the crown's outline does not swell when the renderer switches.
+        const glm::vec3 base = node.position + radial * node.radius + axis * (nominal - length);
         const glm::vec3 fallback = glm::normalize(glm::cross(axis, radial));
         add_leaf({base, axis, leaf_side(p, axis, fallback, random), length, length * p.leaf_width_ratio}, out);
     }
@@ -161,9 +161,11 @@ mesh_data generate_tree(const tree_params& params, std::uint64_t seed, tree_deta
     mesh_builder bark;
     mesh_builder leaves;
     for (const stem& s : tree.stems) {
-        // Reduced detail drops the finest stems' geometry but keeps their leaves where they
-        // were, so the crown silhouette does not change when the renderer switches.
-        if (!(reduced && s.level == last_level)) add_stem(s, resolution_for(params, s.level, detail), bark);
+        // Stems finer than bark_levels, and at reduced detail the last level in any case, have
+        // no geometry but keep their leaves where they were, so the crown silhouette does not
+        // change when the renderer switches.
+        const int bark_levels = std::min(params.bark_levels, reduced ? std::min(last_level, params.reduced_bark_levels) : params.levels);
+        if (s.level < bark_levels) add_stem(s, resolution_for(params, s.level, detail), bark);
         if (s.level == last_level)
             add_leaves(params, tree, s, reduced ? std::clamp(params.reduced_leaf_quality, 0.01f, 1.0f) : 1.0f, leaves);
     }

@@ -60,6 +60,9 @@ struct tree_params {
     float leaf_down_angle_deg = 50.0f;  // angle of a leaf from its stem
     float leaf_tilt_variation_deg = 30.0f;  // random roll of the leaf card around its own axis
     leaf_shape leaf = leaf_shape::broad;
+    // Stem levels meshed as bark (trunk = 1). Finer stems get no geometry of their own: they only
+    // carry the leaf cards, which hide them anyway (the budget goes to leaves instead).
+    int bark_levels = 4;
 
     // Reduced detail: fewer sides and segments, no geometry for the last stem level, and
     // leaf_quality times the leaves at 1/sqrt(leaf_quality) the size (W&P's "degradation at
@@ -67,6 +70,7 @@ struct tree_params {
     float reduced_leaf_quality = 0.25f;
     float reduced_segment_ratio = 0.4f;  // fraction of each level's segments kept
     float reduced_sides_ratio = 0.5f;    // fraction of each level's sides kept (>= 3)
+    int reduced_bark_levels = 4;         // stem levels meshed as bark at reduced detail
 };
 
 // The names generate_tree accepts as presets.

@@ -8,11 +8,11 @@
 // Ranges are inclusive. Integers must be written as JSON integers (960, not 960.0).
 //
 //   name           string           default: the file name without extension
-//   seed           integer          1            0 .. 2^64-1; seeds the plant generators and
-//   placement resolution     [width, height]  [960, 540]   each 1 .. 16384 pixels frames integer 48
-//   1 .. 1000000 fps            number           24           1 .. 1000; frame i is shown at time i
-//   / fps world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world
-//   position
+//   seed           integer          1            0 .. 2^64-1; seeds the plant generators and placement
+//   resolution     [width, height]  [960, 540]   each 1 .. 16384 pixels
+//   frames         integer          48           1 .. 1000000
+//   fps            number           24           1 .. 1000; frame i is shown at time i / fps
+//   world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world position
 //                                                (stress-tests double-precision handling)
 //   terrain {
 //     size_m       number           400          1 .. 100000; square, centred on the origin
@@ -37,8 +37,7 @@
 //     min_spacing_m number      3           0 .. 1000
 //     scale_min     number      0.8         0.01 .. 100; scale_min <= scale_max
 //     scale_max     number      1.2         0.01 .. 100
-//     area          [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2,
-//     size/2];
+//     area          [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2, size/2];
 //                                     each -1e9 .. 1e9 m, x0 < x1 and z0 < z1
 //     max_slope_deg number      35          0 .. 90
 //   }

@@ -12,11 +12,18 @@ struct chunk_totals {
     std::uint32_t items = 0;
 };
 
-// What one plant contributes: its mesh, and a bit per pass it is drawn in.
+// What one plant contributes: its mesh in view and in the nearest cascade, the reduced mesh
+// in farther cascades (a cascade texel there is larger than the leaves the full mesh adds),
+// and a bit per pass it is drawn in.
 struct plant_draws {
     std::uint16_t mesh = 0;
+    std::uint16_t far_shadow_mesh = 0;
     std::uint32_t pass_mask = 0;  // bit i: render_pass i
     float distance = 0.0f;
+
+    std::uint16_t mesh_for(render_pass pass) const {
+        return is_shadow_pass(pass) && pass != render_pass::shadow_cascade_0 ? far_shadow_mesh : mesh;
+    }
 };
 
 class draw_builder {
@@ -34,6 +41,7 @@ public:
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
         d.mesh = lod.current == representation::mesh_full ? species.mesh_full : species.mesh_reduced;
+        d.far_shadow_mesh = species.mesh_reduced;
         const glm::vec3 base{t.position - m_camera.position};
         const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);
@@ -116,7 +124,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const std::uint32_t depth = quantize_depth(d.distance);
             for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
                 const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
-                *out++ = {make_sort_key({pass, d.mesh, depth}), index, 0};
+                *out++ = {make_sort_key({pass, d.mesh_for(pass), depth}), index, 0};
             }
             ++index;
         });

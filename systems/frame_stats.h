@@ -8,7 +8,8 @@ namespace sylva {
 struct frame_stats {
     std::array<double, 3> gpu_pass_ms{};  // shadow, opaque, sky (render::k_gpu_pass_names)
     double gpu_ms = 0.0;
-    double submit_cpu_ms = 0.0;
+    double submit_cpu_ms = 0.0;  // issuing the frame's GL commands (includes driver work)
+    double record_ms = 0.0;      // Sylva's own part of it: ring writes and indirect commands
     double finish_ms = 0.0;  // time spent waiting for the GPU to finish
     std::uint64_t upload_bytes = 0;
     std::uint32_t draw_calls = 0;

@@ -26,6 +26,18 @@ namespace sylva {
 namespace {
 
 constexpr std::uint32_t k_texture_size = 256;
+// The generated ground texture's mean colour is about the scenario default, so tinting by
+// ground_color / default recolours the ground while keeping the texture's detail.
+constexpr glm::vec3 k_default_ground_color{0.32f, 0.30f, 0.18f};
+
+image_rgba8 tint(image_rgba8 image, glm::vec3 color) {
+    const glm::vec3 factor = color / k_default_ground_color;
+    for (std::size_t i = 0; i < image.texels.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c)
+            image.texels[i + c] = static_cast<std::uint8_t>(
+                std::min(255.0f, float(image.texels[i + c]) * factor[int(c)] + 0.5f));
+    return image;
+}
 
 // Bounding sphere of a mesh standing on its origin: centre on the y axis at mid height.
 void fit_bounds(const mesh_data& mesh, species_entry& entry) {
@@ -74,7 +86,7 @@ scene_assets build_scene_assets(const scenario& s) {
     assets.meshes.push_back(terrain_mesh(assets.terrain, 1.0f));
     assets.library.meshes.push_back(
         {std::uint32_t(assets.meshes.back().triangle_count()), representation::none});
-    assets.ground_texture = generate_ground_texture(k_texture_size);
+    assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
     for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i);
     return assets;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// GPU time per render pass with GL_TIME_ELAPSED queries (GL 3.3 / ARB_timer_query). Results
-// are read after the frame has finished on the GPU, so reading never stalls mid-frame.
+// GPU time per render pass from GL_TIMESTAMP queries (glQueryCounter, GL 3.3) taken before and
+// after each pass. Results are read after the frame has finished on the GPU, so reading never
+// stalls mid-frame. (GL_TIME_ELAPSED gave a nonsense first value on llvmpipe.)
 #include <array>
 #include <string_view>
 
@@ -17,12 +18,14 @@ public:
     pass_timer();
     void begin(gpu_pass pass);
     void end();
-    // Milliseconds per pass of the last frame; call after glFinish.
+    // Milliseconds per pass of the last frame; call after glFinish. Passes not run read 0.
     std::array<double, static_cast<int>(gpu_pass::count)> read();
 
 private:
-    std::array<gl_query, static_cast<int>(gpu_pass::count)> m_queries;
-    std::array<bool, static_cast<int>(gpu_pass::count)> m_used{};
+    static constexpr int k_passes = static_cast<int>(gpu_pass::count);
+    std::array<gl_query, 2 * k_passes> m_queries;  // begin and end stamp per pass
+    std::array<bool, k_passes> m_used{};
+    int m_open = -1;
 };
 
 }  // namespace sylva::render

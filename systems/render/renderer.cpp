@@ -1,6 +1,7 @@
 #include "systems/render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -246,6 +247,7 @@ void renderer::draw_sky() {
 }
 
 void renderer::render(const frame_view& view) {
+    const auto start = std::chrono::steady_clock::now();
     m_frame_upload_bytes = 0;
     m_draw_calls = 0;
     const auto& draws = *view.draws;
@@ -258,6 +260,7 @@ void renderer::render(const frame_view& view) {
     write_uniforms(view);
     write_instances(view);
     write_commands(draws);
+    m_record_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     glBindVertexArray(m_meshes.vertex_array());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, m_ring.buffer());
@@ -275,6 +278,7 @@ submit_stats renderer::finish() {
     stats.gpu_pass_ms = m_timer.read();
     for (double ms : stats.gpu_pass_ms) stats.gpu_ms += ms;
     stats.upload_bytes = m_frame_upload_bytes;
+    stats.record_ms = m_record_ms;
     stats.draw_calls = m_draw_calls;
     stats.indirect_commands = m_indirect_commands;
     return stats;

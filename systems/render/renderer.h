@@ -47,6 +47,10 @@ struct frame_view {
 struct submit_stats {
     std::array<double, static_cast<int>(gpu_pass::count)> gpu_pass_ms{};
     double gpu_ms = 0.0;
+    // CPU time Sylva spends preparing the frame for GL (uniforms, instance records, indirect
+    // commands into the ring) before the first draw call. The draw calls themselves also take
+    // CPU time on llvmpipe, which does vertex processing on the calling thread.
+    double record_ms = 0.0;
     std::uint64_t upload_bytes = 0;  // bytes written to the ring and textures this frame
     std::uint32_t draw_calls = 0;
     std::uint32_t indirect_commands = 0;
@@ -119,6 +123,7 @@ private:
     std::uint64_t m_static_upload_bytes = 0;
     std::uint32_t m_draw_calls = 0;
     std::uint32_t m_indirect_commands = 0;
+    double m_record_ms = 0.0;
 };
 
 }  // namespace sylva::render

@@ -26,6 +26,7 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     stats.gpu_pass_ms = s.gpu_pass_ms;
     stats.gpu_ms = s.gpu_ms;
     stats.upload_bytes = s.upload_bytes;
+    stats.record_ms = s.record_ms;
     stats.draw_calls = s.draw_calls;
     stats.indirect_commands = s.indirect_commands;
     stats.submit_cpu_ms = std::chrono::duration<double, std::milli>(issued - start).count();

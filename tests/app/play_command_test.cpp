@@ -1,0 +1,101 @@
+// The `sylva play` contract (issue 2): frames and metrics.json with the documented fields; a
+// bad scenario gets exit code 2, one message naming file, JSON path and value, and no output.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+
+namespace sylva {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct result {
+    int exit_code = -1;
+    std::string output;
+};
+
+result run(const std::string& arguments) {
+    result r;
+    const std::string command = std::string(SYLVA_BINARY) + " " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::array<char, 512> buffer{};
+    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
+    const int status = pipe ? pclose(pipe) : -1;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+fs::path temp_dir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    return dir;
+}
+
+TEST(play_command, bad_scenario_exits_2_naming_file_path_and_value_and_writes_nothing) {
+    const fs::path dir = temp_dir("bad");
+    fs::create_directories(dir);
+    const fs::path scenario = dir / "broken.json";
+    std::ofstream(scenario) << R"({"species":[{"name":"oak"}],"populations":[{"species":"elm","count":3}]})";
+    const fs::path out = dir / "out";
+    const result r = run("play " + scenario.string() + " --headless --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find("broken.json"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("/populations/0/species"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("elm"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove_all(dir);
+}
+
+TEST(play_command, missing_file_and_bad_option_values_exit_2) {
+    EXPECT_EQ(run("play /nonexistent/scenario.json --headless").exit_code, 2);
+    EXPECT_EQ(run("play --frames 0 --headless").exit_code, 2);
+    EXPECT_EQ(run("play --format gif --headless").exit_code, 2);
+    EXPECT_EQ(run("frobnicate").exit_code, 2);
+}
+
+TEST(play_command, help_explains_every_option) {
+    const result r = run("play --help");
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* option : {"--out", "--frames", "--threads", "--width", "--height", "--headless", "--format"})
+        EXPECT_NE(r.output.find(option), std::string::npos) << option;
+    const result v = run("view --help");
+    for (const char* option : {"--exit-after", "--screenshot", "--threads", "--no-overlay"})
+        EXPECT_NE(v.output.find(option), std::string::npos) << option;
+}
+
+TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
+    const fs::path out = temp_dir("play");
+    const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
+    const result r = run("play " + scenario + " --headless --frames 2 --threads 2 --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out / "frame_0000.png"));
+    EXPECT_TRUE(fs::exists(out / "frame_0001.png"));
+    const auto metrics = nlohmann::json::parse(std::ifstream(out / "metrics.json"));
+    ASSERT_EQ(metrics["frames"].size(), 2u);
+    for (const auto& f : metrics["frames"]) {
+        for (const char* key : {"frame", "frame_ms", "cpu_ms", "gpu_ms", "systems", "passes", "triangles",
+                                "points", "lines", "instances", "upload_bytes"})
+            EXPECT_TRUE(f.contains(key)) << key;
+        EXPECT_GT(f["triangles"].get<double>(), 0.0);
+        EXPECT_GT(f["upload_bytes"].get<double>(), 0.0);
+        EXPECT_TRUE(f["systems"].contains("cull"));
+        EXPECT_TRUE(f["systems"].contains("build_draw_list"));
+        EXPECT_TRUE(f["passes"].contains("shadow"));
+        EXPECT_GT(f["instances"]["mesh_full"].get<int>() + f["instances"]["mesh_reduced"].get<int>(), 0);
+    }
+    const auto& summary = metrics["summary"];
+    for (const char* key : {"median_frame_ms", "median_cpu_ms", "median_gpu_ms", "machine", "gl_renderer",
+                            "gl_version", "median_systems_ms", "median_passes_ms"})
+        EXPECT_TRUE(summary.contains(key)) << key;
+    EXPECT_NE(summary["gl_renderer"].get<std::string>().find("llvmpipe"), std::string::npos);
+    fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace sylva
