@@ -90,7 +90,7 @@ void draw_overlay(const frame_record& r, const walk_state& state, const run_info
     for (const auto& [name, ms] : r.passes) ImGui::Text("  gpu %-18s %6.2f ms", name.c_str(), ms);
     ImGui::Text("triangles %llu (+%llu shadow)  draws %u", static_cast<unsigned long long>(r.triangles),
                 static_cast<unsigned long long>(r.shadow_triangles), r.draw_calls);
-    ImGui::Text("instances: full %u  reduced %u", r.instances[1], r.instances[2]);
+    ImGui::Text("instances: full %u  reduced %u  far %u", r.instances[1], r.instances[2], r.instances[3]);
     ImGui::Text("%zu plants  %s", info.plants, info.gl_renderer.c_str());
     ImGui::TextDisabled("F fly  WASDQE move  drag look  Space pause  N step  Esc quit");
     ImGui::End();

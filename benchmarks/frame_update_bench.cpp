@@ -43,17 +43,20 @@ struct landscape {
         for (int s = 0; s < 2; ++s) {
             species_entry e;
             e.name = s ? "spruce" : "oak";
-            e.mesh_full = std::uint16_t(1 + 2 * s);
-            e.mesh_reduced = std::uint16_t(2 + 2 * s);
-            e.reduced_distance_m = 60.0f;
+            e.mesh_full = std::uint16_t(1 + 3 * s);
+            e.mesh_reduced = std::uint16_t(2 + 3 * s);
+            e.mesh_far = std::uint16_t(3 + 3 * s);
+            e.reduced_distance_m = 35.0f;
+            e.far_distance_m = 160.0f;
             e.max_distance_m = 1500.0f;
             e.bounding_radius = 8.0f;
             e.center_height = 7.0f;
             library.species.push_back(e);
         }
-        library.meshes = {{30000, representation::none}, {9000, representation::mesh_full},
-                          {900, representation::mesh_reduced}, {7000, representation::mesh_full},
-                          {700, representation::mesh_reduced}};
+        library.meshes = {{30000, representation::none},     {6600, representation::mesh_full},
+                          {860, representation::mesh_reduced}, {180, representation::mesh_far},
+                          {7400, representation::mesh_full},   {800, representation::mesh_reduced},
+                          {170, representation::mesh_far}};
         const std::size_t side = 1000;
         for (std::size_t i = 0; i < k_plants; ++i) {
             const ecs::entity e = world.create();
@@ -107,6 +110,7 @@ void frame_update(benchmark::State& state) {
     state.counters["draw_items"] = double(draws.items.size());
     state.counters["visible_full"] = double(draws.instances_by_representation[1]);
     state.counters["visible_reduced"] = double(draws.instances_by_representation[2]);
+    state.counters["visible_far"] = double(draws.instances_by_representation[3]);
     for (const auto& [name, ms] : l.schedule.last_timings()) state.counters[std::string(name) + "_ms"] = ms;
 }
 BENCHMARK(frame_update)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);

@@ -11,6 +11,7 @@ enum class representation : std::uint8_t {
     none = 0,      // culled or not yet chosen
     mesh_full,     // every triangle and leaf of the model
     mesh_reduced,  // the model generated at reduced detail (fewer segments, fewer larger leaves)
+    mesh_far,      // trunk and a few dozen large leaf cards, for trees far away
     points,
     lines,
     billboard_cloud,

@@ -30,11 +30,32 @@ struct stem_resolution {
     int sides;
 };
 
+// What one detail level keeps of the full tree.
+struct detail_profile {
+    float leaf_quality = 1.0f;  // fraction of leaf cards kept, at constant total leaf area
+    float segment_ratio = 1.0f;
+    float sides_ratio = 1.0f;
+    int bark_levels = 4;
+};
+
+detail_profile profile_for(const tree_params& p, tree_detail detail) {
+    switch (detail) {
+        case tree_detail::full: return {1.0f, 1.0f, 1.0f, p.levels};
+        case tree_detail::reduced:
+            return {p.reduced_leaf_quality, p.reduced_segment_ratio, p.reduced_sides_ratio,
+                    std::min(p.levels - 1, p.reduced_bark_levels)};
+        case tree_detail::far:
+            return {p.far_leaf_quality, p.far_segment_ratio, p.far_sides_ratio, p.far_bark_levels};
+    }
+    return {};
+}
+
 stem_resolution resolution_for(const tree_params& p, int level, tree_detail detail) {
     const stem_level_params& lp = p.level[std::size_t(level)];
     if (detail == tree_detail::full) return {lp.segments, lp.sides};
-    return {std::max(1, static_cast<int>(std::lround(float(lp.segments) * p.reduced_segment_ratio))),
-            std::max(3, static_cast<int>(std::lround(float(lp.sides) * p.reduced_sides_ratio)))};
+    const detail_profile profile = profile_for(p, detail);
+    return {std::max(1, static_cast<int>(std::lround(float(lp.segments) * profile.segment_ratio))),
+            std::max(3, static_cast<int>(std::lround(float(lp.sides) * profile.sides_ratio)))};
 }
 
 // A generalized cylinder (W&P stems): one ring of sides + 1 vertices per segment end (the seam
@@ -157,17 +178,17 @@ mesh_data combine(mesh_builder&& bark, const mesh_builder& leaves) {
 mesh_data generate_tree(const tree_params& params, std::uint64_t seed, tree_detail detail) {
     const tree_skeleton tree = build_tree_skeleton(params, seed);
     const int last_level = params.levels - 1;
-    const bool reduced = detail == tree_detail::reduced;
+    const detail_profile profile = profile_for(params, detail);
+    const int bark_levels = std::min(params.bark_levels, profile.bark_levels);
+    const float leaf_quality = std::clamp(profile.leaf_quality, 0.005f, 1.0f);
     mesh_builder bark;
     mesh_builder leaves;
     for (const stem& s : tree.stems) {
-        // Stems finer than bark_levels, and at reduced detail the last level in any case, have
-        // no geometry but keep their leaves where they were, so the crown silhouette does not
-        // change when the renderer switches.
-        const int bark_levels = std::min(params.bark_levels, reduced ? std::min(last_level, params.reduced_bark_levels) : params.levels);
+        // Stems finer than bark_levels (fewer at coarser detail) have no geometry but keep their
+        // leaves where they were, so the crown silhouette does not change when the renderer
+        // switches.
         if (s.level < bark_levels) add_stem(s, resolution_for(params, s.level, detail), bark);
-        if (s.level == last_level)
-            add_leaves(params, tree, s, reduced ? std::clamp(params.reduced_leaf_quality, 0.01f, 1.0f) : 1.0f, leaves);
+        if (s.level == last_level) add_leaves(params, tree, s, leaf_quality, leaves);
     }
     return combine(std::move(bark), leaves);
 }

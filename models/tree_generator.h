@@ -12,6 +12,7 @@ namespace sylva {
 enum class tree_detail : std::uint8_t {
     full,     // every stem level, full sides and segments, one card per leaf
     reduced,  // ~10% of the triangles: coarser stems, no last-level stems, fewer larger leaves
+    far,      // ~4%: the trunk and a hundred or so large leaf cards, for trees hundreds of metres away
 };
 
 // A tree standing on the origin, growing up +y (trunk base at y = 0). Two sub-meshes: bark

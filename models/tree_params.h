@@ -71,6 +71,12 @@ struct tree_params {
     float reduced_segment_ratio = 0.4f;  // fraction of each level's segments kept
     float reduced_sides_ratio = 0.5f;    // fraction of each level's sides kept (>= 3)
     int reduced_bark_levels = 4;         // stem levels meshed as bark at reduced detail
+
+    // Far detail: the same rule taken further (trunk only, a few dozen large cards).
+    float far_leaf_quality = 0.05f;
+    float far_segment_ratio = 0.15f;
+    float far_sides_ratio = 0.0f;  // clamped to 3 sides
+    int far_bark_levels = 1;
 };
 
 // The names generate_tree accepts as presets.

@@ -28,8 +28,10 @@
 //     generator          string     "broadleaf"  one of k_tree_generators
 //     height_m           number     12           0.1 .. 150
 //     reduced_distance_m number     60           0 .. 1000000; the reduced mesh is drawn beyond it
-//     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it;
+//     far_distance_m     number     200          0 .. 1000000; the far mesh is drawn beyond it;
 //                                                must be >= reduced_distance_m
+//     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it;
+//                                                must be >= far_distance_m
 //   }
 //   populations    REQUIRED array of >= 1 {
 //     species       string REQUIRED  the name of a species
@@ -105,6 +107,7 @@ struct species_settings {
     std::string generator = "broadleaf";
     float height_m = 12.0f;
     float reduced_distance_m = 60.0f;
+    float far_distance_m = 200.0f;
     float max_distance_m = 1500.0f;
     bool operator==(const species_settings&) const = default;
 };

@@ -126,9 +126,12 @@ const field_table<species_settings>& species_fields() {
             .choice("generator", &t::generator, k_tree_generators)
             .number("height_m", &t::height_m, {0.1, 150.0})
             .number("reduced_distance_m", &t::reduced_distance_m, k_distance_m)
+            .number("far_distance_m", &t::far_distance_m, k_distance_m)
             .number("max_distance_m", &t::max_distance_m, k_distance_m)
             .check([](const json_node& n, const t& s) {
-                expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "max_distance_m",
+                expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
+                               s.far_distance_m, false);
+                expect_ordered(n, "far_distance_m", s.far_distance_m, "max_distance_m",
                                s.max_distance_m, false);
             });
     return table;

@@ -26,6 +26,14 @@ struct plant_draws {
     }
 };
 
+std::uint16_t mesh_of(const species_entry& species, representation r) {
+    switch (r) {
+        case representation::mesh_full: return species.mesh_full;
+        case representation::mesh_reduced: return species.mesh_reduced;
+        default: return species.mesh_far;
+    }
+}
+
 class draw_builder {
 public:
     draw_builder(const camera& cam, const species_library& library, const cascade_set& cascades)
@@ -40,8 +48,8 @@ public:
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
-        d.mesh = lod.current == representation::mesh_full ? species.mesh_full : species.mesh_reduced;
-        d.far_shadow_mesh = species.mesh_reduced;
+        d.mesh = mesh_of(species, lod.current);
+        d.far_shadow_mesh = lod.current == representation::mesh_full ? species.mesh_reduced : d.mesh;
         const glm::vec3 base{t.position - m_camera.position};
         const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);

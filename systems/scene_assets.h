@@ -18,9 +18,12 @@ struct species_entry {
     std::string name;
     std::uint16_t mesh_full = 0;
     std::uint16_t mesh_reduced = 0;
+    std::uint16_t mesh_far = 0;
     std::uint32_t triangles_full = 0;
     std::uint32_t triangles_reduced = 0;
-    float reduced_distance_m = 60.0f;  // beyond this (times camera lod_scale): reduced mesh
+    std::uint32_t triangles_far = 0;
+    float reduced_distance_m = 60.0f;  // beyond this (times scale and lod_scale): reduced mesh
+    float far_distance_m = 200.0f;     // beyond this: far mesh
     float max_distance_m = 1500.0f;    // beyond this: not drawn
     float bounding_radius = 1.0f;      // sphere around the model, unit scale
     float center_height = 0.5f;        // sphere centre above the base, unit scale

@@ -8,8 +8,10 @@ namespace sylva {
 
 representation choose_representation(const species_entry& species, float distance_m, float scale,
                                       float lod_scale) {
-    return distance_m < species.reduced_distance_m * scale * lod_scale ? representation::mesh_full
-                                                                       : representation::mesh_reduced;
+    const float factor = scale * lod_scale;
+    if (distance_m < species.reduced_distance_m * factor) return representation::mesh_full;
+    if (distance_m < species.far_distance_m * factor) return representation::mesh_reduced;
+    return representation::mesh_far;
 }
 
 void select_representation_system::run(ecs::system_context<select_representation_system>& ctx) {

@@ -1,7 +1,7 @@
 #pragma once
 // Chooses each visible plant's representation from its distance to the camera (scaled by the
 // plant's size and the camera's lod_scale): the full mesh near, the reduced mesh beyond the
-// species' switch distance. The point/line, billboard-cloud and LoDF work add their own choices
+// species' reduced distance, the far mesh beyond its far distance. The point/line, billboard-cloud and LoDF work add their own choices
 // here. Records the previous choice so transitions can fade between them.
 #include "components/camera.h"
 #include "components/lod_state.h"

@@ -87,7 +87,8 @@ TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
         EXPECT_TRUE(f["systems"].contains("cull"));
         EXPECT_TRUE(f["systems"].contains("build_draw_list"));
         EXPECT_TRUE(f["passes"].contains("shadow"));
-        EXPECT_GT(f["instances"]["mesh_full"].get<int>() + f["instances"]["mesh_reduced"].get<int>(), 0);
+        EXPECT_GT(f["instances"]["mesh_full"].get<int>() + f["instances"]["mesh_reduced"].get<int>() +
+                      f["instances"]["mesh_far"].get<int>(), 0);
     }
     const auto& summary = metrics["summary"];
     for (const char* key : {"median_frame_ms", "median_cpu_ms", "median_gpu_ms", "machine", "gl_renderer",

@@ -92,23 +92,24 @@ TEST(scenario_loader, default_scenario_has_the_documented_contents) {
     EXPECT_EQ(s.species[1].generator, "conifer");
     EXPECT_EQ(total_count(s), 3000u);
     ASSERT_GE(s.camera.keyframes.size(), 2u);
-    EXPECT_EQ(s.camera.keyframes.front().key.position, glm::dvec3(-120.0, 8.0, 140.0));
-    EXPECT_EQ(s.camera.keyframes.back().key.position, glm::dvec3(60.0, 12.0, -60.0));
+    EXPECT_EQ(s.camera.keyframes.front().key.position, glm::dvec3(-160.0, 30.0, 150.0));
+    EXPECT_EQ(s.camera.keyframes.back().key.position, glm::dvec3(-5.0, 26.0, -5.0));
     EXPECT_EQ(s.camera.keyframes.back().key.time_s, 2.0);
     ASSERT_EQ(s.sun.keyframes.size(), 2u);
     EXPECT_EQ(s.sun.keyframes[0].elevation_deg, 35.0f);
     EXPECT_EQ(s.sun.keyframes[1].elevation_deg, 38.0f);
 }
 
-TEST(scenario_loader, default_camera_stays_inside_the_terrain_and_near_the_ground) {
+TEST(scenario_loader, default_camera_stays_inside_the_terrain_just_above_the_canopy) {
     const scenario s = load_default_scenario();
     const double half = 0.5 * s.terrain.size_m;
     for (const auto& k : s.camera.keyframes) {
         EXPECT_TRUE(k.above_terrain);
         EXPECT_LT(std::abs(k.key.position.x), half);
         EXPECT_LT(std::abs(k.key.position.z), half);
-        EXPECT_GE(k.key.position.y, 2.0);
-        EXPECT_LE(k.key.position.y, 25.0);
+        // Trees are up to ~20 m tall: the flight stays above them, low enough to see crowns.
+        EXPECT_GE(k.key.position.y, 22.0);
+        EXPECT_LE(k.key.position.y, 40.0);
     }
 }
 
@@ -295,7 +296,7 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
 TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
     const std::pair<std::string, std::string> cases[] = {
         {"/terrain/size", "size_m, resolution, height_m, octaves, frequency, seed, ground_color"},
-        {"/species/0/heigth_m", "name, generator, height_m, reduced_distance_m, max_distance_m"},
+        {"/species/0/heigth_m", "name, generator, height_m, reduced_distance_m, far_distance_m, max_distance_m"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg"},
         {"/camera/fov", "near_m, far_m, lod_scale, keyframes"},
@@ -541,7 +542,10 @@ TEST(scenario_loader, ordered_pairs_are_checked_at_the_stated_key) {
                  {"/camera/far_m", "must be greater than near_m (0.3)", "0.3"});
     expect_error(
         set(minimal(), "/species/0/reduced_distance_m", 2000),
-        {"/species/0/reduced_distance_m", "must be at most max_distance_m (1500)", "2000"});
+        {"/species/0/reduced_distance_m", "must be at most far_distance_m (200)", "2000"});
+    expect_error(
+        set(minimal(), "/species/0/far_distance_m", 2000),
+        {"/species/0/far_distance_m", "must be at most max_distance_m (1500)", "2000"});
 }
 
 TEST(scenario_loader, only_the_first_problem_is_reported) {

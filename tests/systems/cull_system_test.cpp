@@ -43,11 +43,14 @@ TEST(frustum, sphere_tests_against_a_90_degree_frustum) {
 TEST(select_representation, switches_at_the_species_distance_scaled_by_size_and_lod_scale) {
     species_entry oak;
     oak.reduced_distance_m = 50.0f;
+    oak.far_distance_m = 200.0f;
     EXPECT_EQ(choose_representation(oak, 49.0f, 1.0f, 1.0f), representation::mesh_full);
     EXPECT_EQ(choose_representation(oak, 51.0f, 1.0f, 1.0f), representation::mesh_reduced);
     EXPECT_EQ(choose_representation(oak, 99.0f, 2.0f, 1.0f), representation::mesh_full);
     EXPECT_EQ(choose_representation(oak, 51.0f, 1.0f, 0.5f), representation::mesh_reduced);
     EXPECT_EQ(choose_representation(oak, 24.0f, 1.0f, 0.5f), representation::mesh_full);
+    EXPECT_EQ(choose_representation(oak, 201.0f, 1.0f, 1.0f), representation::mesh_far);
+    EXPECT_EQ(choose_representation(oak, 399.0f, 2.0f, 1.0f), representation::mesh_reduced);
 }
 
 }  // namespace
