@@ -12,18 +12,13 @@ struct chunk_totals {
     std::uint32_t items = 0;
 };
 
-// What one plant contributes: its mesh in view and in the nearest cascade, the reduced mesh
-// in farther cascades (a cascade texel there is larger than the leaves the full mesh adds),
-// and a bit per pass it is drawn in.
+// What one plant contributes: a bit per pass it is drawn in, and its mesh in each pass. Each
+// shadow cascade draws the plant one mesh level coarser than the one before it (cascade 0 as
+// the view does): a farther cascade's texel is larger than the detail the finer mesh adds.
 struct plant_draws {
-    std::uint16_t mesh = 0;
-    std::uint16_t far_shadow_mesh = 0;
+    std::array<std::uint16_t, std::size_t(render_pass::count)> mesh{};
     std::uint32_t pass_mask = 0;  // bit i: render_pass i
     float distance = 0.0f;
-
-    std::uint16_t mesh_for(render_pass pass) const {
-        return is_shadow_pass(pass) && pass != render_pass::shadow_cascade_0 ? far_shadow_mesh : mesh;
-    }
 };
 
 std::uint16_t mesh_of(const species_entry& species, representation r) {
@@ -32,6 +27,11 @@ std::uint16_t mesh_of(const species_entry& species, representation r) {
         case representation::mesh_reduced: return species.mesh_reduced;
         default: return species.mesh_far;
     }
+}
+
+// The mesh representation `steps` levels coarser than `r`, stopping at the far mesh.
+representation coarser(representation mesh, int steps) {
+    return static_cast<representation>(std::min(int(mesh) + steps, int(representation::mesh_far)));
 }
 
 class draw_builder {
@@ -48,8 +48,9 @@ public:
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
-        d.mesh = mesh_of(species, lod.current);
-        d.far_shadow_mesh = lod.current == representation::mesh_full ? species.mesh_reduced : d.mesh;
+        d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
+        for (int c = 0; c < m_cascade_count; ++c)
+            d.mesh[std::size_t(shadow_pass(c))] = mesh_of(species, coarser(lod.current, c));
         const glm::vec3 base{t.position - m_camera.position};
         const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);
@@ -132,7 +133,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const std::uint32_t depth = quantize_depth(d.distance);
             for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
                 const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
-                *out++ = {make_sort_key({pass, d.mesh_for(pass), depth}), index, 0};
+                *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
             }
             ++index;
         });

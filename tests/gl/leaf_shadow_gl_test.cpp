@@ -1,0 +1,118 @@
+// Alpha-tested leaves cast leaf-shaped shadows: a card whose texture is opaque on its western
+// half and transparent on its eastern half hangs 5 m above flat ground, with the sun 45° up in
+// the east. The ground must be dark under the opaque half's shadow and lit under the
+// transparent half's, as seen by a camera looking straight down.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "gl_test_support.h"
+#include "systems/lighting/sky_model.h"
+#include "systems/render/renderer.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+mesh_data horizontal_quad(float half, float y, material_kind material) {
+    mesh_data m;
+    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}}, {{half, y, -half}, {0, 1, 0}, {1, 0}},
+                  {{half, y, half}, {0, 1, 0}, {1, 1}}, {{-half, y, half}, {0, 1, 0}, {0, 1}}};
+    m.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
+    m.submeshes = {{0, 6, material}};
+    m.bounds_min = {-half, y, -half};
+    m.bounds_max = {half, y, half};
+    return m;
+}
+
+image_rgba8 solid(std::uint8_t v) {
+    image_rgba8 image{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, v)};
+    for (std::size_t i = 3; i < image.texels.size(); i += 4) image.texels[i] = 255;
+    return image;
+}
+
+// Opaque where u < 0.5 (west, -x), fully transparent where u >= 0.5.
+image_rgba8 half_transparent_leaf() {
+    image_rgba8 image = solid(90);
+    for (std::uint32_t y = 0; y < 16; ++y)
+        for (std::uint32_t x = 8; x < 16; ++x) image.at(x, y)[3] = 0;
+    return image;
+}
+
+float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec3 world) {
+    const glm::vec4 clip = cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const auto px = std::uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
+    const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));
+    const std::uint8_t* p = image.at(px, py);
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
+    SYLVA_REQUIRE_GL();
+    render::context_options options;
+    options.width = 256;
+    options.height = 256;
+    auto context = render::create_context(options);
+
+    scene_assets assets;
+    assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
+    assets.meshes.push_back(horizontal_quad(2.0f, 5.0f, material_kind::leaf));
+    assets.terrain_mesh = 0;
+    assets.leaf_textures = {half_transparent_leaf()};
+    assets.bark_textures = {solid(100)};
+    assets.ground_texture = solid(160);
+    render::renderer_settings settings;
+    settings.width = settings.height = 256;
+    settings.cascades = 1;
+    settings.shadow_resolution = 2048;
+    render::renderer renderer(settings, assets);
+
+    camera cam;
+    cam.position = {-5.0, 30.0, 0.0};
+    cam.forward = {0.0f, -1.0f, 0.0f};
+    cam.aspect = 1.0f;
+    cam.fov_y = glm::radians(60.0f);
+    cam.viewport_height_px = 256.0f;
+    derive_camera_matrices(cam);
+    sun light;
+    light.direction = sun_direction_from_angles(45.0f, 90.0f);  // from the east (+x)
+    light.color = glm::vec3(1.0f);
+    light.intensity = 3.0f;
+    environment sky;
+    sky.irradiance_sh[0] = glm::vec3(1.5f);
+    const cascade_set cascades = fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f,
+                                              light.direction, 1, 0.5f, 2048, 50.0f, cam.position);
+    draw_list draws;
+    instance_gpu leaf;
+    leaf.position = glm::vec3(glm::dvec3(0.0) - cam.position);
+    draws.instances = {leaf};
+    draws.batches = {{render_pass::opaque, 1, 0, 1}, {render_pass::shadow_cascade_0, 1, 0, 1}};
+
+    render::frame_view view;
+    view.view_camera = &cam;
+    view.sun_light = &light;
+    view.sky = &sky;
+    view.cascades = &cascades;
+    view.draws = &draws;
+    view.terrain_position = glm::vec3(-cam.position);
+    renderer.render(view);
+    renderer.finish();
+    const image_rgba8 image = renderer.read_color();
+
+    // The card's shadow falls 5 m west (-x): x in [-7, -3], its opaque half's in [-7, -5].
+    const float open_ground = luminance_at(image, cam, {-12.0, 0.0, 0.0});
+    const float under_opaque_half = luminance_at(image, cam, {-6.0, 0.0, 0.0});
+    const float under_transparent_half = luminance_at(image, cam, {-4.0, 0.0, 0.0});
+    EXPECT_LT(under_opaque_half, 0.75f * open_ground);
+    EXPECT_GT(under_transparent_half, 0.95f * open_ground);
+    // And the same card without its shadow pass batch casts nothing.
+    draws.batches = {{render_pass::opaque, 1, 0, 1}};
+    renderer.render(view);
+    renderer.finish();
+    EXPECT_GT(luminance_at(renderer.read_color(), cam, {-6.0, 0.0, 0.0}), 0.95f * open_ground);
+}
+
+}  // namespace
+}  // namespace sylva

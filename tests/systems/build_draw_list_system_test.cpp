@@ -1,0 +1,115 @@
+#include "systems/build_draw_list_system.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "components/point_prefix.h"
+#include "ecs/executor.h"
+#include "ecs/schedule.h"
+#include "systems/cull_system.h"
+#include "systems/select_representation_system.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+// Three plants straight ahead at 10 m (full mesh), 100 m (reduced) and 300 m (far); two
+// cascades whose light boxes cover everything.
+struct three_plants {
+    ecs::world world;
+    ecs::schedule schedule;
+
+    three_plants() {
+        species_library library;
+        species_entry oak;
+        oak.mesh_full = 1;
+        oak.mesh_reduced = 2;
+        oak.mesh_far = 3;
+        oak.reduced_distance_m = 50.0f;
+        oak.far_distance_m = 200.0f;
+        oak.bounding_radius = 5.0f;
+        oak.center_height = 5.0f;
+        oak.texture_layer = 0.0f;
+        library.species = {oak};
+        library.meshes = {{100, representation::none}, {6000, representation::mesh_full},
+                          {800, representation::mesh_reduced}, {150, representation::mesh_far}};
+        for (double z : {-10.0, -100.0, -300.0}) {
+            const ecs::entity e = world.create();
+            world.emplace<world_transform>(e, {{0.0, 0.0, z}, 0.0f, 1.0f});
+            world.emplace<bounds>(e, {5.0f, 5.0f});
+            world.emplace<plant_instance>(e, {species_id{0}, 0, 0});
+            world.emplace<lod_state>(e);
+            world.emplace<point_prefix>(e);
+            world.emplace<fade_alpha>(e);
+        }
+        world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
+        camera cam;
+        cam.position = {0.0, 5.0, 0.0};
+        cam.far_plane = 1000.0f;
+        derive_camera_matrices(cam);
+        world.emplace<camera>(world.create(), cam);
+        cascade_set cascades;
+        cascades.count = 2;
+        const glm::mat4 everything = glm::ortho(-1000.0f, 1000.0f, -1000.0f, 1000.0f, -1000.0f, 1000.0f);
+        cascades.light_view_projection = {everything, everything, everything, everything};
+        world.set_resource(std::move(library));
+        world.set_resource(shadow_settings{2, 1024, 1000.0f, 0.5f});
+        world.set_resource(cascades);
+        world.set_resource(draw_list{});
+        schedule.add<cull_system>();
+        schedule.add<select_representation_system>();
+        schedule.add<build_draw_list_system>();
+        schedule.build();
+    }
+};
+
+std::vector<std::uint16_t> meshes_in(const draw_list& list, render_pass pass) {
+    std::vector<std::uint16_t> meshes;
+    for (const auto& item : list.items)
+        if (decode_sort_key(item.key).pass == pass) meshes.push_back(decode_sort_key(item.key).mesh);
+    return meshes;
+}
+
+TEST(build_draw_list, each_cascade_draws_one_mesh_level_coarser_than_the_one_before) {
+    three_plants scene;
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    EXPECT_EQ(meshes_in(list, render_pass::opaque), (std::vector<std::uint16_t>{1, 2, 3}));
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_0), (std::vector<std::uint16_t>{1, 2, 3}));
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_1), (std::vector<std::uint16_t>{2, 3, 3}));
+    EXPECT_TRUE(meshes_in(list, render_pass::shadow_cascade_2).empty());
+}
+
+TEST(build_draw_list, items_are_sorted_and_batched_with_camera_relative_instances) {
+    three_plants scene;
+    ecs::executor executor(1);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    ASSERT_EQ(list.items.size(), 9u);
+    for (std::size_t i = 1; i < list.items.size(); ++i) EXPECT_LE(list.items[i - 1].key, list.items[i].key);
+    // cascade 0: 3 meshes, cascade 1: meshes 2 and 3 (two plants share the far mesh), opaque: 3.
+    ASSERT_EQ(list.batches.size(), 8u);
+    EXPECT_EQ(list.batches[4].mesh, 3);
+    EXPECT_EQ(list.batches[4].instance_count, 2u);
+    EXPECT_EQ(list.triangles, 6000u + 800u + 150u);
+    EXPECT_EQ(list.instances_by_representation[std::size_t(representation::mesh_far)], 1u);
+    // The last opaque batch is the far mesh: the plant 300 m ahead, relative to the camera at y = 5.
+    const auto& last = list.batches.back();
+    EXPECT_EQ(list.instances[last.first_instance].position, glm::vec3(0.0f, -5.0f, -300.0f));
+}
+
+TEST(build_draw_list, plants_behind_the_camera_are_not_drawn_but_may_cast_shadows) {
+    three_plants scene;
+    scene.world.single<camera>().forward = {0.0f, 0.0f, 1.0f};  // looking away
+    derive_camera_matrices(scene.world.single<camera>());
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    EXPECT_TRUE(meshes_in(list, render_pass::opaque).empty());
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_0).size(), 3u);
+}
+
+}  // namespace
+}  // namespace sylva
