@@ -98,5 +98,18 @@ TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
     fs::remove_all(out);
 }
 
+TEST(play_command, exr_frames_are_written_through_openimageio) {
+    const fs::path out = temp_dir("exr");
+    const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
+    const result r = run("play " + scenario + " --headless --frames 1 --format exr --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream exr(out / "frame_0000.exr", std::ios::binary);
+    char magic[4] = {};
+    exr.read(magic, 4);
+    // OpenEXR magic number 20000630 (0x01312f76), little-endian.
+    EXPECT_EQ(std::string(magic, 4), std::string("\x76\x2f\x31\x01", 4));
+    fs::remove_all(out);
+}
+
 }  // namespace
 }  // namespace sylva
