@@ -28,13 +28,9 @@ std::filesystem::path frame_path(const play_options& o, std::uint64_t frame) {
 }
 
 int play(const play_options& o) {
-    scenario s;
-    try {
-        s = load_with_overrides(o.scenario);
-    } catch (const scenario_error& e) {
-        spdlog::error("{}", e.what());
-        return k_exit_bad_input;
-    }
+    const std::optional<scenario> loaded = load_or_report(o.scenario);
+    if (!loaded) return k_exit_bad_input;
+    const scenario& s = *loaded;
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
     if (ec) {

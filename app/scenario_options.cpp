@@ -1,5 +1,7 @@
 #include "app/scenario_options.h"
 
+#include <spdlog/spdlog.h>
+
 #include "scenarios/scenario_loader.h"
 
 namespace sylva {
@@ -26,6 +28,15 @@ scenario load_with_overrides(const scenario_options& options) {
     if (options.width) s.width = *options.width;
     if (options.height) s.height = *options.height;
     return s;
+}
+
+std::optional<scenario> load_or_report(const scenario_options& options) {
+    try {
+        return load_with_overrides(options);
+    } catch (const scenario_error& e) {
+        spdlog::error("{}", e.what());
+        return std::nullopt;
+    }
 }
 
 }  // namespace sylva

@@ -20,5 +20,8 @@ struct scenario_options {
 void add_scenario_options(CLI::App& command, scenario_options& options);
 // Loads the scenario (or the default) and applies the overrides; throws scenario_error.
 scenario load_with_overrides(const scenario_options& options);
+// The same, but reports a scenario error (file, JSON path, value) and returns nothing, so the
+// command can exit with k_exit_bad_input before it writes anything.
+std::optional<scenario> load_or_report(const scenario_options& options);
 
 }  // namespace sylva

@@ -97,13 +97,9 @@ void draw_overlay(const frame_record& r, const walk_state& state, const run_info
 }
 
 int view(const view_options& o) {
-    scenario s;
-    try {
-        s = load_with_overrides(o.scenario);
-    } catch (const scenario_error& e) {
-        spdlog::error("{}", e.what());
-        return k_exit_bad_input;
-    }
+    const std::optional<scenario> loaded = load_or_report(o.scenario);
+    if (!loaded) return k_exit_bad_input;
+    const scenario& s = *loaded;
     try {
         render::context_options context_options;
         context_options.width = int(s.width);

@@ -4,6 +4,21 @@
 #include <stdexcept>
 
 namespace sylva::render {
+namespace {
+
+// GL's first row is the bottom one; images are stored top row first.
+image_rgba8 image_from_bottom_up(int width, int height, const std::vector<std::uint8_t>& bottom_up) {
+    image_rgba8 image;
+    image.width = std::uint32_t(width);
+    image.height = std::uint32_t(height);
+    const std::size_t row = std::size_t(width) * 4;
+    image.texels.resize(bottom_up.size());
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&image.texels[std::size_t(y) * row], &bottom_up[std::size_t(height - 1 - y) * row], row);
+    return image;
+}
+
+}  // namespace
 
 render_target::render_target(int width, int height)
     : m_width(width), m_height(height), m_color(make_texture(GL_TEXTURE_2D)),
@@ -22,19 +37,11 @@ void render_target::bind() const {
 }
 
 image_rgba8 render_target::read_color() const {
-    image_rgba8 image;
-    image.width = std::uint32_t(m_width);
-    image.height = std::uint32_t(m_height);
-    const std::size_t row = std::size_t(m_width) * 4;
-    std::vector<std::uint8_t> bottom_up(row * std::size_t(m_height));
+    std::vector<std::uint8_t> bottom_up(std::size_t(m_width) * std::size_t(m_height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m_color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bottom_up.size()),
                       bottom_up.data());
-    image.texels.resize(bottom_up.size());
-    for (int y = 0; y < m_height; ++y)  // GL's first row is the bottom one
-        std::memcpy(&image.texels[std::size_t(y) * row],
-                    &bottom_up[std::size_t(m_height - 1 - y) * row], row);
-    return image;
+    return image_from_bottom_up(m_width, m_height, bottom_up);
 }
 
 void render_target::blit_to_default(int window_width, int window_height) const {
@@ -42,24 +49,13 @@ void render_target::blit_to_default(int window_width, int window_height) const {
                            window_height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
-}  // namespace sylva::render
-
-namespace sylva::render {
-
 image_rgba8 read_default_framebuffer(int width, int height) {
-    image_rgba8 image;
-    image.width = std::uint32_t(width);
-    image.height = std::uint32_t(height);
-    const std::size_t row = std::size_t(width) * 4;
-    std::vector<std::uint8_t> bottom_up(row * std::size_t(height));
+    std::vector<std::uint8_t> bottom_up(std::size_t(width) * std::size_t(height) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
-    image.texels.resize(bottom_up.size());
-    for (int y = 0; y < height; ++y)
-        std::memcpy(&image.texels[std::size_t(y) * row], &bottom_up[std::size_t(height - 1 - y) * row], row);
-    return image;
+    return image_from_bottom_up(width, height, bottom_up);
 }
 
 }  // namespace sylva::render

@@ -23,9 +23,7 @@ private:
     gl_framebuffer m_framebuffer;
 };
 
-}  // namespace sylva::render
-
-namespace sylva::render {
 // Reads the window's back buffer (after a blit, before the overlay) as an image, top row first.
 image_rgba8 read_default_framebuffer(int width, int height);
+
 }  // namespace sylva::render
