@@ -33,8 +33,8 @@ void setup_instance_attributes(GLuint vao) {
 }
 
 // The sky's radiance on an equirectangular grid, matching the lookup in shaders/sky.frag.
-std::vector<float> sky_radiance_grid(const sky_model& sky) {
-    std::vector<float> rgb(std::size_t(k_sky_width) * k_sky_height * 3);
+void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
+    rgb.resize(std::size_t(k_sky_width) * k_sky_height * 3);
     for (int j = 0; j < k_sky_height; ++j) {
         const float theta = (float(j) + 0.5f) / k_sky_height * std::numbers::pi_v<float>;
         for (int i = 0; i < k_sky_width; ++i) {
@@ -44,7 +44,6 @@ std::vector<float> sky_radiance_grid(const sky_model& sky) {
             std::memcpy(&rgb[(std::size_t(j) * k_sky_width + i) * 3], &l, sizeof(l));
         }
     }
-    return rgb;
 }
 
 sky_model sky_of(const frame_view& view) {
@@ -95,8 +94,13 @@ GLuint renderer::surface_program(material_kind material, bool shadow) {
 
 void renderer::update_sky_texture(const frame_view& view) {
     if (m_sky_texture && m_sky_revision == view.sky->sky_revision) return;
-    std::vector<float> grid = sky_radiance_grid(sky_of(view));
-    m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
+    std::vector<float>& grid = m_sky_grid;
+    fill_sky_radiance_grid(sky_of(view), grid);
+    if (!m_sky_texture)
+        m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
+    else  // the sun moved: same texture, new texels (no GL allocation in the frame loop)
+        glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB, GL_FLOAT,
+                            grid.data());
     m_sky_revision = view.sky->sky_revision;
     m_frame_upload_bytes += grid.size() * sizeof(float);
 }

@@ -110,6 +110,7 @@ private:
     gl_texture m_bark_textures;
     gl_texture m_ground_texture;
     gl_texture m_sky_texture;
+    std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::uint64_t m_sky_revision = 0;
     std::uint16_t m_terrain_mesh = 0;
     float m_ground_uv_scale = 4.0f;
