@@ -15,6 +15,12 @@ int main(int argc, char** argv) {
     commands.emplace_back(play, sylva::add_play_command(*play));
     auto* view = app.add_subcommand("view", "Open a window and walk through a scenario");
     commands.emplace_back(view, sylva::add_view_command(*view));
+    auto* plant = app.add_subcommand(
+        "plant", "Generate a species preset and export it as binary glTF (.glb)");
+    commands.emplace_back(plant, sylva::add_plant_command(*plant));
+    auto* inspect = app.add_subcommand(
+        "inspect", "Print a glTF plant's triangles, leaves, branches, materials, bounds and units");
+    commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -46,7 +46,8 @@ int play(const play_options& o) {
         auto context = render::create_context(context_options);
         spdlog::info("playing '{}' ({}): {} frames at {}x{} on {} ({})", s.name, s.source, s.frames,
                      s.width, s.height, context->renderer(), context->backend_name());
-        scenario_player player(s, o.scenario.threads, context.get());
+        bake_cache cache;
+        scenario_player player(s, o.scenario.threads, context.get(), &cache);
         const run_info info = player.info();
         spdlog::info("{} plants, {} source triangles, set up in {:.0f} ms, {} threads", info.plants,
                      info.source_triangles, info.setup_ms, info.threads);

@@ -67,10 +67,10 @@ std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
     return h;
 }
 
-scenario_player::scenario_player(scenario s, int threads, render::gl_context* context)
+scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache)
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
-    m_assets = build_scene_assets(m_scenario);
+    m_assets = build_scene_assets(m_scenario, cache);
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
     register_frame_systems(m_schedule);
 

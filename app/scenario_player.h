@@ -9,6 +9,7 @@
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
 #include "ecs/world.h"
+#include "models/bake_cache.h"
 #include "models/image.h"
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
@@ -20,7 +21,8 @@ namespace sylva {
 class scenario_player {
 public:
     // `context` may be null: then nothing is rendered. `threads` 0 means every hardware thread.
-    scenario_player(scenario s, int threads, render::gl_context* context);
+    // `cache` may be null: species models are then built every time (tests do this).
+    scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache = nullptr);
     ~scenario_player();
 
     frame_record step();  // plays the current frame, then advances to the next

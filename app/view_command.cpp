@@ -108,7 +108,8 @@ int view(const view_options& o) {
         context_options.visible = !o.hidden;
         context_options.title = "Sylva — " + s.name;
         auto context = render::create_context(context_options);
-        scenario_player player(s, o.scenario.threads, context.get());
+        bake_cache cache;
+        scenario_player player(s, o.scenario.threads, context.get(), &cache);
         walk_state state;
         GLFWwindow* window = context->window();
         glfwSetWindowUserPointer(window, &state);

@@ -61,7 +61,7 @@ struct bench_scene {
         scene_assets assets;
         assets.meshes.push_back(box(1.0f, material_kind::ground));  // stands in for the terrain
         for (std::uint16_t m = 0; m < k_meshes; ++m) assets.meshes.push_back(box(0.3f + 0.05f * m, material_kind::bark));
-        assets.terrain_mesh = 0;
+        assets.terrain_meshes = {0};
         assets.leaf_textures = {flat_texture(60, 120, 40)};
         assets.bark_textures = {flat_texture(90, 70, 50)};
         assets.ground_texture = flat_texture(80, 90, 40);

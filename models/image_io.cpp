@@ -12,7 +12,10 @@ void write_image(const image_rgba8& image, const std::filesystem::path& path) {
         throw std::runtime_error("write_image: " + name + ": image is empty or its texel count is wrong");
     auto out = OIIO::ImageOutput::create(name);
     if (!out) throw std::runtime_error("write_image: " + name + ": no writer (" + OIIO::geterror() + ")");
-    const OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4, OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4, OIIO::TypeDesc::UINT8);
+    // Our texels are unassociated (straight) alpha; without this OpenImageIO premultiplies on
+    // the way to PNG and changes the colour of semi-transparent texels.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!out->open(name, spec)) throw std::runtime_error("write_image: cannot open " + name + ": " + out->geterror());
     const bool written = out->write_image(OIIO::TypeDesc::UINT8, image.texels.data());
     const std::string error = written ? std::string() : out->geterror();

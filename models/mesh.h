@@ -29,12 +29,45 @@ struct submesh {
     material_kind material = material_kind::bark;
 };
 
+// What a triangle belongs to (DESIGN §4): representations that cluster by branch, draw long thin
+// parts as lines or reduce by importance read this instead of guessing from geometry.
+enum class part_kind : std::uint8_t {
+    bark,    // a stem's tube
+    leaf,    // a broad leaf card
+    needle,  // a needle-shoot card (conifers): long thin parts
+    blade,   // a grass blade strip: long thin parts
+    petal,   // a blossom part: visually important, keep under reduction
+    frond,   // a fern pinna card
+};
+
+// Per triangle: `branch` is the stem index in the plant's skeleton (for foliage, the stem that
+// carries it), `level` its recursion level (trunk or ground stem 0; foliage one more than its
+// stem), `parent_branch` the stem it grows from (a stem from the ground names itself).
+struct triangle_part {
+    std::uint32_t branch = 0;
+    std::uint8_t level = 0;
+    part_kind kind = part_kind::bark;
+    std::uint32_t parent_branch = 0;
+};
+
+// One per foliage element (leaf card, needle shoot, blade, petal, pinna): where it is, which
+// way its front faces, its longest extent in metres and the stem that carries it.
+struct leaf_record {
+    glm::vec3 center{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    float size = 0.0f;
+    std::uint32_t parent_branch = 0;
+    part_kind kind = part_kind::leaf;
+};
+
 struct mesh_data {
     std::vector<vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangle list
     std::vector<submesh> submeshes;
     glm::vec3 bounds_min{0.0f};
     glm::vec3 bounds_max{0.0f};
+    std::vector<triangle_part> parts;  // one per triangle, empty when unknown
+    std::vector<leaf_record> leaves;   // one per foliage element, empty when unknown
 
     std::size_t triangle_count() const { return indices.size() / 3; }
 };

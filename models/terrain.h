@@ -1,7 +1,8 @@
 #pragma once
-// The terrain: a square heightfield centred on the origin, generated from fBm gradient noise,
-// and the grid mesh the renderer draws for it.
+// The terrain: a square heightfield centred on the origin, generated from fBm gradient noise or
+// read from a heightmap image, and the grid meshes the renderer draws for it (whole or in tiles).
 #include <cstdint>
+#include <filesystem>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -37,5 +38,22 @@ heightfield generate_terrain(double size_m, std::uint32_t resolution, float heig
 // relative to the terrain centre; uv = world xz / uv_scale_m (the texture repeats every
 // uv_scale_m metres).
 mesh_data terrain_mesh(const heightfield& field, float uv_scale_m);
+
+// A heightmap image as a heightfield of size_m metres centred on the origin: one sample per
+// pixel (resolution = the image side), image row 0 at z = -size_m/2, column 0 at x = -size_m/2.
+// A 16-bit PNG maps 0..65535 to 0..height_m; an EXR (or any float image) maps 0..1 to
+// 0..height_m. Only the first channel is read (grey, or R of RGB/RGBA). The image must be
+// square and at least 2x2. Throws std::runtime_error naming the file (missing, unreadable,
+// not square: "... is 300x200 pixels; heightmaps must be square").
+heightfield load_heightmap(const std::filesystem::path& path, double size_m, float height_m);
+
+// The terrain_mesh split into tiles_per_side^2 square tiles (row-major: z rows, x columns), for
+// culling the ground per tile. Tiles split the grid's cells; neighbouring tiles repeat the
+// vertices of their common edge with identical positions, normals and uvs (computed from the
+// same samples), so the surface has no cracks. Each tile's bounds are its own. tiles_per_side
+// is clamped to 1 .. resolution-1 (a tile holds at least one cell). Together the tiles have
+// exactly the triangles of terrain_mesh.
+std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
+                                           float uv_scale_m);
 
 }  // namespace sylva

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "models/plant_mesh_builder.h"
 #include "models/random.h"
 #include "models/tree_skeleton.h"
 
@@ -19,11 +20,6 @@ constexpr float k_leaf_start = 0.15f;
 // Random scatter of leaf size and down angle around the species' values.
 constexpr float k_leaf_size_variation = 0.15f;
 constexpr float k_leaf_down_variation_deg = 12.0f;
-
-struct mesh_builder {
-    std::vector<vertex> vertices;
-    std::vector<std::uint32_t> indices;
-};
 
 struct stem_resolution {
     int segments;
@@ -58,41 +54,21 @@ stem_resolution resolution_for(const tree_params& p, int level, tree_detail deta
             std::max(3, static_cast<int>(std::lround(float(lp.sides) * profile.sides_ratio)))};
 }
 
-// A generalized cylinder (W&P stems): one ring of sides + 1 vertices per segment end (the seam
-// vertex repeats with u = 1), normals radial. v runs along the stem in units of the base
-// circumference, so bark texels stay roughly square on every stem.
-void add_stem(const stem& s, stem_resolution res, mesh_builder& out) {
-    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+// A W&P stem as a tube (see add_tube); v runs along the stem in units of the base circumference,
+// so bark texels stay roughly square on every stem.
+void add_stem(const tree_skeleton& tree, std::size_t index, stem_resolution res, plant_mesh_builder& out) {
+    const stem& s = tree.stems[index];
     const float circumference = std::max(2.0f * k_pi * s.nodes.front().radius, 1e-3f);
-    const auto ring = static_cast<std::uint32_t>(res.sides + 1);
+    std::vector<tube_ring> rings;
+    rings.reserve(std::size_t(res.segments) + 1);
     for (int k = 0; k <= res.segments; ++k) {
-        const float t = static_cast<float>(k) / static_cast<float>(res.segments);
-        const stem_node node = sample_stem(s, t);
-        const glm::vec3 binormal = glm::cross(node.tangent, node.normal);
-        for (int j = 0; j <= res.sides; ++j) {
-            const float u = static_cast<float>(j) / static_cast<float>(res.sides);
-            const float angle = 2.0f * k_pi * u;
-            const glm::vec3 radial = node.normal * std::cos(angle) + binormal * std::sin(angle);
-            out.vertices.push_back({node.position + radial * node.radius, radial, {u, t * s.length / circumference}});
-        }
+        const stem_node node = sample_stem(s, static_cast<float>(k) / static_cast<float>(res.segments));
+        rings.push_back({node.position, node.tangent, node.normal, node.radius});
     }
-    for (int k = 0; k < res.segments; ++k) {
-        for (int j = 0; j < res.sides; ++j) {
-            const std::uint32_t a = base + static_cast<std::uint32_t>(k) * ring + static_cast<std::uint32_t>(j);
-            const std::uint32_t b = a + ring;
-            // Counter-clockwise seen from outside: around the ring, then along the stem.
-            out.indices.insert(out.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
-        }
-    }
+    const auto id = static_cast<std::uint32_t>(index);
+    const auto parent = s.parent >= 0 ? static_cast<std::uint32_t>(s.parent) : id;
+    add_tube(out, rings, res.sides, circumference, {id, static_cast<std::uint8_t>(s.level), part_kind::bark, parent});
 }
-
-struct leaf_card {
-    glm::vec3 base;  // where the leaf meets the twig
-    glm::vec3 axis;  // unit, base to tip
-    glm::vec3 side;  // unit, across the blade
-    float length;
-    float width;
-};
 
 // Broad leaves turn their blade to the sky (W&P orient leaves towards the light), rolled by a
 // random tilt; needle sprays roll freely around their own axis, surrounding the twig.
@@ -105,23 +81,15 @@ glm::vec3 leaf_side(const tree_params& p, glm::vec3 axis, glm::vec3 fallback, rn
     return glm::normalize(side * std::cos(roll) + glm::cross(axis, side) * std::sin(roll));
 }
 
-void add_leaf(const leaf_card& c, mesh_builder& out) {
-    const auto base = static_cast<std::uint32_t>(out.vertices.size());
-    const glm::vec3 normal = glm::normalize(glm::cross(c.side, c.axis));
-    const glm::vec3 half = c.side * (0.5f * c.width);
-    const glm::vec3 tip = c.axis * c.length;
-    out.vertices.push_back({c.base - half, normal, {0.0f, 1.0f}});
-    out.vertices.push_back({c.base + half, normal, {1.0f, 1.0f}});
-    out.vertices.push_back({c.base + half + tip, normal, {1.0f, 0.0f}});
-    out.vertices.push_back({c.base - half + tip, normal, {0.0f, 0.0f}});
-    out.indices.insert(out.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-}
-
 // W&P leaves per stem: Leaves * ShapeRatio(tapered cylindrical, offset / length_parent), so
 // twigs near their parent's base carry fewer. `quality` < 1 keeps that fraction of the leaves
 // at 1/sqrt(quality) the size (W&P "degradation at range"): the leaf area is unchanged. The
 // kept count is rounded stochastically, so a twig may keep none and the expected area is exact.
-void add_leaves(const tree_params& p, const tree_skeleton& tree, const stem& s, float quality, mesh_builder& out) {
+void add_leaves(const tree_params& p, const tree_skeleton& tree, std::size_t index, float quality, plant_mesh_builder& out) {
+    const stem& s = tree.stems[index];
+    const auto id = static_cast<std::uint32_t>(index);
+    const part_kind kind = p.leaf == leaf_shape::needle_cluster ? part_kind::needle : part_kind::leaf;
+    const triangle_part part{id, static_cast<std::uint8_t>(s.level + 1), kind, id};
     const stem& parent = tree.stems[std::size_t(std::max(s.parent, 0))];
     const float position = s.parent >= 0 ? s.offset_in_parent / parent.length : 1.0f;
     const float full = float(p.leaves_per_stem) * shape_ratio(crown_shape::tapered_cylindrical, position);
@@ -145,32 +113,10 @@ void add_leaves(const tree_params& p, const tree_skeleton& tree, const stem& s, 
         // the crown, so the crown's outline does not swell when the renderer switches.
         const glm::vec3 base = node.position + radial * node.radius + axis * (nominal - length);
         const glm::vec3 fallback = glm::normalize(glm::cross(axis, radial));
-        add_leaf({base, axis, leaf_side(p, axis, fallback, random), length, length * p.leaf_width_ratio}, out);
+        const card c{base, axis, leaf_side(p, axis, fallback, random), length, length * p.leaf_width_ratio};
+        add_card(out, c, uv_rect{}, part);
+        out.leaves.push_back(card_record(c, id, kind));
     }
-}
-
-void set_bounds(mesh_data& mesh) {
-    if (mesh.vertices.empty()) return;
-    mesh.bounds_min = mesh.bounds_max = mesh.vertices.front().position;
-    for (const vertex& v : mesh.vertices) {
-        mesh.bounds_min = glm::min(mesh.bounds_min, v.position);
-        mesh.bounds_max = glm::max(mesh.bounds_max, v.position);
-    }
-}
-
-mesh_data combine(mesh_builder&& bark, const mesh_builder& leaves) {
-    mesh_data mesh;
-    mesh.vertices = std::move(bark.vertices);
-    mesh.indices = std::move(bark.indices);
-    const auto bark_index_count = static_cast<std::uint32_t>(mesh.indices.size());
-    const auto leaf_base = static_cast<std::uint32_t>(mesh.vertices.size());
-    mesh.vertices.insert(mesh.vertices.end(), leaves.vertices.begin(), leaves.vertices.end());
-    mesh.indices.reserve(mesh.indices.size() + leaves.indices.size());
-    for (const std::uint32_t i : leaves.indices) mesh.indices.push_back(leaf_base + i);
-    mesh.submeshes.push_back({0, bark_index_count, material_kind::bark});
-    mesh.submeshes.push_back({bark_index_count, static_cast<std::uint32_t>(leaves.indices.size()), material_kind::leaf});
-    set_bounds(mesh);
-    return mesh;
 }
 
 }  // namespace
@@ -181,16 +127,17 @@ mesh_data generate_tree(const tree_params& params, std::uint64_t seed, tree_deta
     const detail_profile profile = profile_for(params, detail);
     const int bark_levels = std::min(params.bark_levels, profile.bark_levels);
     const float leaf_quality = std::clamp(profile.leaf_quality, 0.005f, 1.0f);
-    mesh_builder bark;
-    mesh_builder leaves;
-    for (const stem& s : tree.stems) {
+    plant_mesh_builder bark;
+    plant_mesh_builder leaves;
+    for (std::size_t i = 0; i < tree.stems.size(); ++i) {
+        const stem& s = tree.stems[i];
         // Stems finer than bark_levels (fewer at coarser detail) have no geometry but keep their
         // leaves where they were, so the crown silhouette does not change when the renderer
         // switches.
-        if (s.level < bark_levels) add_stem(s, resolution_for(params, s.level, detail), bark);
-        if (s.level == last_level) add_leaves(params, tree, s, leaf_quality, leaves);
+        if (s.level < bark_levels) add_stem(tree, i, resolution_for(params, s.level, detail), bark);
+        if (s.level == last_level) add_leaves(params, tree, i, leaf_quality, leaves);
     }
-    return combine(std::move(bark), leaves);
+    return assemble_plant_mesh(std::move(bark), std::move(leaves));
 }
 
 }  // namespace sylva

@@ -15,7 +15,9 @@ enum class tree_detail : std::uint8_t {
     far,      // ~4%: the trunk and a hundred or so large leaf cards, for trees hundreds of metres away
 };
 
-// A tree standing on the origin, growing up +y (trunk base at y = 0). Two sub-meshes: bark
+// A tree standing on the origin, growing up +y (trunk base at y = 0). parts names each
+// triangle's stem (skeleton index), level and parent stem; leaves holds one record per card
+// (part_kind::needle for needle_cluster leaves, else leaf). Two sub-meshes: bark
 // (material_kind::bark) then leaves (material_kind::leaf), each a contiguous index range. Leaf
 // cards are single-sided quads with uv 0..1 over the leaf texture: u across the leaf, v = 0 at
 // the tip (the top row of the texture) and 1 at the base. Same params and seed give a

@@ -50,6 +50,11 @@ struct tree_params {
     float base_size = 0.3f;             // W&P BaseSize: bare fraction of the trunk
     float flare = 0.5f;                 // W&P Flare: widening of the trunk base
     float attraction_up = 0.0f;         // W&P AttractionUp: stems bend towards (+) the sky
+    // Ours, for shrubs: several level-0 stems rise from the ground instead of one trunk, leaning
+    // out by ground_stem_lean_deg (± a third) and starting within ground_stem_spread_m of the origin.
+    int ground_stems = 1;
+    float ground_stem_lean_deg = 0.0f;
+    float ground_stem_spread_m = 0.0f;
     crown_shape shape = crown_shape::spherical;
     int levels = 3;                     // W&P Levels, 2..4 including the trunk
     std::array<stem_level_params, 4> level{};
@@ -80,9 +85,10 @@ struct tree_params {
 };
 
 // The names generate_tree accepts as presets.
-inline constexpr std::array<std::string_view, 2> k_tree_preset_names = {"broadleaf", "conifer"};
+inline constexpr std::array<std::string_view, 4> k_tree_preset_names = {"broadleaf", "broadleaf_hd", "conifer",
+                                                                         "shrub"};
 
-// Parameters of a named generator ("broadleaf" or "conifer"); throws std::invalid_argument
+// Parameters of a named generator (one of k_tree_preset_names); throws std::invalid_argument
 // naming the unknown generator and the valid names.
 tree_params tree_preset(std::string_view generator);
 

@@ -183,6 +183,7 @@ void add_children(const tree_params& params, std::uint64_t seed, tree_skeleton& 
 void validate(const tree_params& p) {
     if (p.levels < 2 || p.levels > 4)
         throw std::invalid_argument("tree_params: levels must be 2..4, got " + std::to_string(p.levels));
+    if (p.ground_stems < 1) throw std::invalid_argument("tree_params: ground_stems must be >= 1");
     if (!(p.height_m > 0.0f)) throw std::invalid_argument("tree_params: height_m must be > 0");
     for (int i = 0; i < p.levels; ++i) {
         const stem_level_params& lp = p.level[std::size_t(i)];
@@ -228,15 +229,29 @@ tree_skeleton build_tree_skeleton(const tree_params& params, std::uint64_t seed)
     tree_skeleton tree;
     rng random(hash_combine(seed, 0));
     const stem_level_params& trunk_level = params.level[0];
-    stem trunk;
-    // W&P length_trunk = (Length0 ± Length0V) * Scale; radius_trunk = length_trunk * Ratio.
-    trunk.length = params.height_m * random.vary(trunk_level.length, trunk_level.length_variation);
-    trunk.seed = hash_combine(seed, 0);
-    const float azimuth = random.uniform(0.0f, 2.0f * k_pi);
-    const glm::vec3 normal{std::cos(azimuth), 0.0f, std::sin(azimuth)};
-    trunk.nodes = trace_path(params, 0, {glm::vec3(0.0f), k_up, normal, trunk.length, trunk.length * params.trunk_radius_ratio},
-                             random);
-    tree.stems.push_back(std::move(trunk));
+    for (int g = 0; g < params.ground_stems; ++g) {
+        stem trunk;
+        // W&P length_trunk = (Length0 ± Length0V) * Scale; radius_trunk = length_trunk * Ratio.
+        trunk.length = params.height_m * random.vary(trunk_level.length, trunk_level.length_variation);
+        trunk.seed = g == 0 ? hash_combine(seed, 0) : hash_combine(seed, 0, g);
+        const float azimuth = random.uniform(0.0f, 2.0f * k_pi);
+        const glm::vec3 outward{std::cos(azimuth), 0.0f, std::sin(azimuth)};
+        glm::vec3 base(0.0f);
+        glm::vec3 direction = k_up;
+        glm::vec3 normal = outward;
+        if (params.ground_stems > 1) {
+            // Ground stems spread round the clump at the golden angle, leaning outwards.
+            const float around = azimuth + float(g) * params.phyllotaxis_deg * k_deg;
+            const glm::vec3 out{std::cos(around), 0.0f, std::sin(around)};
+            const float lean = random.vary(params.ground_stem_lean_deg, params.ground_stem_lean_deg / 3.0f) * k_deg;
+            base = out * (params.ground_stem_spread_m * std::sqrt(random.uniform()));
+            direction = glm::normalize(k_up * std::cos(lean) + out * std::sin(lean));
+            normal = orthonormal(out, direction);
+        }
+        trunk.nodes = trace_path(params, 0, {base, direction, normal, trunk.length, trunk.length * params.trunk_radius_ratio},
+                                 random);
+        tree.stems.push_back(std::move(trunk));
+    }
     for (std::size_t i = 0; i < tree.stems.size(); ++i)
         if (tree.stems[i].level + 1 < params.levels) add_children(params, seed, tree, i);
     return tree;

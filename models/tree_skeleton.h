@@ -27,7 +27,8 @@ struct stem {
 };
 
 struct tree_skeleton {
-    std::vector<stem> stems;  // every parent before its children; stems[0] is the trunk
+    std::vector<stem> stems;  // every parent before its children; the first params.ground_stems
+                              // stems (parent -1) rise from the ground; stems[0] is the trunk
 };
 
 // W&P ShapeRatio(shape, ratio): branch length factor for a position `ratio` (0 at the top of the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -179,6 +180,19 @@ glm::dvec3 read_dvec3(const json_node& node, number_range range) {
         node.fail("expected an array of 3 numbers");
     return {read_number(node.at(0), range), read_number(node.at(1), range),
             read_number(node.at(2), range)};
+}
+
+std::string read_file_path(const json_node& node) {
+    namespace fs = std::filesystem;
+    constexpr std::string_view k_embedded = "embedded:";
+    std::string_view source = node.file();
+    if (source.starts_with(k_embedded)) source.remove_prefix(k_embedded.size());
+    fs::path path(read_string(node));
+    if (path.is_relative()) path = fs::path(source).parent_path() / path;
+    std::error_code ec;
+    path = fs::absolute(path, ec).lexically_normal();
+    if (ec || !fs::is_regular_file(path, ec)) node.fail("file not found: " + path.string());
+    return path.string();
 }
 
 }  // namespace sylva

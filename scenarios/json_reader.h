@@ -25,6 +25,7 @@ public:
 
     const nlohmann::json& value() const { return *m_value; }
     const std::string& path() const { return m_path; }
+    const std::string& file() const { return *m_file; }  // the document's name (source)
 
     // The member `key` of this object, if present (this must be an object).
     std::optional<json_node> find(std::string_view key) const;
@@ -75,6 +76,10 @@ bool read_bool(const json_node& node);
 std::string read_string(const json_node& node);  // non-empty
 std::string read_choice(const json_node& node, std::span<const std::string_view> choices);
 glm::dvec3 read_dvec3(const json_node& node, number_range range);  // [x, y, z]
+// A non-empty string naming an existing regular file, relative to the folder of the document's
+// file (node.file(); an "embedded:" prefix is dropped) unless absolute; returned absolute and
+// lexically normal. A missing file fails with "file not found: <absolute path>".
+std::string read_file_path(const json_node& node);
 
 // Binds the fields of S to object keys. Fields are read in table order after the unknown-key
 // check, so the first problem reported is always the same for the same document.
@@ -139,6 +144,16 @@ public:
             key,
             [=](const json_node& n, S& s) { std::invoke(access, s) = read_choice(n, choices); },
             [=](const S& s, nlohmann::json& j) { j[std::string(key)] = std::invoke(access, s); });
+    }
+    // An optional file path (read_file_path), stored absolute; "" (absent) is not written.
+    template <class Access>
+    field_table& file_path(std::string_view key, Access access) {
+        return add(
+            key, [=](const json_node& n, S& s) { std::invoke(access, s) = read_file_path(n); },
+            [=](const S& s, nlohmann::json& j) {
+                const std::string& path = std::invoke(access, s);
+                if (!path.empty()) j[std::string(key)] = path;
+            });
     }
     // glm::vec3 or glm::dvec3 written as [x, y, z].
     template <class Access>

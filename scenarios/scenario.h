@@ -6,6 +6,8 @@
 // JSON format. Keys are the field names below (snake_case). Every section and every field is
 // optional unless marked REQUIRED; an absent field keeps its default. Unknown keys are errors.
 // Ranges are inclusive. Integers must be written as JSON integers (960, not 960.0).
+// File paths are relative to the scenario file's folder (or absolute) and must name an existing
+// file; the loaded scenario holds them as absolute paths.
 //
 //   name           string           default: the file name without extension
 //   seed           integer          1            0 .. 2^64-1; seeds the plant generators and placement
@@ -15,17 +17,25 @@
 //   world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world position
 //                                                (stress-tests double-precision handling)
 //   terrain {
-//     size_m       number           400          1 .. 100000; square, centred on the origin
-//     resolution   integer          129          2 .. 4097 vertices per side
-//     height_m     number           25           0 .. 10000; peak-to-valley scale of the hills
-//     octaves      integer          5            1 .. 16 noise octaves
-//     frequency    number           0.008        0 .. 10 cycles per metre (lowest octave)
-//     seed         integer          7            0 .. 2^64-1
-//     ground_color [r, g, b]        [0.32, 0.30, 0.18]  each 0 .. 1 (linear)
+//     size_m         number       400          1 .. 100000; square, centred on the origin
+//     resolution     integer      129          2 .. 4097 vertices per side
+//     height_m       number       25           0 .. 10000; peak-to-valley scale of the hills
+//     octaves        integer      5            1 .. 16 noise octaves
+//     frequency      number       0.008        0 .. 10 cycles per metre (lowest octave)
+//     seed           integer      7            0 .. 2^64-1
+//     ground_color   [r, g, b]    [0.32, 0.30, 0.18]  each 0 .. 1 (linear)
+//     heightmap      file path    none         16-bit PNG or EXR, square (models/terrain.h
+//                                              load_heightmap: 0..1 -> 0..height_m over size_m);
+//                                              when set, resolution, octaves, frequency and
+//                                              seed are ignored
+//     tiles_per_side integer      1            1 .. 256; the ground mesh in n x n tiles (at most
+//                                              resolution - 1 without a heightmap)
 //   }
 //   species        REQUIRED array of >= 1 {
 //     name               string REQUIRED, non-empty, unique among species
 //     generator          string     "broadleaf"  one of k_tree_generators
+//     model              file path  none         a glTF file (.gltf or .glb) drawn instead of
+//                                                the generator's plant
 //     height_m           number     12           0.1 .. 150
 //     reduced_distance_m number     60           0 .. 1000000; the reduced mesh is drawn beyond it
 //     far_distance_m     number     200          0 .. 1000000; the far mesh is drawn beyond it;
@@ -34,14 +44,23 @@
 //                                                must be >= far_distance_m
 //   }
 //   populations    REQUIRED array of >= 1 {
-//     species       string REQUIRED  the name of a species
-//     count         integer REQUIRED 1 .. 10000000 plants requested
-//     min_spacing_m number      3           0 .. 1000
-//     scale_min     number      0.8         0.01 .. 100; scale_min <= scale_max
-//     scale_max     number      1.2         0.01 .. 100
-//     area          [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2, size/2];
-//                                     each -1e9 .. 1e9 m, x0 < x1 and z0 < z1
-//     max_slope_deg number      35          0 .. 90
+//     species        string REQUIRED  the name of a species
+//     count          integer REQUIRED 1 .. 10000000 plants requested
+//     min_spacing_m  number     3            0 .. 1000
+//     scale_min      number     0.8          0.01 .. 100; scale_min <= scale_max
+//     scale_max      number     1.2          0.01 .. 100
+//     area           [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2, size/2];
+//                                      each -1e9 .. 1e9 m, x0 < x1 and z0 < z1
+//     max_slope_deg  number     35           0 .. 90
+//     min_altitude_m number     -1e9         -1e9 .. 1e9; no plants where the terrain is lower
+//     max_altitude_m number     1e9          -1e9 .. 1e9; nor higher; must be >= min_altitude_m
+//     placement      string     "poisson"    "poisson" (dart throwing) or "jittered" (grid)
+//     density_map    file path  none         greyscale PNG over the area (white: plants kept,
+//                                            black: none; row 0 at z0); not with density
+//     density {                 none         procedural density (models/density.h)
+//       frequency    number     4            0.01 .. 1000 noise cycles across the area
+//       coverage     number     0.5          0 .. 1 fraction of the area that is dense
+//     }
 //   }
 //   camera {
 //     near_m     number   0.3    0.001 .. 1000
@@ -77,6 +96,10 @@
 //     shadows   boolean  true
 //     exposure  number   1     0.001 .. 1000
 //   }
+//   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (systems/eco_tiles.h)
+//     enabled              boolean  true
+//     max_plants_per_tile  integer  256   1 .. 1000000; a tile holding more is split in four
+//   }
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -88,8 +111,12 @@
 
 namespace sylva {
 
-// The plant generators a species may name (models/tree_generator.h implements each).
-inline constexpr std::array<std::string_view, 2> k_tree_generators = {"broadleaf", "conifer"};
+// The plant generator presets a species may name (models/tree_generator.h implements each).
+inline constexpr std::array<std::string_view, 7> k_tree_generators = {
+    "broadleaf", "broadleaf_hd", "conifer", "shrub", "grass", "flower", "fern"};
+
+// How a population is spread (models/placement.h placement_rules::poisson).
+inline constexpr std::array<std::string_view, 2> k_placement_modes = {"poisson", "jittered"};
 
 struct terrain_settings {
     double size_m = 400.0;
@@ -99,17 +126,27 @@ struct terrain_settings {
     float frequency = 0.008f;  // cycles per metre
     std::uint64_t seed = 7;
     glm::vec3 ground_color{0.32f, 0.30f, 0.18f};
+    std::string heightmap;  // absolute path, empty: noise terrain
+    std::uint32_t tiles_per_side = 1;
     bool operator==(const terrain_settings&) const = default;
 };
 
 struct species_settings {
     std::string name;
     std::string generator = "broadleaf";
+    std::string model;  // absolute path of a glTF file, empty: the generator's plant
     float height_m = 12.0f;
     float reduced_distance_m = 60.0f;
     float far_distance_m = 200.0f;
     float max_distance_m = 1500.0f;
     bool operator==(const species_settings&) const = default;
+};
+
+struct procedural_density_settings {
+    bool enabled = false;  // true when the scenario gives "density"
+    float frequency = 4.0f;
+    float coverage = 0.5f;
+    bool operator==(const procedural_density_settings&) const = default;
 };
 
 struct population_settings {
@@ -122,6 +159,11 @@ struct population_settings {
     // replaces it with the scenario's own terrain extent when "area" is absent.
     std::array<double, 4> area{-200.0, -200.0, 200.0, 200.0};
     float max_slope_deg = 35.0f;
+    float min_altitude_m = -1e9f;
+    float max_altitude_m = 1e9f;
+    std::string placement = "poisson";  // one of k_placement_modes
+    std::string density_map;            // absolute path, empty: none
+    procedural_density_settings density;
     bool operator==(const population_settings&) const = default;
 };
 
@@ -177,6 +219,12 @@ struct render_settings {
     bool operator==(const render_settings&) const = default;
 };
 
+struct eco_tile_settings {
+    bool enabled = true;
+    std::uint32_t max_plants_per_tile = 256;
+    bool operator==(const eco_tile_settings&) const = default;
+};
+
 struct scenario {
     std::string name;
     std::string source;  // the file it came from, or "embedded:scenarios/default.json"
@@ -193,6 +241,7 @@ struct scenario {
     sun_settings sun;
     shadow_settings shadows;
     render_settings render;
+    eco_tile_settings eco_tiles;
     bool operator==(const scenario&) const = default;
 };
 

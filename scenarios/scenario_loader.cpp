@@ -106,14 +106,26 @@ std::array<double, 4> whole_terrain(const terrain_settings& t) {
 
 const field_table<terrain_settings>& terrain_fields() {
     using t = terrain_settings;
-    static const auto table = field_table<t>()
-                                  .number("size_m", &t::size_m, {1.0, 1e5})
-                                  .integer("resolution", &t::resolution, {2, 4097})
-                                  .number("height_m", &t::height_m, {0.0, 1e4})
-                                  .integer("octaves", &t::octaves, {1, 16})
-                                  .number("frequency", &t::frequency, {0.0, 10.0})
-                                  .integer("seed", &t::seed, k_seed)
-                                  .vec3("ground_color", &t::ground_color, {0.0, 1.0});
+    static const auto table =
+        field_table<t>()
+            .number("size_m", &t::size_m, {1.0, 1e5})
+            .integer("resolution", &t::resolution, {2, 4097})
+            .number("height_m", &t::height_m, {0.0, 1e4})
+            .integer("octaves", &t::octaves, {1, 16})
+            .number("frequency", &t::frequency, {0.0, 10.0})
+            .integer("seed", &t::seed, k_seed)
+            .vec3("ground_color", &t::ground_color, {0.0, 1.0})
+            .file_path("heightmap", &t::heightmap)
+            .integer("tiles_per_side", &t::tiles_per_side, {1, 256})
+            .check([](const json_node& n, const t& s) {
+                // A heightmap's resolution is only known when it is read;
+                // terrain_tile_meshes clamps then.
+                if (s.heightmap.empty() && s.tiles_per_side > s.resolution - 1)
+                    n.find("tiles_per_side")
+                        ->fail("must be at most resolution - 1 (" +
+                               std::to_string(s.resolution - 1) +
+                               "): a tile holds at least one grid cell");
+            });
     return table;
 }
 
@@ -124,6 +136,7 @@ const field_table<species_settings>& species_fields() {
             .text("name", &t::name)
             .required()
             .choice("generator", &t::generator, k_tree_generators)
+            .file_path("model", &t::model)
             .number("height_m", &t::height_m, {0.1, 150.0})
             .number("reduced_distance_m", &t::reduced_distance_m, k_distance_m)
             .number("far_distance_m", &t::far_distance_m, k_distance_m)
@@ -135,6 +148,24 @@ const field_table<species_settings>& species_fields() {
                                s.max_distance_m, false);
             });
     return table;
+}
+
+const field_table<procedural_density_settings>& density_fields() {
+    using t = procedural_density_settings;
+    static const auto table = field_table<t>()
+                                  .number("frequency", &t::frequency, {0.01, 1000.0})
+                                  .number("coverage", &t::coverage, {0.0, 1.0});
+    return table;
+}
+
+// "density" present means procedural density is on; absent, it is off and not written.
+void read_density(const json_node& n, population_settings& p) {
+    density_fields().read(n, p.density);
+    p.density.enabled = true;
+}
+
+void write_density(const population_settings& p, nlohmann::json& j) {
+    if (p.density.enabled) j["density"] = density_fields().write(p.density);
 }
 
 const field_table<population_settings>& population_fields() {
@@ -150,8 +181,17 @@ const field_table<population_settings>& population_fields() {
             .number("scale_max", &t::scale_max, {0.01, 100.0})
             .add("area", read_area, write_area)
             .number("max_slope_deg", &t::max_slope_deg, {0.0, 90.0})
+            .number("min_altitude_m", &t::min_altitude_m, k_coordinate_m)
+            .number("max_altitude_m", &t::max_altitude_m, k_coordinate_m)
+            .choice("placement", &t::placement, k_placement_modes)
+            .file_path("density_map", &t::density_map)
+            .add("density", read_density, write_density)
             .check([](const json_node& n, const t& p) {
                 expect_ordered(n, "scale_min", p.scale_min, "scale_max", p.scale_max, false);
+                expect_ordered(n, "min_altitude_m", p.min_altitude_m, "max_altitude_m",
+                               p.max_altitude_m, false);
+                if (p.density.enabled && !p.density_map.empty())
+                    n.find("density")->fail("give either density_map or density, not both");
             });
     return table;
 }
@@ -258,6 +298,15 @@ const field_table<render_settings>& render_fields() {
     return table;
 }
 
+const field_table<eco_tile_settings>& eco_tile_fields() {
+    using t = eco_tile_settings;
+    static const auto table =
+        field_table<t>()
+            .boolean("enabled", &t::enabled)
+            .integer("max_plants_per_tile", &t::max_plants_per_tile, {1, 1'000'000});
+    return table;
+}
+
 const field_table<scenario>& scenario_fields() {
     using t = scenario;
     static const auto table =
@@ -283,7 +332,8 @@ const field_table<scenario>& scenario_fields() {
             .object("camera", &t::camera, camera_fields())
             .object("sun", &t::sun, sun_fields())
             .object("shadows", &t::shadows, shadow_fields())
-            .object("render", &t::render, render_fields());
+            .object("render", &t::render, render_fields())
+            .object("eco_tiles", &t::eco_tiles, eco_tile_fields());
     return table;
 }
 

@@ -1,11 +1,25 @@
 #pragma once
 // View-frustum and distance culling of plant instances, in parallel chunks: a plant is visible
 // when its bounding sphere touches the camera frustum and it is nearer than its species' draw
-// distance; it may cast shadows when it is within the shadow distance. Writes lod_state only.
+// distance; it may cast shadows when it is within the shadow distance. Writes lod_state.
+//
+// With eco tiles (Deussen 2002 §6.2; systems/eco_tiles.h) the tiles are walked from the roots
+// first: a tile whose box (square and terrain height range grown by the plants' reach) is
+// outside the frustum and beyond every draw and shadow distance is culled with its whole
+// subtree, and only the plants of surviving leaf tiles are tested one by one; the plants of
+// culled tiles get visible = 0 and in_shadow_range = 0 without being looked at. The result for
+// each plant is the same as flat culling would give it whenever its tile survives. Writes
+// tile_visibility for every tile. Without tile entities every plant is tested (flat culling).
+//
+// Precondition with tiles: plant dense index i (the world_transform table's order) is eco tile
+// slot i, i.e. the spawner created plants in eco_tile_tree::order and aligned the plant tables;
+// plants beyond the tiles' ranges are culled flat. Checked per leaf on its first plant.
 #include "components/bounds.h"
 #include "components/camera.h"
 #include "components/lod_state.h"
 #include "components/plant_instance.h"
+#include "components/tile.h"
+#include "components/tile_visibility.h"
 #include "components/transform.h"
 #include "ecs/system.h"
 #include "scenarios/scenario.h"
@@ -20,13 +34,18 @@ struct frustum_planes {
 };
 frustum_planes extract_frustum_planes(const glm::mat4& view_projection);
 bool sphere_in_frustum(const frustum_planes& f, glm::vec3 center, float radius);
+// Conservative box test: false only when the box is wholly outside one plane.
+bool box_in_frustum(const frustum_planes& f, glm::vec3 lo, glm::vec3 hi);
+
+// Leaf tiles per parallel chunk of the plant pass (fixed: results never depend on threads).
+inline constexpr std::size_t k_cull_tile_chunk = 8;
 
 struct cull_system {
     static constexpr std::string_view k_name = "cull";
     static constexpr ecs::phase k_phase = ecs::phase::cull;
-    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, species_library,
+    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, tile, species_library,
                              shadow_settings>;
-    using writes = ecs::writes<lod_state>;
+    using writes = ecs::writes<lod_state, tile_visibility>;
     static void run(ecs::system_context<cull_system>& ctx);
 };
 

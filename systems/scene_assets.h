@@ -47,7 +47,7 @@ struct scene_assets {
     std::vector<image_rgba8> leaf_textures;  // one layer per species, same size
     std::vector<image_rgba8> bark_textures;
     image_rgba8 ground_texture;
-    std::uint16_t terrain_mesh = 0;
+    std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;
     heightfield terrain;
     species_library library;

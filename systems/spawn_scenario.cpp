@@ -13,14 +13,16 @@
 #include "components/point_prefix.h"
 #include "components/sun.h"
 #include "components/transform.h"
+#include "models/density.h"
 #include "models/placement.h"
 #include "models/random.h"
 #include "models/textures.h"
-#include "models/tree_generator.h"
 #include "systems/draw_list.h"
+#include "systems/eco_tiles.h"
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/playback.h"
+#include "systems/species_models.h"
 
 namespace sylva {
 namespace {
@@ -39,6 +41,16 @@ image_rgba8 tint(image_rgba8 image, glm::vec3 color) {
     return image;
 }
 
+void scale_mesh(mesh_data& mesh, float scale) {
+    for (auto& v : mesh.vertices) v.position *= scale;
+    for (auto& leaf : mesh.leaves) {
+        leaf.center *= scale;
+        leaf.size *= scale;
+    }
+    mesh.bounds_min *= scale;
+    mesh.bounds_max *= scale;
+}
+
 // Bounding sphere of a mesh standing on its origin: centre on the y axis at mid height.
 void fit_bounds(const mesh_data& mesh, species_entry& entry) {
     entry.center_height = 0.5f * (mesh.bounds_min.y + mesh.bounds_max.y);
@@ -48,11 +60,22 @@ void fit_bounds(const mesh_data& mesh, species_entry& entry) {
     entry.bounding_radius = radius;
 }
 
-void add_species(scene_assets& assets, const scenario& s, std::size_t index) {
+void add_mesh(scene_assets& assets, mesh_data mesh, representation drawn_as, std::uint16_t& id,
+              std::uint32_t& triangles) {
+    id = std::uint16_t(assets.meshes.size());
+    triangles = std::uint32_t(mesh.triangle_count());
+    assets.library.meshes.push_back({triangles, drawn_as});
+    assets.meshes.push_back(std::move(mesh));
+}
+
+void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache) {
     const species_settings& settings = s.species[index];
-    tree_params params = tree_preset(settings.generator);
-    params.height_m = settings.height_m;
     const std::uint64_t seed = hash_combine(s.seed, std::uint64_t(index), 0x5eed5eedULL);
+    plant_model model = load_species_model(settings, seed, cache);
+    // Every species is scaled to the scenario's height_m, generated or imported alike.
+    const float natural_height = model.lods[0].bounds_max.y;
+    const float scale = settings.height_m / std::max(natural_height, 1e-3f);
+    for (auto& lod : model.lods) scale_mesh(lod, scale);
 
     species_entry entry;
     entry.name = settings.name;
@@ -60,40 +83,32 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index) {
     entry.far_distance_m = settings.far_distance_m;
     entry.max_distance_m = settings.max_distance_m;
     entry.texture_layer = float(index);
-    mesh_data full = generate_tree(params, seed, tree_detail::full);
-    mesh_data reduced = generate_tree(params, seed, tree_detail::reduced);
-    mesh_data far = generate_tree(params, seed, tree_detail::far);
-    fit_bounds(full, entry);
-    entry.triangles_full = std::uint32_t(full.triangle_count());
-    entry.triangles_reduced = std::uint32_t(reduced.triangle_count());
-    entry.triangles_far = std::uint32_t(far.triangle_count());
-    entry.mesh_full = std::uint16_t(assets.meshes.size());
-    assets.library.meshes.push_back({entry.triangles_full, representation::mesh_full});
-    assets.meshes.push_back(std::move(full));
-    entry.mesh_reduced = std::uint16_t(assets.meshes.size());
-    assets.library.meshes.push_back({entry.triangles_reduced, representation::mesh_reduced});
-    assets.meshes.push_back(std::move(reduced));
-    entry.mesh_far = std::uint16_t(assets.meshes.size());
-    assets.library.meshes.push_back({entry.triangles_far, representation::mesh_far});
-    assets.meshes.push_back(std::move(far));
-    assets.leaf_textures.push_back(generate_leaf_texture(settings.generator, k_texture_size));
-    assets.bark_textures.push_back(generate_bark_texture(settings.generator, k_texture_size));
+    fit_bounds(model.lods[0], entry);
+    add_mesh(assets, std::move(model.lods[0]), representation::mesh_full, entry.mesh_full, entry.triangles_full);
+    add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
+             entry.triangles_reduced);
+    add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
+    assets.leaf_textures.push_back(std::move(model.leaf_texture));
+    assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.library.species.push_back(std::move(entry));
 }
 
 }  // namespace
 
-scene_assets build_scene_assets(const scenario& s) {
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache) {
     scene_assets assets;
     const terrain_settings& t = s.terrain;
-    assets.terrain = generate_terrain(t.size_m, t.resolution, t.height_m, t.octaves, t.frequency, t.seed);
-    assets.terrain_mesh = std::uint16_t(assets.meshes.size());
+    assets.terrain = t.heightmap.empty()
+                         ? generate_terrain(t.size_m, t.resolution, t.height_m, t.octaves, t.frequency, t.seed)
+                         : load_heightmap(t.heightmap, t.size_m, t.height_m);
     // uv in metres; the ground shader divides by ground_uv_scale_m (the texture's size on the ground).
-    assets.meshes.push_back(terrain_mesh(assets.terrain, 1.0f));
-    assets.library.meshes.push_back(
-        {std::uint32_t(assets.meshes.back().triangle_count()), representation::none});
+    for (mesh_data& tile : terrain_tile_meshes(assets.terrain, t.tiles_per_side, 1.0f)) {
+        assets.terrain_meshes.push_back(std::uint16_t(assets.meshes.size()));
+        assets.library.meshes.push_back({std::uint32_t(tile.triangle_count()), representation::none});
+        assets.meshes.push_back(std::move(tile));
+    }
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
-    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i);
+    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache);
     return assets;
 }
 
@@ -114,36 +129,79 @@ std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const height
 
 namespace {
 
-std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_assets& assets) {
-    std::size_t spawned = 0;
+struct planned_plant {
+    placement where;
+    std::size_t species = 0;
+};
+
+std::size_t species_index_of(const scenario& s, const std::string& name) {
+    return std::size_t(std::find_if(s.species.begin(), s.species.end(),
+                                    [&](const species_settings& sp) { return sp.name == name; }) -
+                       s.species.begin());
+}
+
+// Every population's placements, in population order (deterministic for the scenario seed).
+std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& assets) {
+    std::vector<planned_plant> plants;
     for (std::size_t p = 0; p < s.populations.size(); ++p) {
         const population_settings& pop = s.populations[p];
-        const auto species_index = std::size_t(
-            std::find_if(s.species.begin(), s.species.end(),
-                         [&](const species_settings& sp) { return sp.name == pop.species; }) -
-            s.species.begin());
-        const species_entry& species = assets.library.species.at(species_index);
-        const auto placements = place_population(assets.terrain, pop.area, pop.count, pop.min_spacing_m,
-                                                 pop.scale_min, pop.scale_max, pop.max_slope_deg,
-                                                 hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
-        if (placements.size() < pop.count)
-            spdlog::warn("population {} ({}): placed {} of {} plants (no room at {} m spacing)", p,
-                         pop.species, placements.size(), pop.count, pop.min_spacing_m);
-        for (const auto& pl : placements) {
-            const ecs::entity e = world.create();
-            const double y = assets.terrain.height_at(pl.xz.x, pl.xz.y);
-            world.emplace<world_transform>(
-                e, {glm::dvec3(pl.xz.x, y, pl.xz.y) + s.world_offset, pl.yaw, pl.scale});
-            world.emplace<bounds>(e, {species.bounding_radius * pl.scale, species.center_height * pl.scale});
-            world.emplace<plant_instance>(e, {static_cast<species_id>(species_index), pl.tint, pl.seed});
-            world.emplace<lod_state>(e);
-            world.emplace<point_prefix>(e);
-            world.emplace<fade_alpha>(e);
-            ++spawned;
+        density_map density;
+        if (!pop.density_map.empty())
+            density = load_density_map(pop.density_map);
+        else if (pop.density.enabled)
+            density = procedural_density(hash_combine(s.seed, std::uint64_t(p), 0xde45ULL),
+                                         pop.density.frequency, pop.density.coverage);
+        const placement_rules rules{pop.area,          pop.count,          pop.min_spacing_m,
+                                    pop.scale_min,     pop.scale_max,      pop.max_slope_deg,
+                                    pop.min_altitude_m, pop.max_altitude_m, pop.placement == "poisson",
+                                    density.values.empty() ? nullptr : &density};
+        const auto placed = place_population(assets.terrain, rules, hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
+        if (placed.size() < pop.count)
+            spdlog::warn("population {} ({}): placed {} of {} plants (spacing, slope, altitude or density "
+                         "left no room)",
+                         p, pop.species, placed.size(), pop.count);
+        const std::size_t species = species_index_of(s, pop.species);
+        for (const auto& where : placed) plants.push_back({where, species});
+    }
+    return plants;
+}
+
+void create_plant(ecs::world& world, const scenario& s, const scene_assets& assets, const planned_plant& plant) {
+    const species_entry& species = assets.library.species.at(plant.species);
+    const placement& pl = plant.where;
+    const ecs::entity e = world.create();
+    const double y = assets.terrain.height_at(pl.xz.x, pl.xz.y);
+    world.emplace<world_transform>(e, {glm::dvec3(pl.xz.x, y, pl.xz.y) + s.world_offset, pl.yaw, pl.scale});
+    world.emplace<bounds>(e, {species.bounding_radius * pl.scale, species.center_height * pl.scale});
+    world.emplace<plant_instance>(e, {static_cast<species_id>(plant.species), pl.tint, pl.seed});
+    world.emplace<lod_state>(e);
+    world.emplace<point_prefix>(e);
+    world.emplace<fade_alpha>(e);
+}
+
+// Deussen 2002 §6.2: with eco tiles on, plants are created tile by tile (each tile's plants a
+// contiguous range of the component tables) and the tiles become entities that culling walks.
+std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_assets& assets) {
+    const std::vector<planned_plant> plants = plan_plants(s, assets);
+    if (!s.eco_tiles.enabled) {
+        for (const auto& plant : plants) create_plant(world, s, assets, plant);
+    } else {
+        std::vector<glm::dvec2> xz;
+        xz.reserve(plants.size());
+        for (const auto& plant : plants) xz.push_back(plant.where.xz);
+        const double half = 0.5 * s.terrain.size_m;
+        const eco_tile_tree tree = build_eco_tiles(xz, {-half, -half, half, half}, s.eco_tiles.max_plants_per_tile);
+        for (std::uint32_t i : tree.order) create_plant(world, s, assets, plants[i]);
+        eco_tile_extent extent{0.0f, 1.0f, s.world_offset};
+        for (const auto& pop : s.populations) {
+            const species_entry& sp = assets.library.species.at(species_index_of(s, pop.species));
+            extent.reach_m = std::max(extent.reach_m, (sp.center_height + sp.bounding_radius) * pop.scale_max);
+            extent.max_scale = std::max(extent.max_scale, pop.scale_max);
         }
+        create_tile_entities(world, tree, assets.terrain, extent);
     }
     world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
-    return spawned;
+    return plants.size();
 }
 
 void spawn_viewer_and_sky(ecs::world& world, const scenario& s) {

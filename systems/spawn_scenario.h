@@ -3,12 +3,14 @@
 // (build_scene_assets, CPU only) and fills an ECS world with the camera, the sun and one entity
 // per plant plus the resources the per-frame systems read (spawn_scenario).
 #include "ecs/world.h"
+#include "models/bake_cache.h"
 #include "scenarios/scenario.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
 
-scene_assets build_scene_assets(const scenario& s);
+// `cache` may be null: species models are then generated or imported every time.
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache);
 
 struct spawn_report {
     std::size_t plants = 0;

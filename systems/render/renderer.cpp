@@ -7,6 +7,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <numbers>
 
+#include "systems/build_draw_list_system.h"
+#include "systems/cull_system.h"
 #include "systems/lighting/sky_model.h"
 #include "systems/render/frame_uniforms.h"
 #include "systems/render/textures.h"
@@ -59,13 +61,18 @@ sky_model sky_of(const frame_view& view) {
 
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
     : m_settings(settings), m_ring(std::size_t(4) << 20), m_target(settings.width, settings.height),
-      m_terrain_mesh(assets.terrain_mesh), m_ground_uv_scale(assets.ground_uv_scale_m) {
+      m_ground_uv_scale(assets.ground_uv_scale_m) {
+    for (std::uint16_t id : assets.terrain_meshes) {
+        const mesh_data& tile = assets.meshes.at(id);
+        const glm::vec3 center = 0.5f * (tile.bounds_min + tile.bounds_max);
+        m_terrain_tiles.push_back({id, center, glm::length(tile.bounds_max - center)});
+    }
     for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
         std::uint16_t id = m_meshes.add(assets.meshes[i]);
         if (id != i) throw std::logic_error("renderer: mesh ids must follow scene_assets order");
     }
     setup_instance_attributes(m_meshes.vertex_array());
-    m_leaf_textures = make_texture_array(assets.leaf_textures, false);
+    m_leaf_textures = make_texture_array(assets.leaf_textures, false, true);
     m_bark_textures = make_texture_array(assets.bark_textures, true);
     m_ground_texture = make_texture_array(std::span(&assets.ground_texture, 1), true);
     if (settings.shadows)
@@ -150,7 +157,8 @@ void renderer::write_instances(const frame_view& view) {
     m_frame_upload_bytes += bytes;
 }
 
-void renderer::write_commands(const draw_list& draws) {
+void renderer::write_commands(const frame_view& view) {
+    const draw_list& draws = *view.draws;
     // Group commands by (pass, material): each group is one glMultiDrawElementsIndirect.
     static_assert(sizeof(indirect_command) == 20);
     auto& groups = m_command_groups;
@@ -164,10 +172,21 @@ void renderer::write_commands(const draw_list& draws) {
         if (is_shadow_pass(batch.pass) && int(batch.pass) >= m_cascade_count) continue;
         add(batch.pass, m_meshes.get(batch.mesh), batch.first_instance, batch.instance_count);
     }
+    // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
     const auto terrain_instance = std::uint32_t(draws.instances.size());
-    add(render_pass::opaque, m_meshes.get(m_terrain_mesh), terrain_instance, 1);
+    const camera& cam = *view.view_camera;
+    const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
+    std::array<cascade_bounds, k_max_cascades> cascades{};
     for (int c = 0; c < m_cascade_count; ++c)
-        add(shadow_pass(c), m_meshes.get(m_terrain_mesh), terrain_instance, 1);
+        cascades[std::size_t(c)] = make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
+    for (const terrain_tile& tile : m_terrain_tiles) {
+        const glm::vec3 center = view.terrain_position + tile.center;
+        if (sphere_in_frustum(frustum, center, tile.radius))
+            add(render_pass::opaque, m_meshes.get(tile.mesh), terrain_instance, 1);
+        for (int c = 0; c < m_cascade_count; ++c)
+            if (sphere_overlaps_cascade(cascades[std::size_t(c)], center, tile.radius))
+                add(shadow_pass(c), m_meshes.get(tile.mesh), terrain_instance, 1);
+    }
 
     m_indirect_commands = 0;
     for (std::size_t g = 0; g < k_command_groups; ++g) {
@@ -255,7 +274,7 @@ void renderer::render(const frame_view& view) {
     m_frame_upload_bytes = 0;
     m_draw_calls = 0;
     const auto& draws = *view.draws;
-    std::size_t commands = (draws.batches.size() + 8) * 3;
+    std::size_t commands = (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * 3;
     std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
                                (draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
                                commands * sizeof(indirect_command) + 16 * 16;
@@ -263,7 +282,7 @@ void renderer::render(const frame_view& view) {
     update_sky_texture(view);
     write_uniforms(view);
     write_instances(view);
-    write_commands(draws);
+    write_commands(view);
     m_record_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     glBindVertexArray(m_meshes.vertex_array());

@@ -92,7 +92,7 @@ private:
     void update_sky_texture(const frame_view& view);
     void write_uniforms(const frame_view& view);
     void write_instances(const frame_view& view);
-    void write_commands(const draw_list& draws);
+    void write_commands(const frame_view& view);
     void draw_group(const command_range& range, GLuint program, bool cull_back_faces);
     void draw_shadow_cascades();
     void draw_opaque();
@@ -112,7 +112,12 @@ private:
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::uint64_t m_sky_revision = 0;
-    std::uint16_t m_terrain_mesh = 0;
+    struct terrain_tile {
+        std::uint16_t mesh = 0;
+        glm::vec3 center{0.0f};  // terrain-local
+        float radius = 0.0f;
+    };
+    std::vector<terrain_tile> m_terrain_tiles;
     float m_ground_uv_scale = 4.0f;
     std::array<pass_commands, static_cast<int>(render_pass::count)> m_commands{};
     // Commands per (pass, material) before they are copied to the ring; kept to avoid

@@ -6,7 +6,44 @@
 
 namespace sylva::render {
 
-gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat) {
+image_rgba8 downsample(const image_rgba8& image) {
+    image_rgba8 out;
+    out.width = std::max(1u, image.width / 2);
+    out.height = std::max(1u, image.height / 2);
+    out.texels.resize(std::size_t(out.width) * out.height * 4);
+    for (std::uint32_t y = 0; y < out.height; ++y)
+        for (std::uint32_t x = 0; x < out.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                unsigned sum = 0;
+                for (std::uint32_t dy = 0; dy < 2; ++dy)
+                    for (std::uint32_t dx = 0; dx < 2; ++dx)
+                        sum += image.at(std::min(2 * x + dx, image.width - 1),
+                                        std::min(2 * y + dy, image.height - 1))[c];
+                out.at(x, y)[c] = std::uint8_t((sum + 2) / 4);
+            }
+    return out;
+}
+
+float alpha_coverage(const image_rgba8& image, float scale) {
+    std::size_t passing = 0;
+    const std::size_t texels = std::size_t(image.width) * image.height;
+    for (std::size_t i = 0; i < texels; ++i)
+        passing += float(image.texels[i * 4 + 3]) * scale >= 127.5f ? 1 : 0;
+    return texels ? float(passing) / float(texels) : 0.0f;
+}
+
+void preserve_alpha_coverage(image_rgba8& level, float target) {
+    float low = 0.0f, high = 4.0f;
+    for (int i = 0; i < 12; ++i) {  // coverage grows with the scale
+        const float mid = 0.5f * (low + high);
+        (alpha_coverage(level, mid) < target ? low : high) = mid;
+    }
+    const float scale = high;
+    for (std::size_t i = 3; i < level.texels.size(); i += 4)
+        level.texels[i] = std::uint8_t(std::min(255.0f, float(level.texels[i]) * scale + 0.5f));
+}
+
+gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, bool alpha_tested) {
     if (layers.empty()) throw std::invalid_argument("make_texture_array: no layers");
     const auto w = layers[0].width;
     const auto h = layers[0].height;
@@ -16,10 +53,22 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat) 
     gl_texture texture = make_texture(GL_TEXTURE_2D_ARRAY);
     const int levels = std::bit_width(std::max(w, h));
     glTextureStorage3D(texture.id(), levels, GL_RGBA8, GLsizei(w), GLsizei(h), GLsizei(layers.size()));
-    for (std::size_t i = 0; i < layers.size(); ++i)
+    for (std::size_t i = 0; i < layers.size(); ++i) {
         glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(i), GLsizei(w), GLsizei(h), 1, GL_RGBA,
                             GL_UNSIGNED_BYTE, layers[i].texels.data());
-    glGenerateTextureMipmap(texture.id());
+        if (!alpha_tested) continue;
+        // Mips built here, each from the previous one, with the alpha-test coverage kept.
+        const float coverage = alpha_coverage(layers[i]);
+        image_rgba8 level = layers[i];
+        for (int l = 1; l < levels; ++l) {
+            level = downsample(level);
+            image_rgba8 kept = level;
+            preserve_alpha_coverage(kept, coverage);
+            glTextureSubImage3D(texture.id(), l, 0, 0, GLint(i), GLsizei(kept.width), GLsizei(kept.height),
+                                1, GL_RGBA, GL_UNSIGNED_BYTE, kept.texels.data());
+        }
+    }
+    if (!alpha_tested) glGenerateTextureMipmap(texture.id());
     const GLint wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
     glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, wrap);
     glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, wrap);

@@ -8,8 +8,18 @@
 
 namespace sylva::render {
 
-// Every image must have the same size; throws std::invalid_argument otherwise.
-gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat);
+// Every image must have the same size; throws std::invalid_argument otherwise. With
+// `alpha_tested`, mip levels keep the alpha-test coverage of level 0 (see below).
+gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, bool alpha_tested = false);
+
+// The next mip level: a 2x2 box filter (sizes halve, never below 1).
+image_rgba8 downsample(const image_rgba8& image);
+// Fraction of texels whose alpha passes the test alpha >= 0.5 after scaling alpha by `scale`.
+float alpha_coverage(const image_rgba8& image, float scale = 1.0f);
+// Castaño 2010, "Computing alpha mipmaps": averaging alpha in smaller mips pushes cut-out
+// foliage below the alpha-test threshold, so leaves thin out and vanish with distance. Scales
+// the level's alpha (binary search) so its coverage matches `target` coverage.
+void preserve_alpha_coverage(image_rgba8& level, float target);
 // A linear RGB float texture (sky radiance), clamped vertically, repeating around the horizon.
 gl_texture make_float_texture(int width, int height, const float* rgb);
 

@@ -59,7 +59,7 @@ TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
     scene_assets assets;
     assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
     assets.meshes.push_back(horizontal_quad(2.0f, 5.0f, material_kind::leaf));
-    assets.terrain_mesh = 0;
+    assets.terrain_meshes = {0};
     assets.leaf_textures = {half_transparent_leaf()};
     assets.bark_textures = {solid(100)};
     assets.ground_texture = solid(160);

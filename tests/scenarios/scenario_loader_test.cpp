@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
@@ -289,16 +290,23 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
     expect_error(set(minimal(), "/sead", 4),
                  {"/sead",
                   "unknown field; expected one of: name, seed, resolution, frames, fps, "
-                  "world_offset, terrain, species, populations, camera, sun, shadows, render",
+                  "world_offset, terrain, species, populations, camera, sun, shadows, render, "
+                  "eco_tiles",
                   "4"});
 }
 
 TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
     const std::pair<std::string, std::string> cases[] = {
-        {"/terrain/size", "size_m, resolution, height_m, octaves, frequency, seed, ground_color"},
-        {"/species/0/heigth_m", "name, generator, height_m, reduced_distance_m, far_distance_m, max_distance_m"},
+        {"/terrain/size",
+         "size_m, resolution, height_m, octaves, frequency, seed, ground_color, heightmap, "
+         "tiles_per_side"},
+        {"/species/0/heigth_m",
+         "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m"},
         {"/populations/0/spacing",
-         "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg"},
+         "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
+         "min_altitude_m, max_altitude_m, placement, density_map, density"},
+        {"/populations/0/density/octaves", "frequency, coverage"},
+        {"/eco_tiles/depth", "enabled, max_plants_per_tile"},
         {"/camera/fov", "near_m, far_m, lod_scale, keyframes"},
         {"/camera/keyframes/0/fov", "t, position, target, fov_deg, relative_to_terrain"},
         {"/sun/elevation", "keyframes, intensity, turbidity, sky_intensity"},
@@ -318,7 +326,7 @@ TEST(scenario_loader, unknown_field_path_escapes_slash_and_tilde) {
     j["terrain"]["a/b~c"] = 1;
     expect_error(j, {"/terrain/a~1b~0c",
                      "unknown field; expected one of: size_m, resolution, height_m, octaves, "
-                     "frequency, seed, ground_color",
+                     "frequency, seed, ground_color, heightmap, tiles_per_side",
                      "1"});
 }
 
@@ -332,7 +340,10 @@ TEST(scenario_loader, wrong_types_are_named) {
         {"/frames", "expected an integer from 1 to 1000000", "\"abc\""},
         {"/fps", "expected a number", "\"abc\""},
         {"/render/shadows", "expected true or false", "\"abc\""},
-        {"/species/0/generator", "unknown value; expected one of: broadleaf, conifer", "\"abc\""},
+        {"/species/0/generator",
+         "unknown value; expected one of: broadleaf, broadleaf_hd, conifer, shrub, grass, "
+         "flower, fern",
+         "\"abc\""},
         {"/name", "expected a string", "7"},
     };
     for (const auto& c : cases) {
@@ -414,6 +425,14 @@ TEST(scenario_loader, values_at_the_limits_load_and_just_outside_are_rejected) {
         {"/shadows/split_lambda", 0, 1, -0.01, 1.01, "out of range; expected a number from 0 to 1"},
         {"/render/exposure", 0.001, 1000, 0.0009, 1001,
          "out of range; expected a number from 0.001 to 1000"},
+        {"/eco_tiles/max_plants_per_tile", 1, 1000000, 0, 1000001,
+         "out of range; expected an integer from 1 to 1000000"},
+        {"/populations/0/density/coverage", 0, 1, -0.01, 1.01,
+         "out of range; expected a number from 0 to 1"},
+        {"/populations/0/density/frequency", 0.01, 1000, 0.009, 1001,
+         "out of range; expected a number from 0.01 to 1000"},
+        {"/populations/0/min_altitude_m", -1e9, 1e9, -1.5e9, 1.5e9,
+         "out of range; expected a number from -1000000000 to 1000000000"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.pointer);
@@ -555,10 +574,143 @@ TEST(scenario_loader, only_the_first_problem_is_reported) {
     // Unknown keys are checked before any field; fields in their documented order.
     expect_error(j, {"/bogus",
                      "unknown field; expected one of: name, seed, resolution, frames, fps, "
-                     "world_offset, terrain, species, populations, camera, sun, shadows, render",
+                     "world_offset, terrain, species, populations, camera, sun, shadows, render, "
+                     "eco_tiles",
                      "1"});
     j.erase("bogus");
     expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
+}
+
+// --- terrain, placement and eco tile fields ----------------------------------------------
+
+// A scenario file in a fresh folder next to the (empty) files its paths name; only existence
+// is checked at load time.
+class scenario_folder {
+public:
+    explicit scenario_folder(std::string_view name)
+        : m_root(std::filesystem::temp_directory_path() / ("sylva_scenario_" + std::string(name))) {
+        std::filesystem::remove_all(m_root);
+        std::filesystem::create_directories(m_root / "maps");
+        for (const char* file : {"maps/hills.png", "maps/meadow.png", "oak.glb"})
+            std::ofstream(m_root / file) << "x";
+    }
+    ~scenario_folder() { std::filesystem::remove_all(m_root); }
+    const std::filesystem::path& root() const { return m_root; }
+    scenario load(const json& j) const {
+        std::ofstream(m_root / "s.json") << j.dump();
+        return load_scenario_file(m_root / "s.json");
+    }
+
+private:
+    std::filesystem::path m_root;
+};
+
+TEST(scenario_loader, new_fields_default_to_todays_behaviour) {
+    const scenario s = load(minimal());
+    EXPECT_TRUE(s.terrain.heightmap.empty());
+    EXPECT_EQ(s.terrain.tiles_per_side, 1u);
+    EXPECT_TRUE(s.species[0].model.empty());
+    const population_settings& p = s.populations[0];
+    EXPECT_EQ(p.placement, "poisson");
+    EXPECT_TRUE(p.density_map.empty());
+    EXPECT_FALSE(p.density.enabled);
+    EXPECT_EQ(p.min_altitude_m, -1e9f);
+    EXPECT_EQ(p.max_altitude_m, 1e9f);
+    EXPECT_TRUE(s.eco_tiles.enabled);
+    EXPECT_EQ(s.eco_tiles.max_plants_per_tile, 256u);
+}
+
+TEST(scenario_loader, paths_are_resolved_against_the_scenario_folder_and_stored_absolute) {
+    const scenario_folder folder("paths");
+    json j = set(minimal(), "/terrain/heightmap", "maps/hills.png");
+    j["species"][0]["model"] = "./oak.glb";
+    j["populations"][0]["density_map"] = "maps/../maps/meadow.png";
+    const scenario s = folder.load(j);
+    const auto root = std::filesystem::absolute(folder.root()).lexically_normal();
+    EXPECT_EQ(s.terrain.heightmap, (root / "maps/hills.png").string());
+    EXPECT_EQ(s.species[0].model, (root / "oak.glb").string());
+    EXPECT_EQ(s.populations[0].density_map, (root / "maps/meadow.png").string());
+    // Absolute paths load as they are, so the text written back loads the same scenario.
+    const scenario again = load_scenario_text(scenario_to_json_text(s), "elsewhere/x.json");
+    EXPECT_EQ(again.terrain, s.terrain);
+    EXPECT_EQ(again.species, s.species);
+    EXPECT_EQ(again.populations, s.populations);
+}
+
+TEST(scenario_loader, missing_files_are_named_at_their_json_path) {
+    const scenario_folder folder("missing");
+    for (const std::string pointer :
+         {"/terrain/heightmap", "/species/0/model", "/populations/0/density_map"}) {
+        SCOPED_TRACE(pointer);
+        try {
+            folder.load(set(minimal(), pointer, "nope.glb"));
+            ADD_FAILURE() << "loaded";
+        } catch (const scenario_error& e) {
+            EXPECT_EQ(e.json_path(), pointer);
+            EXPECT_EQ(e.problem(),
+                      "file not found: " +
+                          (std::filesystem::absolute(folder.root()) / "nope.glb").string());
+        }
+    }
+}
+
+TEST(scenario_loader, placement_density_and_altitude_fields_load_and_round_trip) {
+    json j = minimal();
+    j["populations"][0]["placement"] = "jittered";
+    j["populations"][0]["density"] = {{"frequency", 8}, {"coverage", 0.25}};
+    j["populations"][0]["min_altitude_m"] = -5;
+    j["populations"][0]["max_altitude_m"] = 12.5;
+    j["terrain"]["tiles_per_side"] = 8;
+    j["eco_tiles"] = {{"enabled", false}, {"max_plants_per_tile", 64}};
+    const scenario s = load(j);
+    const population_settings& p = s.populations[0];
+    EXPECT_EQ(p.placement, "jittered");
+    EXPECT_TRUE(p.density.enabled);
+    EXPECT_EQ(p.density.frequency, 8.0f);
+    EXPECT_EQ(p.density.coverage, 0.25f);
+    EXPECT_EQ(p.min_altitude_m, -5.0f);
+    EXPECT_EQ(p.max_altitude_m, 12.5f);
+    EXPECT_EQ(s.terrain.tiles_per_side, 8u);
+    EXPECT_FALSE(s.eco_tiles.enabled);
+    EXPECT_EQ(s.eco_tiles.max_plants_per_tile, 64u);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+}
+
+TEST(scenario_loader, placement_mode_and_generator_presets_are_choices) {
+    expect_error(set(minimal(), "/populations/0/placement", "grid"),
+                 {"/populations/0/placement", "unknown value; expected one of: poisson, jittered",
+                  "\"grid\""});
+    for (const auto generator : k_tree_generators)
+        EXPECT_EQ(load(set(minimal(), "/species/0/generator", generator)).species[0].generator,
+                  generator);
+}
+
+TEST(scenario_loader, density_map_and_procedural_density_exclude_each_other) {
+    const scenario_folder folder("both");
+    json j = set(minimal(), "/populations/0/density_map", "maps/meadow.png");
+    j["populations"][0]["density"] = {{"coverage", 0.5}};
+    try {
+        folder.load(j);
+        ADD_FAILURE() << "loaded";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), "/populations/0/density");
+        EXPECT_EQ(e.problem(), "give either density_map or density, not both");
+    }
+}
+
+TEST(scenario_loader, altitudes_must_be_ordered_and_tiles_fit_the_grid) {
+    json j = set(minimal(), "/populations/0/min_altitude_m", 10);
+    j["populations"][0]["max_altitude_m"] = 5;
+    expect_error(j, {"/populations/0/min_altitude_m", "must be at most max_altitude_m (5)", "10"});
+    expect_error(set(set(minimal(), "/terrain/resolution", 9), "/terrain/tiles_per_side", 9),
+                 {"/terrain/tiles_per_side",
+                  "must be at most resolution - 1 (8): a tile holds at least one grid cell", "9"});
+    EXPECT_EQ(load(set(set(minimal(), "/terrain/resolution", 4097), "/terrain/tiles_per_side", 256))
+                  .terrain.tiles_per_side,
+              256u);
+    expect_error(
+        set(set(minimal(), "/terrain/resolution", 4097), "/terrain/tiles_per_side", 257),
+        {"/terrain/tiles_per_side", "out of range; expected an integer from 1 to 256", "257"});
 }
 
 }  // namespace

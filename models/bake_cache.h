@@ -1,0 +1,108 @@
+#pragma once
+// The bake cache: derived data (plant models now; billboard clouds, PRT coefficients and the
+// other bakes later) stored on disk under a key that hashes every input and setting that
+// produced it, so a bake is reused exactly when nothing it depends on changed. Entries are
+// written atomically (temporary file, then rename): an interrupted bake never leaves a
+// half-written entry that a later run would trust.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sylva {
+
+// FNV-1a 64 over bytes; chain calls through `seed` to hash several inputs.
+std::uint64_t hash_bytes(std::span<const std::byte> bytes, std::uint64_t seed = 0xcbf29ce484222325ULL);
+std::uint64_t hash_string(std::string_view text, std::uint64_t seed = 0xcbf29ce484222325ULL);
+// The file's contents (not its name or time): moving or touching a model keeps its bakes.
+std::uint64_t hash_file(const std::filesystem::path& path, std::uint64_t seed = 0xcbf29ce484222325ULL);
+
+class bake_cache {
+public:
+    // `root` empty: $SYLVA_CACHE_DIR, else $XDG_CACHE_HOME/sylva, else ~/.cache/sylva.
+    explicit bake_cache(std::filesystem::path root = {});
+
+    // The stored bytes of (kind, key), or nothing when absent or unreadable.
+    std::optional<std::vector<std::byte>> load(std::string_view kind, std::uint64_t key);
+    // Stores atomically; throws std::runtime_error naming the path when the disk refuses.
+    void store(std::string_view kind, std::uint64_t key, std::span<const std::byte> bytes);
+    // load, or produce + store on a miss.
+    std::vector<std::byte> get_or_bake(std::string_view kind, std::uint64_t key,
+                                       const std::function<std::vector<std::byte>()>& bake);
+
+    std::filesystem::path path_of(std::string_view kind, std::uint64_t key) const;
+    const std::filesystem::path& root() const { return m_root; }
+    std::size_t hits() const { return m_hits; }
+    std::size_t misses() const { return m_misses; }
+
+private:
+    std::filesystem::path m_root;
+    std::size_t m_hits = 0;
+    std::size_t m_misses = 0;
+};
+
+// Little-endian binary streams of plain data for cache entries. Readers check bounds and
+// throw std::runtime_error on a truncated or malformed entry (the caller re-bakes).
+class binary_writer {
+public:
+    template <class T>
+    void pod(const T& value) {
+        const auto* p = reinterpret_cast<const std::byte*>(&value);
+        m_bytes.insert(m_bytes.end(), p, p + sizeof(T));
+    }
+    template <class T>
+    void array(const std::vector<T>& values) {
+        pod(std::uint64_t(values.size()));
+        const auto* p = reinterpret_cast<const std::byte*>(values.data());
+        m_bytes.insert(m_bytes.end(), p, p + values.size() * sizeof(T));
+    }
+    void text(std::string_view s) {
+        pod(std::uint64_t(s.size()));
+        const auto* p = reinterpret_cast<const std::byte*>(s.data());
+        m_bytes.insert(m_bytes.end(), p, p + s.size());
+    }
+    std::vector<std::byte>& bytes() { return m_bytes; }
+
+private:
+    std::vector<std::byte> m_bytes;
+};
+
+class binary_reader {
+public:
+    explicit binary_reader(std::span<const std::byte> bytes) : m_bytes(bytes) {}
+    template <class T>
+    T pod() {
+        T value;
+        take(&value, sizeof(T));
+        return value;
+    }
+    template <class T>
+    std::vector<T> array() {
+        const auto count = pod<std::uint64_t>();
+        if (count > (m_bytes.size() - m_offset) / sizeof(T)) throw_truncated();
+        std::vector<T> values(count);
+        take(values.data(), count * sizeof(T));
+        return values;
+    }
+    std::string text() {
+        const auto count = pod<std::uint64_t>();
+        if (count > m_bytes.size() - m_offset) throw_truncated();
+        std::string s(count, '\0');
+        take(s.data(), count);
+        return s;
+    }
+    bool at_end() const { return m_offset == m_bytes.size(); }
+
+private:
+    void take(void* out, std::size_t n);
+    [[noreturn]] static void throw_truncated();
+    std::span<const std::byte> m_bytes;
+    std::size_t m_offset = 0;
+};
+
+}  // namespace sylva

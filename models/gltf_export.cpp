@@ -1,0 +1,148 @@
+// glTF export through tinygltf's writer; the texture PNGs are encoded by OpenImageIO and stored
+// in the binary chunk, so the writer never touches an image.
+#include "models/gltf_export.h"
+
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+#include "models/gltf_image_codec.h"
+#include "models/gltf_tinygltf.h"
+
+namespace sylva {
+namespace {
+
+// Appends bytes at a 4-byte boundary (accessor alignment) and returns the buffer view index.
+int add_view(tinygltf::Model& model, const void* data, std::size_t size, int target,
+             int stride = 0) {
+    std::vector<unsigned char>& buffer = model.buffers[0].data;
+    buffer.resize((buffer.size() + 3) / 4 * 4, 0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buffer.size();
+    view.byteLength = size;
+    view.byteStride = std::size_t(stride);
+    view.target = target;
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    buffer.insert(buffer.end(), bytes, bytes + size);
+    model.bufferViews.push_back(view);
+    return int(model.bufferViews.size() - 1);
+}
+
+int add_accessor(tinygltf::Model& model, int view, std::size_t offset, std::size_t count,
+                 int component, int type) {
+    tinygltf::Accessor a;
+    a.bufferView = view;
+    a.byteOffset = offset;
+    a.count = count;
+    a.componentType = component;
+    a.type = type;
+    model.accessors.push_back(a);
+    return int(model.accessors.size() - 1);
+}
+
+int add_texture(tinygltf::Model& model, const image_rgba8& image, const std::string& name,
+                int wrap) {
+    const std::vector<std::uint8_t> png = encode_png(image);
+    tinygltf::Image i;
+    i.name = name;
+    i.mimeType = "image/png";
+    i.bufferView = add_view(model, png.data(), png.size(), 0);
+    model.images.push_back(i);
+    tinygltf::Sampler s;
+    s.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    s.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+    s.wrapS = s.wrapT = wrap;
+    model.samplers.push_back(s);
+    tinygltf::Texture t;
+    t.name = name;
+    t.source = int(model.images.size() - 1);
+    t.sampler = int(model.samplers.size() - 1);
+    model.textures.push_back(t);
+    return int(model.textures.size() - 1);
+}
+
+image_rgba8 or_white(const image_rgba8& image) {
+    return image.texels.empty() ? image_rgba8{1, 1, {255, 255, 255, 255}} : image;
+}
+
+}  // namespace
+
+void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesystem::path& file) {
+    const mesh_data& mesh = plant.lods[std::size_t(lod)];
+    if (mesh.indices.empty())
+        throw std::invalid_argument(plant.name + ": this level has no triangles to export");
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "sylva";
+    model.buffers.emplace_back();
+
+    // The validator rejects normals that are not unit length.
+    std::vector<vertex> vertices = mesh.vertices;
+    glm::vec3 lo(vertices[0].position), hi(vertices[0].position);
+    for (vertex& v : vertices) {
+        const float len = glm::length(v.normal);
+        v.normal = std::isfinite(len) && len > 1e-6f ? v.normal / len : glm::vec3(0, 1, 0);
+        lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+    }
+    const int vertex_view = add_view(model, vertices.data(), vertices.size() * sizeof(vertex),
+                                     TINYGLTF_TARGET_ARRAY_BUFFER, int(sizeof(vertex)));
+    const int position = add_accessor(model, vertex_view, 0, vertices.size(),
+                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    model.accessors[std::size_t(position)].minValues = {lo.x, lo.y, lo.z};
+    model.accessors[std::size_t(position)].maxValues = {hi.x, hi.y, hi.z};
+    const int normal = add_accessor(model, vertex_view, offsetof(vertex, normal), vertices.size(),
+                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    const int uv = add_accessor(model, vertex_view, offsetof(vertex, uv), vertices.size(),
+                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2);
+    const int index_view = add_view(model, mesh.indices.data(), mesh.indices.size() * 4,
+                                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+
+    for (const bool leaf : {false, true}) {
+        tinygltf::Material m;
+        m.name = leaf ? "leaf" : "bark";
+        m.pbrMetallicRoughness.baseColorTexture.index =
+            leaf ? add_texture(model, or_white(plant.leaf_texture), "leaf",
+                               TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+                 : add_texture(model, or_white(plant.bark_texture), "bark",
+                               TINYGLTF_TEXTURE_WRAP_REPEAT);
+        m.pbrMetallicRoughness.metallicFactor = 0.0;
+        m.pbrMetallicRoughness.roughnessFactor = 1.0;
+        m.alphaMode = leaf ? "MASK" : "OPAQUE";
+        m.alphaCutoff = 0.5;
+        m.doubleSided = leaf;
+        model.materials.push_back(m);
+    }
+
+    tinygltf::Mesh out_mesh;
+    out_mesh.name = plant.name;
+    for (const submesh& s : mesh.submeshes) {
+        if (s.index_count == 0) continue;
+        tinygltf::Primitive p;
+        p.attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}};
+        p.indices = add_accessor(model, index_view, std::size_t(s.first_index) * 4, s.index_count,
+                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+        p.material = s.material == material_kind::leaf ? 1 : 0;
+        p.mode = TINYGLTF_MODE_TRIANGLES;
+        out_mesh.primitives.push_back(p);
+    }
+    model.meshes.push_back(out_mesh);
+    tinygltf::Node node;
+    node.name = plant.name;
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    model.buffers[0].data.resize((model.buffers[0].data.size() + 3) / 4 * 4, 0);
+
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    tinygltf::TinyGLTF writer = make_gltf_loader();
+    if (!writer.WriteGltfSceneToFile(&model, file.string(), true, true, false, true))
+        throw std::runtime_error(file.string() + ": cannot be written");
+}
+
+}  // namespace sylva

@@ -1,0 +1,396 @@
+// Reading glTF with tinygltf: errors, accessors, the node walk, units. Classification, the
+// leaf atlas and the levels of detail are in gltf_plant_builder.cpp.
+#include "models/gltf_import.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+#include <limits>
+#include <stdexcept>
+
+#include "models/gltf_plant_builder.h"
+#include "models/gltf_tinygltf.h"
+
+namespace sylva {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Above this height a model without a unit scale is taken to be in centimetres: no plant
+// Sylva draws is 100 m tall.
+constexpr float k_centimetre_height = 100.0f;
+
+struct import_context {
+    std::string file;  // file name for messages
+    const tinygltf::Model* model = nullptr;
+    [[noreturn]] void fail(const std::string& part, const std::string& what) const {
+        throw std::runtime_error(file + ": " + part + ": " + what);
+    }
+};
+
+const char* mode_name(int mode) {
+    switch (mode) {
+        case TINYGLTF_MODE_POINTS:
+            return "POINTS";
+        case TINYGLTF_MODE_LINE:
+            return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP:
+            return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP:
+            return "LINE_STRIP";
+        default:
+            return "unknown";
+    }
+}
+
+// Reads `components` numbers per element of any glTF component type (normalized integers map
+// to 0..1 or -1..1 as the spec says).
+std::vector<float> read_floats(const import_context& c, int accessor_index, int components,
+                               const std::string& part) {
+    const tinygltf::Model& m = *c.model;
+    if (accessor_index < 0 || std::size_t(accessor_index) >= m.accessors.size())
+        c.fail(part, "accessor " + std::to_string(accessor_index) + " does not exist");
+    const tinygltf::Accessor& a = m.accessors[std::size_t(accessor_index)];
+    if (a.sparse.isSparse) c.fail(part, "sparse accessors are not supported");
+    if (tinygltf::GetNumComponentsInType(std::uint32_t(a.type)) != components)
+        c.fail(part, "accessor " + std::to_string(accessor_index) + " has the wrong type");
+    std::vector<float> out(a.count * std::size_t(components), 0.0f);
+    if (a.bufferView < 0) return out;  // all zeros, as the spec says
+    if (std::size_t(a.bufferView) >= m.bufferViews.size())
+        c.fail(part, "buffer view " + std::to_string(a.bufferView) + " does not exist");
+    const tinygltf::BufferView& view = m.bufferViews[std::size_t(a.bufferView)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= m.buffers.size())
+        c.fail(part, "buffer " + std::to_string(view.buffer) + " does not exist");
+    const std::vector<unsigned char>& data = m.buffers[std::size_t(view.buffer)].data;
+    const int component_size = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+    if (component_size <= 0) c.fail(part, "unsupported component type");
+    const std::size_t element = std::size_t(component_size) * std::size_t(components);
+    const std::size_t stride = view.byteStride ? view.byteStride : element;
+    const std::size_t start = view.byteOffset + a.byteOffset;
+    if (a.count && (start + stride * (a.count - 1) + element > data.size() ||
+                    a.byteOffset + stride * (a.count - 1) + element > view.byteLength))
+        c.fail(part,
+               "accessor " + std::to_string(accessor_index) + " reads past the end of its buffer");
+    for (std::size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = data.data() + start + i * stride;
+        for (int k = 0; k < components; ++k, p += component_size) {
+            float v = 0;
+            switch (a.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                    std::memcpy(&v, p, 4);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    v = *p / (a.normalized ? 255.0f : 1.0f);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_BYTE:
+                    v = float(std::int8_t(*p)) / (a.normalized ? 127.0f : 1.0f);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    std::uint16_t s;
+                    std::memcpy(&s, p, 2);
+                    v = s / (a.normalized ? 65535.0f : 1.0f);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                    std::int16_t s;
+                    std::memcpy(&s, p, 2);
+                    v = s / (a.normalized ? 32767.0f : 1.0f);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                    std::uint32_t s;
+                    std::memcpy(&s, p, 4);
+                    v = float(s);
+                    break;
+                }
+                default:
+                    c.fail(part, "unsupported component type");
+            }
+            out[i * std::size_t(components) + std::size_t(k)] =
+                a.normalized ? std::max(v, -1.0f) : v;
+        }
+    }
+    return out;
+}
+
+// Triangle-list indices for TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN.
+std::vector<std::uint32_t> read_triangles(const import_context& c, const tinygltf::Primitive& p,
+                                          std::size_t vertex_count, const std::string& part) {
+    std::vector<std::uint32_t> order;
+    if (p.indices >= 0) {
+        const tinygltf::Accessor& a = c.model->accessors.at(std::size_t(p.indices));
+        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) c.fail(part, "float indices");
+        for (const float f : read_floats(c, p.indices, 1, part + " indices"))
+            order.push_back(std::uint32_t(f));
+    } else {
+        for (std::size_t i = 0; i < vertex_count; ++i) order.push_back(std::uint32_t(i));
+    }
+    for (const std::uint32_t i : order)
+        if (i >= vertex_count)
+            c.fail(part, "index " + std::to_string(i) + " is past the last vertex");
+    std::vector<std::uint32_t> triangles;
+    if (p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == -1) {
+        triangles.assign(order.begin(), order.end() - std::ptrdiff_t(order.size() % 3));
+    } else if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (std::size_t i = 2; i < order.size(); ++i) {
+            const bool odd = i % 2;
+            triangles.insert(triangles.end(),
+                             {order[i - 2], order[odd ? i : i - 1], order[odd ? i - 1 : i]});
+        }
+    } else if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        for (std::size_t i = 2; i < order.size(); ++i)
+            triangles.insert(triangles.end(), {order[0], order[i - 1], order[i]});
+    } else {
+        c.fail(part, std::string("mode ") + mode_name(p.mode) + " is not supported");
+    }
+    return triangles;
+}
+
+glm::mat4 local_transform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        glm::dmat4 m = glm::make_mat4(node.matrix.data());
+        return glm::mat4(m);
+    }
+    glm::mat4 t(1.0f);
+    if (node.translation.size() == 3)
+        t = glm::translate(
+            t, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (node.rotation.size() == 4)
+        t *= glm::mat4_cast(glm::quat(float(node.rotation[3]), float(node.rotation[0]),
+                                      float(node.rotation[1]), float(node.rotation[2])));
+    if (node.scale.size() == 3)
+        t = glm::scale(t, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+    return t;
+}
+
+std::string mesh_label(const tinygltf::Mesh& mesh, std::size_t index) {
+    return mesh.name.empty() ? "mesh " + std::to_string(index) : "mesh '" + mesh.name + "'";
+}
+
+gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Primitive& p,
+                                     const std::string& part, const glm::mat4& transform) {
+    gltf_source_primitive out;
+    out.label = part;
+    out.material = p.material;
+    const auto attribute = [&](const char* name) {
+        const auto it = p.attributes.find(name);
+        return it == p.attributes.end() ? -1 : it->second;
+    };
+    if (attribute("POSITION") < 0) c.fail(part, "has no POSITION attribute");
+    const std::vector<float> positions =
+        read_floats(c, attribute("POSITION"), 3, part + " POSITION");
+    const std::size_t n = positions.size() / 3;
+    std::vector<float> normals, uvs;
+    if (attribute("NORMAL") >= 0)
+        normals = read_floats(c, attribute("NORMAL"), 3, part + " NORMAL");
+    if (attribute("TEXCOORD_0") >= 0)
+        uvs = read_floats(c, attribute("TEXCOORD_0"), 2, part + " TEXCOORD_0");
+    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(transform));
+    out.vertices.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 local(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+        if (!std::isfinite(local.x) || !std::isfinite(local.y) || !std::isfinite(local.z))
+            c.fail(part, "vertex " + std::to_string(i) + " has a non-finite position");
+        vertex& v = out.vertices[i];
+        v.position = glm::vec3(transform * glm::vec4(local, 1.0f));
+        if (!normals.empty()) {
+            const glm::vec3 nrm =
+                normal_matrix * glm::vec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+            const float len = glm::length(nrm);
+            v.normal = std::isfinite(len) && len > 1e-12f ? nrm / len : glm::vec3(0, 1, 0);
+        }
+        if (!uvs.empty()) v.uv = {uvs[2 * i], uvs[2 * i + 1]};
+    }
+    out.indices = read_triangles(c, p, n, part);
+    if (glm::determinant(glm::mat3(transform)) < 0)  // a mirroring transform flips the winding
+        for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
+    if (normals
+            .empty()) {  // the spec asks for flat normals; area-weighted smooth ones suit foliage
+        for (vertex& v : out.vertices) v.normal = glm::vec3(0.0f);
+        for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3) {
+            vertex* tri[3] = {&out.vertices[out.indices[t]], &out.vertices[out.indices[t + 1]],
+                              &out.vertices[out.indices[t + 2]]};
+            const glm::vec3 face = glm::cross(tri[1]->position - tri[0]->position,
+                                              tri[2]->position - tri[0]->position);
+            for (vertex* v : tri) v->normal += face;
+        }
+        for (vertex& v : out.vertices) {
+            const float len = glm::length(v.normal);
+            v.normal = len > 1e-20f ? v.normal / len : glm::vec3(0, 1, 0);
+        }
+    }
+    return out;
+}
+
+struct walk_state {
+    std::vector<gltf_source_primitive> primitives;
+    std::uint32_t mesh_nodes = 0;
+    std::uint32_t max_depth = 0;
+};
+
+void walk(const import_context& c, int node_index, const glm::mat4& parent,
+          std::uint32_t mesh_depth, int parent_mesh_node, int guard, walk_state& state) {
+    const tinygltf::Model& m = *c.model;
+    if (node_index < 0 || std::size_t(node_index) >= m.nodes.size())
+        c.fail("node " + std::to_string(node_index), "does not exist");
+    if (guard > 256) c.fail("node " + std::to_string(node_index), "the node hierarchy has a cycle");
+    const tinygltf::Node& node = m.nodes[std::size_t(node_index)];
+    const glm::mat4 transform = parent * local_transform(node);
+    if (node.mesh >= 0) {
+        if (std::size_t(node.mesh) >= m.meshes.size())
+            c.fail("node " + std::to_string(node_index),
+                   "mesh " + std::to_string(node.mesh) + " does not exist");
+        const tinygltf::Mesh& mesh = m.meshes[std::size_t(node.mesh)];
+        ++state.mesh_nodes;
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const std::string part =
+                mesh_label(mesh, std::size_t(node.mesh)) + " primitive " + std::to_string(p);
+            state.primitives.push_back(read_primitive(c, mesh.primitives[p], part, transform));
+            state.primitives.back().branch = std::uint32_t(node_index);
+            state.primitives.back().level = std::uint8_t(std::min<std::uint32_t>(mesh_depth, 255));
+            state.primitives.back().parent_branch =
+                std::uint32_t(parent_mesh_node >= 0 ? parent_mesh_node : node_index);
+        }
+        state.max_depth = std::max(state.max_depth, ++mesh_depth);
+        parent_mesh_node = node_index;
+    }
+    for (const int child : node.children)
+        walk(c, child, transform, mesh_depth, parent_mesh_node, guard + 1, state);
+}
+
+float uniform_scale(const tinygltf::Node& node) {
+    const glm::mat3 m(local_transform(node));
+    const glm::vec3 s(glm::length(m[0]), glm::length(m[1]), glm::length(m[2]));
+    return std::abs(s.x - s.y) < 1e-4f * s.x && std::abs(s.x - s.z) < 1e-4f * s.x ? s.x : 1.0f;
+}
+
+gltf_source_material read_material(const import_context& c, std::size_t index,
+                                   std::vector<std::string>& warnings) {
+    const tinygltf::Material& source = c.model->materials[index];
+    gltf_source_material out;
+    out.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
+    const auto& pbr = source.pbrMetallicRoughness;
+    for (int k = 0; k < 4 && std::size_t(k) < pbr.baseColorFactor.size(); ++k)
+        out.factor[k] = float(pbr.baseColorFactor[std::size_t(k)]);
+    out.alpha_mode = source.alphaMode == "MASK"    ? gltf_alpha_mode::mask
+                     : source.alphaMode == "BLEND" ? gltf_alpha_mode::blend
+                                                   : gltf_alpha_mode::opaque;
+    out.double_sided = source.doubleSided;
+    const int texture = pbr.baseColorTexture.index;
+    if (texture < 0) return out;
+    const tinygltf::Model& m = *c.model;
+    const int image =
+        std::size_t(texture) < m.textures.size() ? m.textures[std::size_t(texture)].source : -1;
+    if (image < 0 || std::size_t(image) >= m.images.size() ||
+        m.images[std::size_t(image)].image.empty()) {
+        const std::string uri = image >= 0 && std::size_t(image) < m.images.size()
+                                    ? m.images[std::size_t(image)].uri
+                                    : "";
+        warnings.push_back(c.file + ": material '" + out.name + "': base-colour texture " +
+                           (uri.empty() ? std::to_string(texture) : "'" + uri + "'") +
+                           " could not be loaded; using its base-colour factor");
+        return out;
+    }
+    const tinygltf::Image& img = m.images[std::size_t(image)];
+    out.texture.width = std::uint32_t(img.width);
+    out.texture.height = std::uint32_t(img.height);
+    out.texture.texels = img.image;
+    for (std::size_t i = 0; i < out.texture.texels.size();
+         ++i)  // glTF: base colour = texture x factor
+        out.texture.texels[i] = std::uint8_t(
+            std::lround(out.texture.texels[i] * std::clamp(out.factor[int(i % 4)], 0.0f, 1.0f)));
+    return out;
+}
+
+}  // namespace
+
+gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture_size) {
+    import_context c;
+    c.file = file.filename().string();
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader = make_gltf_loader();
+    std::string error, warning;
+    if (!fs::exists(file))
+        throw std::runtime_error(c.file + ": no such file (" + file.string() + ")");
+    const std::string extension = file.extension().string();
+    bool ok = false;
+    if (extension == ".glb" || extension == ".GLB")
+        ok = loader.LoadBinaryFromFile(&model, &error, &warning, file.string());
+    else if (extension == ".gltf" || extension == ".GLTF")
+        ok = loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+    else
+        throw std::runtime_error(c.file + ": not a glTF file (expected .gltf or .glb)");
+    if (!ok) {
+        while (!error.empty() && error.back() == '\n') error.pop_back();
+        throw std::runtime_error(c.file + ": " +
+                                 (error.empty() ? "cannot be read as glTF" : error));
+    }
+    c.model = &model;
+    for (const std::string& required : model.extensionsRequired)
+        if (required != "KHR_mesh_quantization" && required != "KHR_materials_unlit")
+            throw std::runtime_error(c.file + ": requires the extension " + required +
+                                     ", which is not supported");
+    gltf_import_result result;
+    for (std::size_t i = 0; i < model.materials.size(); ++i)
+        result.materials.push_back(model.materials[i].name);
+    std::vector<gltf_source_material> materials;
+    for (std::size_t i = 0; i < model.materials.size(); ++i)
+        materials.push_back(read_material(c, i, result.warnings));
+    for (const std::string& w : result.warnings) spdlog::warn("{}", w);
+
+    walk_state state;
+    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+    std::vector<int> roots;
+    if (std::size_t(scene) < model.scenes.size()) {
+        roots = model.scenes[std::size_t(scene)].nodes;
+    } else {  // no scene: every node nobody points to is a root
+        std::vector<bool> child(model.nodes.size(), false);
+        for (const auto& n : model.nodes)
+            for (int k : n.children)
+                if (k >= 0 && std::size_t(k) < child.size()) child[std::size_t(k)] = true;
+        for (std::size_t i = 0; i < model.nodes.size(); ++i)
+            if (!child[i]) roots.push_back(int(i));
+    }
+    float unit_scale = 1.0f;
+    for (const int root : roots) {
+        if (root >= 0 && std::size_t(root) < model.nodes.size() &&
+            std::abs(uniform_scale(model.nodes[std::size_t(root)]) - 0.01f) < 1e-5f)
+            unit_scale = 0.01f;
+        walk(c, root, glm::mat4(1.0f), 0, -1, 0, state);
+    }
+    if (state.primitives.empty()) throw std::runtime_error(c.file + ": no meshes in the scene");
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const auto& p : state.primitives)
+        for (const vertex& v : p.vertices)
+            lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+    if (unit_scale == 1.0f && hi.y - lo.y > k_centimetre_height) {
+        unit_scale = 0.01f;
+        for (auto& p : state.primitives)
+            for (vertex& v : p.vertices) v.position *= unit_scale;
+        result.warnings.push_back(c.file + ": " + std::to_string(hi.y - lo.y) +
+                                  " units tall with no unit scale; assuming centimetres");
+        spdlog::info("{}", result.warnings.back());
+    }
+    result.mesh_nodes = state.mesh_nodes;
+    result.hierarchy_depth = state.max_depth;
+    // A branch structure needs at least trunk -> branch -> twig as nested mesh nodes.
+    result.model.has_hierarchy = state.max_depth >= 3;
+    build_gltf_plant(materials, state.primitives, texture_size, result);
+    result.model.name = file.stem().string();
+    result.model.source_unit_scale = unit_scale;
+    return result;
+}
+
+plant_model import_plant_model(const fs::path& file, std::uint32_t texture_size) {
+    return import_gltf_plant(file, texture_size).model;
+}
+
+}  // namespace sylva

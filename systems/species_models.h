@@ -1,0 +1,21 @@
+#pragma once
+// A scenario species as a plant_model: generated from its preset or imported from its glTF
+// file, through the bake cache (keyed by everything that determines the result).
+#include <cstdint>
+
+#include "models/bake_cache.h"
+#include "models/plant_model.h"
+#include "scenarios/scenario.h"
+
+namespace sylva {
+
+constexpr std::uint32_t k_species_texture_size = 256;
+
+// The cache key of a species' model: preset name and seed, or the glTF file's contents, plus
+// the texture size and the plant-model format version.
+std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed);
+
+// `cache` may be null (no caching). Throws with the file and part on a broken glTF.
+plant_model load_species_model(const species_settings& species, std::uint64_t seed, bake_cache* cache);
+
+}  // namespace sylva

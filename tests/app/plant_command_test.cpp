@@ -1,0 +1,120 @@
+// `sylva plant` (issue 3 item 4): --list names the presets, every preset exports a .glb the
+// Khronos validator accepts, bad species or options exit 2.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace sylva {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct result {
+    int exit_code = -1;
+    std::string output;
+};
+
+result run_command(const std::string& command) {
+    result r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
+    const int status = pipe ? pclose(pipe) : -1;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+result run(const std::string& arguments) {
+    return run_command(std::string(SYLVA_BINARY) + " " + arguments);
+}
+
+fs::path temp_dir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::vector<std::string> presets() {
+    std::vector<std::string> names;
+    std::istringstream lines(run("plant --list").output);
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty()) names.push_back(line);
+    return names;
+}
+
+TEST(plant_command, list_names_the_presets) {
+    const result r = run("plant --list");
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* name : {"broadleaf", "conifer"})
+        EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+    EXPECT_GE(presets().size(), 6u) << r.output;
+}
+
+TEST(plant_command, writes_a_glb_per_level_and_the_same_seed_gives_the_same_bytes) {
+    const fs::path dir = temp_dir("plant_levels");
+    std::uintmax_t previous = 0;
+    for (const char* lod : {"far", "reduced", "full"}) {
+        const fs::path out = dir / (std::string(lod) + ".glb");
+        const result r = run("plant broadleaf --seed 4 --texture-size 64 --lod " +
+                             std::string(lod) + " --out " + out.string());
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        ASSERT_TRUE(fs::exists(out));
+        EXPECT_GT(fs::file_size(out), previous) << lod;  // finer levels are bigger
+        previous = fs::file_size(out);
+    }
+    ASSERT_EQ(
+        run("plant broadleaf --seed 4 --texture-size 64 --out " + (dir / "again.glb").string())
+            .exit_code,
+        0);
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(bytes(dir / "again.glb"), bytes(dir / "full.glb"));
+    fs::remove_all(dir);
+}
+
+TEST(plant_command, bad_species_and_options_exit_2) {
+    const result unknown = run("plant baobab --out /tmp/x.glb");
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_NE(unknown.output.find("baobab"), std::string::npos) << unknown.output;
+    EXPECT_NE(unknown.output.find("broadleaf"), std::string::npos) << unknown.output;
+    EXPECT_EQ(run("plant broadleaf").exit_code, 2);  // no --out
+    EXPECT_EQ(run("plant broadleaf --lod medium --out /tmp/x.glb").exit_code, 2);
+    EXPECT_EQ(run("plant broadleaf --seed minus --out /tmp/x.glb").exit_code, 2);
+}
+
+TEST(plant_command, every_preset_exports_valid_gltf) {
+    const fs::path tools = fs::path(SYLVA_SOURCE_DIR) / "tests" / "tools";
+    if (run_command("node --version").exit_code != 0) GTEST_SKIP() << "node is not installed";
+    if (!fs::exists(tools / "node_modules" / "gltf-validator"))
+        GTEST_SKIP() << "gltf-validator is not installed: run `./sylva test` or `cd tests/tools && "
+                        "npm install`";
+    const fs::path dir = temp_dir("plant_valid");
+    for (const std::string& species : presets()) {
+        SCOPED_TRACE(species);
+        const fs::path out = dir / (species + ".glb");
+        const result r = run("plant " + species + " --texture-size 64 --out " + out.string());
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const result v =
+            run_command("node " + (tools / "validate_gltf.mjs").string() + " " + out.string());
+        const auto report = nlohmann::json::parse(v.output, nullptr, false);
+        ASSERT_FALSE(report.is_discarded()) << v.output;
+        EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"].dump(2);
+        EXPECT_EQ(v.exit_code, 0);
+    }
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sylva

@@ -1,0 +1,46 @@
+#include "models/plant_model_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "models/plant_library.h"
+
+namespace sylva {
+namespace {
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(plant_model_io, a_generated_plant_survives_the_round_trip_exactly) {
+    const plant_model model = generate_plant_model("flower", 3, 32);
+    const plant_model back = deserialize_plant_model(serialize_plant_model(model));
+    EXPECT_EQ(back.name, model.name);
+    for (std::size_t l = 0; l < 3; ++l) {
+        EXPECT_TRUE(same_bytes(back.lods[l].vertices, model.lods[l].vertices)) << l;
+        EXPECT_EQ(back.lods[l].indices, model.lods[l].indices) << l;
+        EXPECT_TRUE(same_bytes(back.lods[l].parts, model.lods[l].parts)) << l;
+        EXPECT_TRUE(same_bytes(back.lods[l].leaves, model.lods[l].leaves)) << l;
+        EXPECT_EQ(back.lods[l].submeshes.size(), model.lods[l].submeshes.size()) << l;
+        EXPECT_EQ(back.lods[l].bounds_max, model.lods[l].bounds_max) << l;
+    }
+    EXPECT_EQ(back.leaf_texture.texels, model.leaf_texture.texels);
+    EXPECT_EQ(back.bark_texture.width, model.bark_texture.width);
+    EXPECT_EQ(back.has_hierarchy, model.has_hierarchy);
+}
+
+TEST(plant_model_io, other_versions_and_damaged_entries_are_rejected) {
+    std::vector<std::byte> bytes = serialize_plant_model(generate_plant_model("grass", 1, 16));
+    std::vector<std::byte> other_version = bytes;
+    other_version[4] = std::byte{99};  // the format version follows the 4-byte magic
+    EXPECT_THROW(deserialize_plant_model(other_version), std::runtime_error);
+    std::vector<std::byte> truncated(bytes.begin(), bytes.end() - 9);
+    EXPECT_THROW(deserialize_plant_model(truncated), std::runtime_error);
+    std::vector<std::byte> not_a_model(bytes.size(), std::byte{0});
+    EXPECT_THROW(deserialize_plant_model(not_a_model), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace sylva
