@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
     auto* inspect = app.add_subcommand(
         "inspect", "Print a glTF plant's triangles, leaves, branches, materials, bounds and units");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
+    auto* bake = app.add_subcommand("bake", "Bake a scenario's species (or one glTF model) into the bake cache");
+    commands.emplace_back(bake, sylva::add_bake_command(*bake));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -70,7 +70,7 @@ void add_mesh(scene_assets& assets, mesh_data mesh, representation drawn_as, std
 
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache) {
     const species_settings& settings = s.species[index];
-    const std::uint64_t seed = hash_combine(s.seed, std::uint64_t(index), 0x5eed5eedULL);
+    const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model = load_species_model(settings, seed, cache);
     // Every species is scaled to the scenario's height_m, generated or imported alike.
     const float natural_height = model.lods[0].bounds_max.y;

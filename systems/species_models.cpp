@@ -3,8 +3,13 @@
 #include "models/gltf_import.h"
 #include "models/plant_library.h"
 #include "models/plant_model_io.h"
+#include "models/random.h"
 
 namespace sylva {
+
+std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index) {
+    return hash_combine(scenario_seed, std::uint64_t(index), 0x5eed5eedULL);
+}
 
 std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed) {
     std::uint64_t key = hash_string("plant_model");

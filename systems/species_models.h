@@ -11,6 +11,9 @@ namespace sylva {
 
 constexpr std::uint32_t k_species_texture_size = 256;
 
+// The seed species `index` of a scenario is generated with (spawning and baking agree).
+std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index);
+
 // The cache key of a species' model: preset name and seed, or the glTF file's contents, plus
 // the texture size and the plant-model format version.
 std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed);
