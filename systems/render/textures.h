@@ -1,6 +1,6 @@
 #pragma once
 // Texture uploads: generated RGBA8 images become mipmapped 2D array textures (one layer per
-// species, so one multi-draw covers every species) with trilinear, anisotropic filtering.
+// species, so one multi-draw covers every species) with trilinear filtering.
 #include <span>
 
 #include "models/image.h"

@@ -98,6 +98,18 @@ TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
     fs::remove_all(out);
 }
 
+TEST(play_command, every_shipped_scenario_plays) {
+    for (const char* name : {"default", "tiny", "single_tree", "forest", "meadow", "landscape"}) {
+        const fs::path out = temp_dir(std::string("library_") + name);
+        const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/" + name + ".json";
+        const result r = run("play " + scenario + " --headless --frames 1 --width 160 --height 90 --out " + out.string());
+        EXPECT_EQ(r.exit_code, 0) << name << ": " << r.output;
+        const auto metrics = nlohmann::json::parse(std::ifstream(out / "metrics.json"));
+        EXPECT_GT(metrics["frames"][0]["triangles"].get<double>(), 0.0) << name;
+        fs::remove_all(out);
+    }
+}
+
 TEST(play_command, exr_frames_are_written_through_openimageio) {
     const fs::path out = temp_dir("exr");
     const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";

@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -86,12 +88,15 @@ TEST(scenario_loader, default_scenario_has_the_documented_contents) {
     EXPECT_EQ(s.frames, 48u);
     EXPECT_EQ(s.fps, 24.0);
     EXPECT_EQ(s.terrain.size_m, 400.0);
-    ASSERT_EQ(s.species.size(), 2u);
+    // Issue 3: every plant preset renders in the default scenario.
+    ASSERT_EQ(s.species.size(), k_tree_generators.size());
+    for (std::string_view preset : k_tree_generators)
+        EXPECT_TRUE(std::any_of(s.species.begin(), s.species.end(),
+                                [&](const species_settings& sp) { return sp.generator == preset; }))
+            << preset;
     EXPECT_EQ(s.species[0].name, "oak");
-    EXPECT_EQ(s.species[0].generator, "broadleaf");
     EXPECT_EQ(s.species[1].name, "spruce");
-    EXPECT_EQ(s.species[1].generator, "conifer");
-    EXPECT_EQ(total_count(s), 3000u);
+    EXPECT_EQ(total_count(s), 3000u + 6u + 300u + 4000u + 1200u + 400u);
     ASSERT_GE(s.camera.keyframes.size(), 2u);
     EXPECT_EQ(s.camera.keyframes.front().key.position, glm::dvec3(-160.0, 30.0, 150.0));
     EXPECT_EQ(s.camera.keyframes.back().key.position, glm::dvec3(-5.0, 26.0, -5.0));

@@ -1,0 +1,68 @@
+// glTF trees made by other tools (the fixtures reproduce their traits: opaque leaf materials
+// over alpha textures, centimetre units, many materials, missing textures) import and render in
+// a scenario next to a generated species, headless.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <unistd.h>
+
+#include "../gl/gl_test_support.h"
+#include "app/scenario_player.h"
+#include "scenarios/scenario_loader.h"
+#include "tests/models/gltf_fixtures.h"
+
+namespace sylva {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scenario_with_model(const fs::path& model) {
+    return R"({"name": "imported", "resolution": [160, 90], "frames": 1,
+      "terrain": {"size_m": 60, "resolution": 17, "height_m": 1},
+      "species": [{"name": "imported", "model": ")" + model.string() + R"(", "height_m": 8},
+                  {"name": "oak", "generator": "broadleaf", "height_m": 8}],
+      "populations": [{"species": "imported", "count": 4, "min_spacing_m": 6, "area": [-12, -12, 0, 12]},
+                      {"species": "oak", "count": 2, "min_spacing_m": 6, "area": [2, -12, 12, 12]}],
+      "camera": {"keyframes": [{"t": 0, "position": [0, 4, 28], "target": [0, 4, 0]}]}})";
+}
+
+class imported_species : public ::testing::TestWithParam<fs::path (*)(const fs::path&)> {};
+
+TEST_P(imported_species, renders_in_a_scenario_with_its_leaves_classified) {
+    SYLVA_REQUIRE_GL();
+    const fs::path dir = fs::temp_directory_path() / ("sylva_gltf_render_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path model = GetParam()(dir);
+    const fs::path file = dir / "imported.json";
+    std::ofstream(file) << scenario_with_model(model);
+    const scenario s = load_scenario_file(file);
+    render::context_options options;
+    options.width = 160;
+    options.height = 90;
+    auto context = render::create_context(options);
+    scenario_player player(s, 2, context.get());
+    const frame_record r = player.step();
+    EXPECT_GT(r.triangles, 0u);
+    // Every imported instance is drawn (4 of them) besides the 2 oaks.
+    std::uint32_t drawn = 0;
+    for (auto n : r.instances) drawn += n;
+    EXPECT_EQ(drawn, 6u);
+    // The imported species has both a bark and a leaf sub-mesh: its leaves were found.
+    const auto& meshes = player.assets().meshes;
+    const auto& imported = player.assets().library.species.at(0);
+    bool has_leaf = false;
+    for (const auto& sub : meshes.at(imported.mesh_full).submeshes) has_leaf |= sub.material == material_kind::leaf;
+    EXPECT_TRUE(has_leaf);
+    // Scaled to the scenario's 8 m whatever its source units.
+    EXPECT_NEAR(meshes.at(imported.mesh_full).bounds_max.y, 8.0f, 0.01f);
+    fs::remove_all(dir);
+}
+
+fs::path opaque_leaves_glb(const fs::path& dir) { return test::write_opaque_leaves(dir, true); }
+
+INSTANTIATE_TEST_SUITE_P(fixtures, imported_species,
+                         ::testing::Values(&opaque_leaves_glb, &test::write_centimetres_scaled,
+                                           &test::write_many_materials, &test::write_missing_texture));
+
+}  // namespace
+}  // namespace sylva
