@@ -22,6 +22,23 @@ void bm_broadleaf_hd_full(benchmark::State& state) {
 }
 BENCHMARK(bm_broadleaf_hd_full)->Unit(benchmark::kMillisecond);
 
+// The figure at its size: broadleaf_hd with half again as many leaves per twig and
+// rounder stems, about 200,000 triangles.
+void bm_broadleaf_200k_full(benchmark::State& state) {
+    sylva::tree_params params = sylva::tree_preset("broadleaf_hd");
+    params.leaves_per_stem = params.leaves_per_stem * 3 / 2;
+    for (auto& level : params.level) level.sides += 2;
+    std::size_t triangles = 0;
+    std::uint64_t seed = 0;
+    for (auto _ : state) {
+        const sylva::mesh_data mesh = sylva::generate_tree(params, ++seed, sylva::tree_detail::full);
+        triangles = mesh.triangle_count();
+        benchmark::DoNotOptimize(mesh.vertices.data());
+    }
+    state.counters["triangles"] = double(triangles);
+}
+BENCHMARK(bm_broadleaf_200k_full)->Unit(benchmark::kMillisecond);
+
 // The whole model: three lods and both textures at 512 x 512.
 void bm_plant_model(benchmark::State& state, std::string preset) {
     std::array<std::size_t, 3> triangles{};
