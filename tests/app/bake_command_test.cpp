@@ -1,6 +1,8 @@
 // `sylva bake`: the first run bakes every species into the cache, the second finds them all.
 #include <gtest/gtest.h>
 
+#include "run_sylva.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,12 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::pair<int, std::string> run(const std::string& arguments) {
-    std::string output;
-    FILE* pipe = popen((std::string(SYLVA_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-    std::array<char, 512> buffer{};
-    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    const test::command_result r = test::run_sylva(arguments);
+    return {r.exit_code, r.output};
 }
 
 TEST(bake_command, bakes_once_then_serves_every_species_from_the_cache) {

@@ -1,6 +1,8 @@
 // `sylva inspect` (issue 3 item 4): triangles, leaves, branches, materials, bounds and units per
 // level of a glTF plant; a missing or broken file exits 2 naming it.
 #include <gtest/gtest.h>
+
+#include "run_sylva.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,20 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct result {
-    int exit_code = -1;
-    std::string output;
-};
+using result = test::command_result;
 
-result run(const std::string& arguments) {
-    result r;
-    FILE* pipe = popen((std::string(SYLVA_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
 fs::path temp_dir(const std::string& name) {
     fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));

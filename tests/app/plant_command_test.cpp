@@ -1,6 +1,8 @@
 // `sylva plant` (issue 3 item 4): --list names the presets, every preset exports a .glb the
 // Khronos validator accepts, bad species or options exit 2.
 #include <gtest/gtest.h>
+
+#include "run_sylva.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,24 +20,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct result {
-    int exit_code = -1;
-    std::string output;
-};
+using result = test::command_result;
+using test::run_command;
 
-result run_command(const std::string& command) {
-    result r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-result run(const std::string& arguments) {
-    return run_command(std::string(SYLVA_BINARY) + " " + arguments);
-}
+result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
 fs::path temp_dir(const std::string& name) {
     fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));

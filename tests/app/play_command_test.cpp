@@ -2,6 +2,8 @@
 // bad scenario gets exit code 2, one message naming file, JSON path and value, and no output.
 #include <gtest/gtest.h>
 
+#include "run_sylva.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -15,21 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct result {
-    int exit_code = -1;
-    std::string output;
-};
+using result = test::command_result;
 
-result run(const std::string& arguments) {
-    result r;
-    const std::string command = std::string(SYLVA_BINARY) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::array<char, 512> buffer{};
-    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
 fs::path temp_dir(const std::string& name) {
     fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));

@@ -1,0 +1,32 @@
+#pragma once
+// Runs a shell command (or the sylva binary under test) and returns its exit code and merged
+// stdout/stderr, for tests of the command-line contract.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace sylva::test {
+
+struct command_result {
+    int exit_code = -1;
+    std::string output;
+};
+
+inline command_result run_command(const std::string& command) {
+    command_result r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
+    const int status = pipe ? pclose(pipe) : -1;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// `arguments` after the binary built by this tree (SYLVA_BINARY, set by tests/CMakeLists.txt).
+inline command_result run_sylva(const std::string& arguments) {
+    return run_command(std::string(SYLVA_BINARY) + " " + arguments);
+}
+
+}  // namespace sylva::test
