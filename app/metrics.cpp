@@ -102,6 +102,8 @@ nlohmann::json summary_json(const run_info& info, const std::vector<frame_record
             {"plants", info.plants},
             {"source_triangles", info.source_triangles},
             {"setup_ms", info.setup_ms},
+            {"mode", info.mode},
+            {"samples_per_pixel", info.samples_per_pixel},
             {"median_frame_ms", med(&frame_record::frame_ms)},
             {"median_cpu_ms", med(&frame_record::cpu_ms)},
             {"median_gpu_ms", med(&frame_record::gpu_ms)},

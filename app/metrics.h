@@ -48,6 +48,8 @@ struct run_info {
     std::size_t plants = 0;
     std::uint64_t source_triangles = 0;
     double setup_ms = 0.0;  // building assets, world and GPU resources
+    std::string mode = "lod";  // lod, full_geometry or reference
+    std::uint32_t samples_per_pixel = 1;
 };
 
 std::string_view representation_name(representation r);

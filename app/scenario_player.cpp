@@ -3,6 +3,7 @@
 #include <chrono>
 #include <thread>
 
+#include "components/camera.h"
 #include "components/lod_state.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
@@ -67,11 +68,17 @@ std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
     return h;
 }
 
-scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache)
+scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache,
+                                 geometry_mode mode)
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
     m_assets = build_scene_assets(m_scenario, cache);
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
+    if (mode == geometry_mode::full) {
+        camera& cam = m_world.single<camera>();
+        cam.full_geometry = true;
+        cam.lod_scale = 1e6f;  // no distance is far enough to switch or cull
+    }
     register_frame_systems(m_schedule);
 
     render_device device;

@@ -18,11 +18,16 @@
 
 namespace sylva {
 
+// How plants are drawn: with the LOD systems' choices, or every plant at full geometry (the
+// brute-force configuration; the reference is the same, supersampled by the caller).
+enum class geometry_mode { lod, full };
+
 class scenario_player {
 public:
     // `context` may be null: then nothing is rendered. `threads` 0 means every hardware thread.
     // `cache` may be null: species models are then built every time (tests do this).
-    scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache = nullptr);
+    scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache = nullptr,
+                    geometry_mode mode = geometry_mode::lod);
     ~scenario_player();
 
     frame_record step();  // plays the current frame, then advances to the next

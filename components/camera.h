@@ -16,6 +16,9 @@ struct camera {
     float far_plane = 3000.0f;
     float lod_scale = 1.0f;  // multiplies every LOD switch distance
     float viewport_height_px = 540.0f;
+    // Reference and brute-force renders (issue 4): every plant at full detail in every pass,
+    // shadow cascades included, and no distance culling (with lod_scale set very large).
+    bool full_geometry = false;
     // Derived each frame by update_camera, camera-relative (the eye is at the origin).
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};

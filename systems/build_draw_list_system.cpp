@@ -50,7 +50,8 @@ public:
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
         d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
         for (int c = 0; c < m_cascade_count; ++c)
-            d.mesh[std::size_t(shadow_pass(c))] = mesh_of(species, coarser(lod.current, c));
+            d.mesh[std::size_t(shadow_pass(c))] =
+                mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
         const glm::vec3 base{t.position - m_camera.position};
         const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);

@@ -100,6 +100,24 @@ TEST(play_command, every_shipped_scenario_plays) {
     }
 }
 
+TEST(play_command, reference_and_full_geometry_draw_every_plant_at_full_detail) {
+    const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
+    for (const char* mode : {"--reference", "--full-geometry"}) {
+        const fs::path out = temp_dir(std::string("mode") + (mode + 2));
+        const result r = run("play " + scenario + " --headless --frames 1 " + mode + " --out " + out.string());
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const auto metrics = nlohmann::json::parse(std::ifstream(out / "metrics.json"));
+        const auto& summary = metrics["summary"];
+        EXPECT_EQ(summary["samples_per_pixel"].get<int>(), std::string(mode) == "--reference" ? 9 : 1);
+        EXPECT_EQ(summary["width"].get<int>(), 160);  // the reference is resolved to the scenario size
+        const auto& instances = metrics["frames"][0]["instances"];
+        EXPECT_EQ(instances["mesh_reduced"].get<int>() + instances["mesh_far"].get<int>(), 0) << mode;
+        EXPECT_GT(instances["mesh_full"].get<int>(), 0) << mode;
+        fs::remove_all(out);
+    }
+    EXPECT_EQ(run("play " + scenario + " --reference --full-geometry").exit_code, 2);
+}
+
 TEST(play_command, exr_frames_are_written_through_openimageio) {
     const fs::path out = temp_dir("exr");
     const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
