@@ -7,21 +7,20 @@
 #include <stdexcept>
 
 #include "models/noise.h"
+#include "models/texture_paint.h"
 
 namespace sylva {
 namespace {
 
-constexpr float k_pi = 3.14159265358979f;
+using namespace texture_paint;
+
 constexpr std::uint64_t k_texture_seed = 0x91a7u;
 
 // Linear albedos in the ranges of models/textures.cpp.
 constexpr glm::vec3 k_blade_green{0.055f, 0.12f, 0.025f};
-constexpr glm::vec3 k_leaf_green{0.040f, 0.095f, 0.018f};
 constexpr glm::vec3 k_frond_green{0.035f, 0.10f, 0.02f};
 constexpr glm::vec3 k_petal{0.55f, 0.05f, 0.22f};  // magenta: a campion / cranesbill look
 constexpr glm::vec3 k_centre{0.60f, 0.42f, 0.03f};
-
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
 struct texel_sample {
     float distance;  // > 0 inside, texture units of the region
@@ -39,22 +38,9 @@ void fill_region(image_rgba8& image, std::uint32_t x0, std::uint32_t y0, std::ui
             const glm::vec2 p{(float(x - x0) + 0.5f) / w, (float(y - y0) + 0.5f) / h};
             const texel_sample s = shape(p);
             const float alpha = std::clamp(s.distance * std::min(w, h) + 0.5f, 0.0f, 1.0f);
-            std::uint8_t* t = image.at(x, y);
-            const glm::vec3 c = alpha > 0.0f ? s.colour : glm::vec3(0.0f);
-            t[0] = to_byte(c.r);
-            t[1] = to_byte(c.g);
-            t[2] = to_byte(c.b);
-            t[3] = to_byte(alpha);
+            store(image, x, y, alpha > 0.0f ? s.colour : glm::vec3(0.0f), alpha);
         }
     }
-}
-
-image_rgba8 make_image(std::uint32_t size) {
-    if (size == 0) throw std::invalid_argument("texture size must be > 0");
-    image_rgba8 image;
-    image.width = image.height = size;
-    image.texels.assign(std::size_t(size) * size * 4, 0);
-    return image;
 }
 
 float grain(glm::vec2 p, float scale) { return value_noise(double(p.x) * scale, double(p.y) * scale, k_texture_seed); }

@@ -11,39 +11,22 @@
 
 #include "models/noise.h"
 #include "models/random.h"
+#include "models/texture_paint.h"
 #include "models/tree_params.h"
 
 namespace sylva {
 namespace {
 
-constexpr float k_pi = 3.14159265358979f;
+using namespace texture_paint;
+
 constexpr std::uint64_t k_texture_seed = 0x7e47u;
 
 // Linear albedos (roughly measured ranges: green leaves reflect 5-15% in the visible, bark and
 // soil 10-25%), so the renderer's lighting, not the texture, sets the brightness.
-constexpr glm::vec3 k_leaf_green{0.040f, 0.095f, 0.018f};
 constexpr glm::vec3 k_needle_green{0.020f, 0.060f, 0.014f};
 constexpr glm::vec3 k_twig_brown{0.07f, 0.045f, 0.028f};
 constexpr glm::vec3 k_grass{0.07f, 0.15f, 0.035f};
 constexpr glm::vec3 k_soil{0.16f, 0.11f, 0.06f};
-
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
-
-image_rgba8 make_image(std::uint32_t size) {
-    if (size == 0) throw std::invalid_argument("texture size must be > 0");
-    image_rgba8 image;
-    image.width = image.height = size;
-    image.texels.assign(std::size_t(size) * size * 4, 0);
-    return image;
-}
-
-void store(image_rgba8& image, std::uint32_t x, std::uint32_t y, glm::vec3 c, float alpha) {
-    std::uint8_t* t = image.at(x, y);
-    t[0] = to_byte(c.r);
-    t[1] = to_byte(c.g);
-    t[2] = to_byte(c.b);
-    t[3] = to_byte(alpha);
-}
 
 // Centre of texel (x, y) in [0, 1]^2, y down like the rows.
 glm::vec2 texel_centre(std::uint32_t x, std::uint32_t y, std::uint32_t size) {
