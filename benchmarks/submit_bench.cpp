@@ -103,7 +103,7 @@ void submit_200k_instances(benchmark::State& state) {
         const auto start = std::chrono::steady_clock::now();
         scene.renderer->render(scene.view());
         const auto issued = std::chrono::steady_clock::now();
-        const render::submit_stats stats = scene.renderer->finish();
+        const frame_stats stats = scene.renderer->finish();
         submit_ms += std::chrono::duration<double, std::milli>(issued - start).count();
         raster_ms += stats.gpu_ms;
         record_ms += stats.record_ms;

@@ -1,5 +1,6 @@
 #pragma once
-// What the submission measured for the frame, for metrics.json. Written by submit (main thread).
+// What the submission measured for the frame, for metrics.json. The renderer fills the GPU
+// part (render::renderer::finish), the submit system (main thread) adds its CPU timings.
 #include <array>
 #include <cstdint>
 
@@ -9,7 +10,9 @@ struct frame_stats {
     std::array<double, 3> gpu_pass_ms{};  // shadow, opaque, sky (render::k_gpu_pass_names)
     double gpu_ms = 0.0;
     double submit_cpu_ms = 0.0;  // issuing the frame's GL commands (includes driver work)
-    double record_ms = 0.0;      // Sylva's own part of it: ring writes and indirect commands
+    // Sylva's own part of it: uniforms, instance records and indirect commands written to the
+    // ring before the first draw call (on llvmpipe the draw calls add vertex processing).
+    double record_ms = 0.0;
     double finish_ms = 0.0;  // time spent waiting for the GPU to finish
     std::uint64_t upload_bytes = 0;
     std::uint32_t draw_calls = 0;

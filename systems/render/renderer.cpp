@@ -295,9 +295,9 @@ void renderer::render(const frame_view& view) {
     m_ring.end_frame();
 }
 
-submit_stats renderer::finish() {
+frame_stats renderer::finish() {
     glFinish();
-    submit_stats stats;
+    frame_stats stats;
     stats.gpu_pass_ms = m_timer.read();
     for (double ms : stats.gpu_pass_ms) stats.gpu_ms += ms;
     stats.upload_bytes = m_frame_upload_bytes;

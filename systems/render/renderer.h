@@ -13,6 +13,7 @@
 #include "components/sun.h"
 #include "models/image.h"
 #include "systems/draw_list.h"
+#include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
@@ -44,18 +45,6 @@ struct frame_view {
     float time_s = 0.0f;
 };
 
-struct submit_stats {
-    std::array<double, static_cast<int>(gpu_pass::count)> gpu_pass_ms{};
-    double gpu_ms = 0.0;
-    // CPU time Sylva spends preparing the frame for GL (uniforms, instance records, indirect
-    // commands into the ring) before the first draw call. The draw calls themselves also take
-    // CPU time on llvmpipe, which does vertex processing on the calling thread.
-    double record_ms = 0.0;
-    std::uint64_t upload_bytes = 0;  // bytes written to the ring and textures this frame
-    std::uint32_t draw_calls = 0;
-    std::uint32_t indirect_commands = 0;
-};
-
 class renderer {
 public:
     renderer(const renderer_settings& settings, const scene_assets& assets);
@@ -65,8 +54,9 @@ public:
 
     // Records and submits the frame (returns once the GL commands are issued).
     void render(const frame_view& view);
-    // Waits for the GPU and returns the frame's timings and traffic.
-    submit_stats finish();
+    // Waits for the GPU and returns the frame's GPU timings and traffic (the caller adds its
+    // own CPU timings: submit_cpu_ms, finish_ms).
+    frame_stats finish();
     image_rgba8 read_color() const { return m_target.read_color(); }
     void present(int window_width, int window_height) const;
     std::size_t programs_compiled() const { return m_shaders.compiled_count(); }

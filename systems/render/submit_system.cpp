@@ -19,16 +19,9 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     view.time_s = float(ctx.resource<playback_clock>().time_s());
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
-    const render::submit_stats s = device.renderer->finish();
-    const auto finished = std::chrono::steady_clock::now();
-
     frame_stats& stats = ctx.resource_mut<frame_stats>();
-    stats.gpu_pass_ms = s.gpu_pass_ms;
-    stats.gpu_ms = s.gpu_ms;
-    stats.upload_bytes = s.upload_bytes;
-    stats.record_ms = s.record_ms;
-    stats.draw_calls = s.draw_calls;
-    stats.indirect_commands = s.indirect_commands;
+    stats = device.renderer->finish();
+    const auto finished = std::chrono::steady_clock::now();
     stats.submit_cpu_ms = std::chrono::duration<double, std::milli>(issued - start).count();
     stats.finish_ms = std::chrono::duration<double, std::milli>(finished - issued).count();
 }
