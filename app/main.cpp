@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
     auto* bake = app.add_subcommand("bake", "Bake a scenario's species (or one glTF model) into the bake cache");
     commands.emplace_back(bake, sylva::add_bake_command(*bake));
+    auto* stress = app.add_subcommand("stress", "Run the numerical stress suite and print a table of its checks");
+    commands.emplace_back(stress, sylva::add_stress_command(*stress));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -170,12 +171,44 @@ glm::mat4 local_transform(const tinygltf::Node& node) {
     return t;
 }
 
+// Keeps the triangles with area; returns how many were dropped.
+std::uint32_t drop_degenerate_triangles(const std::vector<vertex>& vertices,
+                                        std::vector<std::uint32_t>& indices) {
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t i0 = indices[t], i1 = indices[t + 1], i2 = indices[t + 2];
+        if (is_zero_area_triangle(vertices[i0].position, vertices[i1].position, vertices[i2].position))
+            continue;
+        indices[kept++] = i0, indices[kept++] = i1, indices[kept++] = i2;
+    }
+    const auto dropped = std::uint32_t((indices.size() - kept) / 3);
+    indices.resize(kept);
+    return dropped;
+}
+
+std::string format_position(glm::vec3 p) {
+    const auto number = [](float v) {
+        if (std::isnan(v)) return std::string("nan");
+        if (std::isinf(v)) return std::string(v > 0 ? "+inf" : "-inf");
+        char text[32];
+        std::snprintf(text, sizeof(text), "%g", double(v));
+        return std::string(text);
+    };
+    return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
+
+bool is_finite(glm::vec3 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
 std::string mesh_label(const tinygltf::Mesh& mesh, std::size_t index) {
     return mesh.name.empty() ? "mesh " + std::to_string(index) : "mesh '" + mesh.name + "'";
 }
 
+// `dropped_triangles` receives how many zero-area triangles were left out.
 gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Primitive& p,
-                                     const std::string& part, const glm::mat4& transform) {
+                                     const std::string& part, const glm::mat4& transform,
+                                     std::uint32_t& dropped_triangles) {
     gltf_source_primitive out;
     out.label = part;
     out.material = p.material;
@@ -196,10 +229,16 @@ gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Pr
     out.vertices.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 local(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
-        if (!std::isfinite(local.x) || !std::isfinite(local.y) || !std::isfinite(local.z))
-            c.fail(part, "vertex " + std::to_string(i) + " has a non-finite position");
+        // A NaN or infinite vertex cannot be drawn or bounded: reject the model, never draw it.
+        if (!is_finite(local))
+            c.fail(part, "vertex " + std::to_string(i) + " has a non-finite position " +
+                             format_position(local) + "; positions must be finite numbers");
         vertex& v = out.vertices[i];
         v.position = glm::vec3(transform * glm::vec4(local, 1.0f));
+        if (!is_finite(v.position))
+            c.fail(part, "vertex " + std::to_string(i) + " at " + format_position(local) +
+                             " is not finite after its node transforms " +
+                             format_position(v.position));
         if (!normals.empty()) {
             const glm::vec3 nrm =
                 normal_matrix * glm::vec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
@@ -209,6 +248,7 @@ gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Pr
         if (!uvs.empty()) v.uv = {uvs[2 * i], uvs[2 * i + 1]};
     }
     out.indices = read_triangles(c, p, n, part);
+    dropped_triangles = drop_degenerate_triangles(out.vertices, out.indices);
     if (glm::determinant(glm::mat3(transform)) < 0)  // a mirroring transform flips the winding
         for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
             std::swap(out.indices[t + 1], out.indices[t + 2]);
@@ -230,8 +270,15 @@ gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Pr
     return out;
 }
 
+// A primitive whose triangles were all degenerate.
+struct degenerate_primitive {
+    std::string label;
+    std::uint32_t dropped = 0;
+};
+
 struct walk_state {
     std::vector<gltf_source_primitive> primitives;
+    std::vector<degenerate_primitive> degenerate;  // every primitive that lost triangles
     std::uint32_t mesh_nodes = 0;
     std::uint32_t max_depth = 0;
 };
@@ -253,7 +300,12 @@ void walk(const import_context& c, int node_index, const glm::mat4& parent,
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string part =
                 mesh_label(mesh, std::size_t(node.mesh)) + " primitive " + std::to_string(p);
-            state.primitives.push_back(read_primitive(c, mesh.primitives[p], part, transform));
+            std::uint32_t dropped = 0;
+            gltf_source_primitive primitive =
+                read_primitive(c, mesh.primitives[p], part, transform, dropped);
+            if (dropped) state.degenerate.push_back({part, dropped});
+            if (primitive.indices.empty()) continue;  // nothing left to draw
+            state.primitives.push_back(std::move(primitive));
             state.primitives.back().branch = std::uint32_t(node_index);
             state.primitives.back().level = std::uint8_t(std::min<std::uint32_t>(mesh_depth, 255));
             state.primitives.back().parent_branch =
@@ -312,6 +364,14 @@ gltf_source_material read_material(const import_context& c, std::size_t index,
 
 }  // namespace
 
+bool is_zero_area_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    const glm::dvec3 ab = glm::dvec3(b) - glm::dvec3(a), ac = glm::dvec3(c) - glm::dvec3(a),
+                     bc = glm::dvec3(c) - glm::dvec3(b);
+    const double longest_squared =
+        std::max({glm::dot(ab, ab), glm::dot(ac, ac), glm::dot(bc, bc)});
+    return glm::length(glm::cross(ab, ac)) <= k_zero_area_height_ratio * longest_squared;
+}
+
 gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture_size) {
     import_context c;
     c.file = file.filename().string();
@@ -366,7 +426,20 @@ gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture
             unit_scale = 0.01f;
         walk(c, root, glm::mat4(1.0f), 0, -1, 0, state);
     }
-    if (state.primitives.empty()) throw std::runtime_error(c.file + ": no meshes in the scene");
+    for (const degenerate_primitive& d : state.degenerate) {
+        result.dropped_degenerate_triangles += d.dropped;
+        result.warnings.push_back(c.file + ": " + d.label + ": dropped " +
+                                  std::to_string(d.dropped) +
+                                  " zero-area triangles (repeated or collinear vertices)");
+        spdlog::warn("{}", result.warnings.back());
+    }
+    if (state.primitives.empty())
+        throw std::runtime_error(c.file + (state.degenerate.empty()
+                                               ? ": no meshes in the scene"
+                                               : ": no triangles with area in the scene (" +
+                                                     std::to_string(
+                                                         result.dropped_degenerate_triangles) +
+                                                     " zero-area triangles dropped)"));
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const auto& p : state.primitives)
         for (const vertex& v : p.vertices)

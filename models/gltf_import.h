@@ -6,6 +6,7 @@
 // y-up like Sylva, so no axis change is needed.
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,26 @@ struct gltf_import_result {
     std::uint32_t mesh_nodes = 0;        // nodes that carry a mesh
     std::uint32_t hierarchy_depth = 0;   // longest chain of nested nodes with meshes
     std::vector<std::string> warnings;   // missing textures and the like (also logged)
+    // Zero-area triangles (repeated indices, coincident or collinear vertices) left out at
+    // import, so they are never drawn; each primitive that lost some is named in `warnings`.
+    std::uint32_t dropped_degenerate_triangles = 0;
 };
 
+// A triangle has zero area (a line or a point: nothing to rasterise, no normal) when twice its
+// area is at most this fraction of its longest edge squared, i.e. its height is below a
+// millionth of its longest edge. Repeated indices, coincident vertices and exactly collinear
+// points give 0; the thinnest real foliage (a 1 mm grass blade 1 m long) is at 1e-3.
+inline constexpr double k_zero_area_height_ratio = 1e-6;
+bool is_zero_area_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c);
+
 // Throws std::runtime_error whose message names the file and the part for broken or
-// unsupported files: bad JSON, missing buffers, non-triangle primitives, no meshes, non-finite
-// positions. A missing texture file is only a warning: the base-colour factor is used instead.
-// Every texture of the result is texture_size x texture_size.
+// unsupported files: bad JSON, missing buffers, non-triangle primitives, no meshes, NaN or
+// infinite positions (the message names the mesh, primitive, vertex index and value), no
+// triangle with area. A missing texture file is only a warning: the base-colour factor is
+// used instead. Zero-area triangles (is_zero_area_triangle, after the node transforms) are
+// dropped with a warning naming the file and primitive and counted in
+// dropped_degenerate_triangles, so they are never drawn. Every texture of the result is
+// texture_size x texture_size.
 gltf_import_result import_gltf_plant(const std::filesystem::path& file, std::uint32_t texture_size);
 
 plant_model import_plant_model(const std::filesystem::path& file, std::uint32_t texture_size);

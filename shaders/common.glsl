@@ -34,7 +34,9 @@ vec3 sh_irradiance(vec3 n) {
 
 // Narkowicz 2015, "ACES filmic tone mapping curve", then display gamma.
 vec3 tone_map(vec3 hdr) {
-    vec3 x = hdr * u_params.x;
+    // The curve reaches 1 at x ~ 7.2; clamping far above that changes no pixel but keeps x * x
+    // finite for any radiance (inf / inf would be NaN).
+    vec3 x = min(hdr * u_params.x, vec3(1e4));
     vec3 mapped = clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
     return pow(mapped, vec3(1.0 / 2.2));
 }

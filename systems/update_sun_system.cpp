@@ -10,7 +10,8 @@ namespace sylva {
 
 sun_keyframe_deg sample_sun_track(const sun_track& track, double time_s) {
     if (track.keys.empty()) return {};
-    if (time_s <= track.keys.front().time_s) return track.keys.front();
+    // Written so NaN takes the first key (every comparison with NaN is false).
+    if (!(time_s > track.keys.front().time_s)) return track.keys.front();
     if (time_s >= track.keys.back().time_s) return track.keys.back();
     auto next = std::upper_bound(track.keys.begin(), track.keys.end(), time_s,
                                  [](double t, const sun_keyframe_deg& k) { return t < k.time_s; });

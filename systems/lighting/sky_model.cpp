@@ -14,6 +14,7 @@ namespace {
 constexpr double k_pi = std::numbers::pi;
 constexpr double k_min_turbidity = 2.0;  // Preetham's fits cover T = 2..10 (clear to hazy)
 constexpr double k_max_turbidity = 10.0;
+constexpr double k_default_turbidity = 3.0;  // the scenario default (scenarios/scenario.h)
 // Model luminance is in kcd/m^2 (about 10 at the zenith for T = 3, sun at 60 degrees); this
 // brings sky_intensity = 1 to radiance of order 1.
 constexpr double k_radiance_per_kcd = 0.1;
@@ -29,6 +30,13 @@ constexpr double k_min_channel_fraction = 1e-3;
 // Ground irradiance quadrature over the upper hemisphere (theta, phi midpoints).
 constexpr int k_ground_samples_theta = 32;
 constexpr int k_ground_samples_phi = 64;
+
+// Turbidity clamped to the fits' range; NaN (no scenario can give one, only a caller of this
+// API) is taken as the default, so a bad input gives a plausible sky rather than NaN radiance.
+double usable_turbidity(float turbidity) {
+    if (std::isnan(turbidity)) return k_default_turbidity;
+    return std::clamp(double(turbidity), k_min_turbidity, k_max_turbidity);
+}
 
 struct perez_coefficients {
     double a, b, c, d, e;
@@ -118,7 +126,7 @@ glm::dvec3 sun_at_or_above_horizon(glm::vec3 sun_direction) {
 }
 
 prepared_sky prepare(glm::vec3 sun_direction, float turbidity, float sky_intensity) {
-    const double t = std::clamp(double(turbidity), k_min_turbidity, k_max_turbidity);
+    const double t = usable_turbidity(turbidity);
     prepared_sky p{};
     p.sun = sun_at_or_above_horizon(sun_direction);
     const double theta_s = std::acos(std::clamp(p.sun.y, 0.0, 1.0));
@@ -171,8 +179,7 @@ glm::dvec3 horizontal_sky_irradiance(float sun_y, float turbidity) {
 
 glm::vec3 ground_radiance(const sky_model& sky) {
     const glm::vec3 sun(unit_sun(sky.sun_direction));
-    const float turbidity =
-        std::clamp(sky.turbidity, float(k_min_turbidity), float(k_max_turbidity));
+    const auto turbidity = float(usable_turbidity(sky.turbidity));
     // The integral costs ~2k sky evaluations; the renderer and the SH projection ask for it once
     // per ground direction, so remember the last answer (per thread: no sharing, no locks).
     struct memo {
@@ -255,7 +262,8 @@ double rec709_luminance(glm::dvec3 rgb) {
 }  // namespace
 
 glm::vec3 sun_radiance_color(float elevation_rad, float turbidity) {
-    const double t = std::clamp(double(turbidity), k_min_turbidity, k_max_turbidity);
+    if (std::isnan(elevation_rad)) return glm::vec3(0.0f);  // no sun direction: no direct light
+    const double t = usable_turbidity(turbidity);
     const double elevation = std::clamp(double(elevation_rad), -0.5 * k_pi, 0.5 * k_pi);
     // The disk sets over its own angular diameter; below that no direct light is left.
     const double r = k_sun_angular_radius_rad;

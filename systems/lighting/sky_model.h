@@ -15,7 +15,7 @@ namespace sylva {
 
 struct sky_model {
     glm::vec3 sun_direction{0.0f, 1.0f, 0.0f};  // unit, towards the sun
-    float turbidity = 3.0f;                     // Preetham's T, clamped to [2, 10]
+    float turbidity = 3.0f;                     // Preetham's T, clamped to [2, 10]; NaN -> 3
     float sky_intensity = 1.0f;                 // multiplies the whole sky (and the ground)
     glm::vec3 ground_albedo{0.25f, 0.22f, 0.16f};
     // Optional direct-sun irradiance on a plane facing the sun. It is not part of the sky's

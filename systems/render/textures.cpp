@@ -82,7 +82,10 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
 
 gl_texture make_float_texture(int width, int height, const float* rgb) {
     gl_texture texture = make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.id(), 1, GL_RGB16F, width, height);
+    // 32-bit floats: half floats overflow to infinity above 65504, which the sky reaches at the
+    // scenario format's brightest settings (the stress suite renders them), and tone mapping
+    // infinity gives NaN, drawn black.
+    glTextureStorage2D(texture.id(), 1, GL_RGB32F, width, height);
     glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGB, GL_FLOAT, rgb);
     glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);

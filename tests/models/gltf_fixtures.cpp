@@ -223,8 +223,10 @@ private:
             if (bounds && count) {
                 glm::vec3 lo(std::numeric_limits<float>::max()),
                     hi(-std::numeric_limits<float>::max());
-                for (std::size_t i = 0; i < count; ++i)
-                    lo = glm::min(lo, glm::vec3(data[i])), hi = glm::max(hi, glm::vec3(data[i]));
+                for (std::size_t i = 0; i < count; ++i)  // over finite values: JSON has no inf
+                    if (std::isfinite(data[i].x) && std::isfinite(data[i].y) &&
+                        std::isfinite(data[i].z))
+                        lo = glm::min(lo, glm::vec3(data[i])), hi = glm::max(hi, glm::vec3(data[i]));
                 a.minValues = {lo.x, lo.y, lo.z};
                 a.maxValues = {hi.x, hi.y, hi.z};
             }
@@ -371,6 +373,66 @@ fs::path write_nan_position(const fs::path& dir) {
     b.primitive("trunk", trunk, -1);
     b.node(-1, true);
     return b.write(dir, "nan_position", true);
+}
+
+fs::path write_infinite_position(const fs::path& dir, bool negative) {
+    model_builder b;
+    geometry trunk = cylinder(glm::vec3(0.0f), k_fixture_trunk_height, 0.2f);
+    trunk.positions[k_fixture_infinite_vertex].x =
+        negative ? -std::numeric_limits<float>::infinity() : std::numeric_limits<float>::infinity();
+    b.primitive("trunk", cylinder(glm::vec3(0.0f, 3.0f, 0.0f), 2.0f, 0.08f), -1);
+    b.primitive("trunk", trunk, -1);
+    b.node(-1, true);
+    return b.write(dir, negative ? "minus_infinity" : "plus_infinity", true);
+}
+
+// Appends k_fixture_zero_area_triangles triangles with no area to `g`: repeated indices,
+// three coincident vertices, and three exactly collinear vertices (p, p + d, p + 2d in
+// binary fractions, so the points are collinear in float too) in both orders.
+void add_zero_area_triangles(geometry& g) {
+    const auto first = std::uint32_t(g.positions.size());
+    const glm::vec3 p{0.5f, 1.25f, -0.75f}, d{0.25f, 0.5f, 0.125f};
+    for (const glm::vec3 q : {p, p, p, p + d, p + 2.0f * d}) {
+        g.positions.push_back(q);
+        g.normals.emplace_back(0.0f, 1.0f, 0.0f);
+        g.uvs.emplace_back(0.5f, 0.5f);
+    }
+    g.indices.insert(g.indices.end(), {0, 0, 1,                          // repeated index
+                                       2, 3, 3,                          // repeated index
+                                       first, first + 1, first + 2,      // coincident points
+                                       first, first + 3, first + 4,      // collinear
+                                       first + 4, first, first + 3});    // collinear, reordered
+}
+
+fs::path write_zero_area_triangles(const fs::path& dir) {
+    model_builder b;
+    const image_rgba8 bark = bark_image(), leaf = leaf_image(k_leaf_green);
+    geometry trunk = cylinder(glm::vec3(0.0f), k_fixture_trunk_height, 0.2f);
+    add_zero_area_triangles(trunk);
+    b.primitive("tree", trunk, b.material("bark", &bark, glm::vec4(1.0f), "OPAQUE", false));
+    b.primitive("tree", leaf_cards(k_crown, 1.5f, k_fixture_leaf_cards, 0.3f, 7),
+                b.material("leaves", &leaf, glm::vec4(1.0f), "MASK", true));
+    b.node(-1, true);
+    return b.write(dir, "zero_area", true);
+}
+
+fs::path write_only_zero_area_triangles(const fs::path& dir) {
+    model_builder b;
+    geometry g;
+    g.positions = {{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 2.0f, 0.0f}};
+    g.normals.assign(3, glm::vec3(1.0f, 0.0f, 0.0f));
+    g.uvs.assign(3, glm::vec2(0.0f));
+    g.indices = {0, 1, 2, 0, 0, 2};
+    b.primitive("stick", g, -1);
+    b.node(-1, true);
+    return b.write(dir, "only_zero_area", false);
+}
+
+fs::path write_overflowing_scale(const fs::path& dir) {
+    model_builder b;
+    b.primitive("trunk", cylinder(glm::vec3(0.0f), k_fixture_trunk_height, 0.2f), -1);
+    b.node(-1, true, 1e38f);  // 6 m x 1e38 is beyond the largest float (3.4e38)
+    return b.write(dir, "overflowing_scale", true);
 }
 
 fs::path write_bad_json(const fs::path& dir) {

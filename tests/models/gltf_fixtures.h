@@ -36,7 +36,20 @@ fs::path write_truncated_glb(const fs::path& dir);
 fs::path write_missing_buffer(const fs::path& dir);   // .gltf whose .bin was deleted
 fs::path write_lines_primitive(const fs::path& dir);  // mesh 'leaves' primitive 1 is LINES
 fs::path write_nan_position(const fs::path& dir);     // mesh 'trunk' has a NaN vertex
+// mesh 'trunk' primitive 1 has vertex k_fixture_infinite_vertex at x = +inf (or -inf).
+constexpr std::uint32_t k_fixture_infinite_vertex = 7;
+fs::path write_infinite_position(const fs::path& dir, bool negative);
+// Finite vertices under a root node scaled by 1e38: the trunk's top overflows to +inf.
+fs::path write_overflowing_scale(const fs::path& dir);
 fs::path write_bad_json(const fs::path& dir);
+
+// Degenerate but readable: the trunk primitive (mesh 'tree' primitive 0) carries
+// k_fixture_zero_area_triangles extra triangles with no area (repeated indices, coincident and
+// collinear vertices) next to its real ones; the leaves (primitive 1) have none.
+constexpr std::uint32_t k_fixture_zero_area_triangles = 5;
+fs::path write_zero_area_triangles(const fs::path& dir);
+// mesh 'stick' has two triangles, both zero-area (collinear points, repeated index).
+fs::path write_only_zero_area_triangles(const fs::path& dir);
 fs::path write_draco_required(const fs::path& dir);  // extensionsRequired names Draco
 fs::path write_no_meshes(const fs::path& dir);
 
