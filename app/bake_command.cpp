@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "app/scenario_options.h"
 #include "models/bake_cache.h"
 #include "models/plant_model_io.h"
 #include "scenarios/scenario_loader.h"
@@ -41,7 +42,7 @@ std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64
         model.model = std::filesystem::absolute(input).string();
         return {model};
     }
-    const scenario s = load_scenario_file(input);
+    const scenario s = load_scenario_file_or_bundled(o.input);
     seed = s.seed;
     return s.species;
 }
@@ -61,11 +62,17 @@ int bake(const bake_options& o) {
             // The same seed derivation as scenario spawning, so play finds these entries.
             const std::uint64_t species_seed = species_seed_of(seed, i);
             const std::uint64_t key = species_model_key(species[i], species_seed);
-            if (o.force) std::filesystem::remove(cache.path_of("plants", key));
-            const bool cached = std::filesystem::exists(cache.path_of("plants", key));
+            const std::filesystem::path billboard =
+                cache.path_of("billboards", species_billboard_key(species[i], species_seed));
+            if (o.force) {
+                std::filesystem::remove(cache.path_of("plants", key));
+                std::filesystem::remove(billboard);
+            }
+            const bool cached = std::filesystem::exists(cache.path_of("plants", key)) && std::filesystem::exists(billboard);
             progress(i, species.size(), species[i].name + (cached ? " (cached)" : " (baking)"));
             const auto start = std::chrono::steady_clock::now();
-            load_species_model(species[i], species_seed, &cache);
+            const plant_model model = load_species_model(species[i], species_seed, &cache);
+            load_species_billboard(species[i], species_seed, model, &cache);  // the crossed billboard
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             progress(i + 1, species.size(), species[i].name + (cached ? " (cached)" : " (baked, " + std::to_string(int(ms)) + " ms)"));
         }
@@ -74,7 +81,7 @@ int bake(const bake_options& o) {
         spdlog::error("{}", e.what());
         return k_exit_failure;
     }
-    spdlog::info("{} species: {} from the cache, {} baked, in {}", species.size(), cache.hits(), cache.misses(),
+    spdlog::info("{} species (model and crossed billboard each): {} cache entries reused, {} baked, in {}", species.size(), cache.hits(), cache.misses(),
                  cache.root().string());
     return k_exit_ok;
 }

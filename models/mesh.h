@@ -21,6 +21,9 @@ enum class material_kind : std::uint8_t {
     bark,    // opaque, textured
     leaf,    // alpha-tested (discard below 0.5), double-sided, translucent-ish diffuse
     ground,  // opaque terrain, tiled texture
+    // A baked billboard (models/crossed_billboard.h): alpha-tested (discard below 0.5),
+    // double-sided, normal-mapped; shaded like leaves with the normal from its normal map.
+    billboard,
 };
 
 struct submesh {

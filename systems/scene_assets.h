@@ -19,15 +19,17 @@ struct species_entry {
     std::uint16_t mesh_full = 0;
     std::uint16_t mesh_reduced = 0;
     std::uint16_t mesh_far = 0;
+    std::uint16_t mesh_billboard = 0;  // the crossed billboard's two quads (material billboard)
     std::uint32_t triangles_full = 0;
     std::uint32_t triangles_reduced = 0;
     std::uint32_t triangles_far = 0;
+    std::uint32_t triangles_billboard = 0;
     float reduced_distance_m = 60.0f;  // beyond this (times scale and lod_scale): reduced mesh
     float far_distance_m = 200.0f;     // beyond this: far mesh
     float max_distance_m = 1500.0f;    // beyond this: not drawn
     float bounding_radius = 1.0f;      // sphere around the model, unit scale
     float center_height = 0.5f;        // sphere centre above the base, unit scale
-    float texture_layer = 0.0f;
+    float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
 };
 
 // What the per-frame systems need to know about a mesh id (for statistics).
@@ -46,6 +48,10 @@ struct scene_assets {
     std::vector<mesh_data> meshes;
     std::vector<image_rgba8> leaf_textures;  // one layer per species, same size
     std::vector<image_rgba8> bark_textures;
+    // The crossed billboards' atlases (models/crossed_billboard.h), one layer per species in the
+    // order of leaf_textures, all the same size; the normal atlas holds model-space normals.
+    std::vector<image_rgba8> billboard_albedo;
+    std::vector<image_rgba8> billboard_normal;
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;

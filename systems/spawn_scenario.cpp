@@ -72,10 +72,14 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     const species_settings& settings = s.species[index];
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model = load_species_model(settings, seed, cache);
-    // Every species is scaled to the scenario's height_m, generated or imported alike.
+    // Baked from the unscaled model, so the cache entry does not depend on height_m.
+    crossed_billboard billboard = load_species_billboard(settings, seed, model, cache);
+    // Every species is scaled to the scenario's height_m, generated or imported alike; the
+    // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
     const float scale = settings.height_m / std::max(natural_height, 1e-3f);
     for (auto& lod : model.lods) scale_mesh(lod, scale);
+    scale_mesh(billboard.mesh, scale);
 
     species_entry entry;
     entry.name = settings.name;
@@ -88,8 +92,12 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
              entry.triangles_reduced);
     add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
+    add_mesh(assets, std::move(billboard.mesh), representation::crossed_billboard, entry.mesh_billboard,
+             entry.triangles_billboard);
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
+    assets.billboard_albedo.push_back(std::move(billboard.albedo));
+    assets.billboard_normal.push_back(std::move(billboard.normal));
     assets.library.species.push_back(std::move(entry));
 }
 

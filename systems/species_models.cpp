@@ -1,11 +1,34 @@
 #include "systems/species_models.h"
 
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include "models/billboard_io.h"
 #include "models/gltf_import.h"
 #include "models/plant_library.h"
 #include "models/plant_model_io.h"
 #include "models/random.h"
 
 namespace sylva {
+namespace {
+
+constexpr crossed_billboard_settings k_billboard_settings{k_species_billboard_resolution, 4};
+
+// Loads through the cache; a damaged or outdated entry is baked again and replaced.
+template <class T, class Bake, class Read>
+T load_cached(bake_cache* cache, std::string_view kind, std::uint64_t key, const Bake& bake, const Read& read) {
+    if (!cache) return read(bake());
+    try {
+        return read(cache->get_or_bake(kind, key, bake));
+    } catch (const std::runtime_error&) {
+        std::vector<std::byte> bytes = bake();
+        cache->store(kind, key, bytes);
+        return read(bytes);
+    }
+}
+
+}  // namespace
 
 std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index) {
     return hash_combine(scenario_seed, std::uint64_t(index), 0x5eed5eedULL);
@@ -25,16 +48,24 @@ plant_model load_species_model(const species_settings& species, std::uint64_t se
                                 : import_plant_model(species.model, k_species_texture_size);
         return serialize_plant_model(model);
     };
-    if (!cache) return deserialize_plant_model(bake());
-    const std::uint64_t key = species_model_key(species, seed);
-    try {
-        return deserialize_plant_model(cache->get_or_bake("plants", key, bake));
-    } catch (const std::runtime_error&) {
-        // A damaged or outdated entry: bake again and replace it.
-        std::vector<std::byte> bytes = bake();
-        cache->store("plants", key, bytes);
-        return deserialize_plant_model(bytes);
-    }
+    return load_cached<plant_model>(cache, "plants", species_model_key(species, seed), bake,
+                                    [](std::span<const std::byte> bytes) { return deserialize_plant_model(bytes); });
+}
+
+std::uint64_t species_billboard_key(const species_settings& species, std::uint64_t seed) {
+    std::uint64_t key = hash_string("crossed_billboard", species_model_key(species, seed));
+    return hash_string(std::to_string(k_crossed_billboard_format) + "/" +
+                           std::to_string(k_billboard_settings.resolution) + "/" +
+                           std::to_string(k_billboard_settings.supersampling),
+                       key);
+}
+
+crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
+                                         const plant_model& model, bake_cache* cache) {
+    auto bake = [&] { return serialize_crossed_billboard(bake_crossed_billboard(model, k_billboard_settings)); };
+    return load_cached<crossed_billboard>(
+        cache, "billboards", species_billboard_key(species, seed), bake,
+        [](std::span<const std::byte> bytes) { return deserialize_crossed_billboard(bytes); });
 }
 
 }  // namespace sylva

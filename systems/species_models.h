@@ -4,12 +4,15 @@
 #include <cstdint>
 
 #include "models/bake_cache.h"
+#include "models/crossed_billboard.h"
 #include "models/plant_model.h"
 #include "scenarios/scenario.h"
 
 namespace sylva {
 
 constexpr std::uint32_t k_species_texture_size = 256;
+// Each crossed-billboard quad's image is this many texels square (the atlas twice as wide).
+constexpr std::uint32_t k_species_billboard_resolution = 256;
 
 // The seed species `index` of a scenario is generated with (spawning and baking agree).
 std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index);
@@ -20,5 +23,14 @@ std::uint64_t species_model_key(const species_settings& species, std::uint64_t s
 
 // `cache` may be null (no caching). Throws with the file and part on a broken glTF.
 plant_model load_species_model(const species_settings& species, std::uint64_t seed, bake_cache* cache);
+
+// The cache key of a species' crossed billboard: its model's key, the billboard format version,
+// the resolution and the supersampling.
+std::uint64_t species_billboard_key(const species_settings& species, std::uint64_t seed);
+
+// The crossed billboard of `model` (the species' model as load_species_model returns it,
+// unscaled), through the cache ("billboards") when `cache` is not null.
+crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
+                                         const plant_model& model, bake_cache* cache);
 
 }  // namespace sylva
