@@ -1,6 +1,9 @@
-// Shading of terrain, bark and leaves: sun light with cascaded shadows plus sky light from the
-// environment's SH irradiance, leaves lit from behind by transmitted sunlight; then fog and tone
-// mapping. MATERIAL_LEAF alpha-tests (also in the shadow pass, so leaves cast leaf shadows).
+// Shading of terrain, bark, leaves and baked billboards: sun light with cascaded shadows plus sky
+// light from the environment's SH irradiance, leaves lit from behind by transmitted sunlight;
+// then fog and tone mapping. MATERIAL_LEAF and MATERIAL_BILLBOARD alpha-test (also in the shadow
+// pass, so they cast leaf-shaped shadows); billboards take their normal from a normal map baked
+// from the plant (models/crossed_billboard.h) and are shaded like leaves with it.
+// WRITE_ID also writes which instance covers the pixel (measure/: coverage, lighting jumps).
 #include "common.glsl"
 
 in vec3 v_position;
@@ -8,11 +11,19 @@ in vec3 v_normal;
 in vec2 v_uv;
 in float v_tint;
 flat in float v_layer;
+#ifdef MATERIAL_BILLBOARD
+flat in vec2 v_yaw_cos_sin;
+layout(binding = 2) uniform sampler2DArray u_normal_map;  // model-space normals * 0.5 + 0.5
+#endif
+#ifdef WRITE_ID
+flat in uint v_instance;
+layout(location = 1) out uint out_id;  // ID buffer: instance index + 1 (0 = nothing drawn)
+#endif
 
 layout(binding = 0) uniform sampler2DArray u_albedo;
 #ifndef SHADOW_PASS
 layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
-out vec4 out_color;
+layout(location = 0) out vec4 out_color;
 #endif
 
 #ifndef SHADOW_PASS
@@ -47,7 +58,7 @@ void main() {
 #else
     vec4 albedo = texture(u_albedo, vec3(v_uv, v_layer));
 #endif
-#ifdef MATERIAL_LEAF
+#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
     if (albedo.a < 0.5) discard;
 #endif
 #ifndef SHADOW_PASS
@@ -56,6 +67,15 @@ void main() {
 #ifdef MATERIAL_LEAF
     if (!gl_FrontFacing) n = -n;  // leaves are thin double-sided cards
 #endif
+#ifdef MATERIAL_BILLBOARD
+    // The baked normal faces the side the billboard was rendered from; seen from the other
+    // side (which shows the mirror image), reflect it through the quad's plane.
+    vec3 plane = n;
+    vec3 m = texture(u_normal_map, vec3(v_uv, v_layer)).xyz * 2.0 - 1.0;
+    float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
+    n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m);
+    if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;
+#endif
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(v_position, 1.0)).z;
     float visibility = sun_visibility(v_position, n, view_depth);
@@ -63,11 +83,14 @@ void main() {
     vec3 sun = u_sun_radiance.rgb * visibility;
     vec3 sky = sh_irradiance(n);
     vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
-#ifdef MATERIAL_LEAF
+#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
     // Sunlight transmitted through the leaf blade when lit from behind.
     radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
 #endif
     vec3 color = apply_fog(radiance, length(v_position));
     out_color = vec4(tone_map(color), 1.0);
+#ifdef WRITE_ID
+    out_id = v_instance + 1u;
+#endif
 #endif
 }

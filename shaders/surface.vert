@@ -1,6 +1,10 @@
-// Every mesh Sylva draws (terrain, bark, leaves) is an instanced mesh: model vertices from the
+// Every mesh Sylva draws (terrain, bark, leaves, billboards) is an instanced mesh: model vertices from the
 // shared vertex buffer, one instance record (camera-relative position, yaw, scale, tint, fade,
 // texture layer) per instance. SHADOW_PASS renders depth from the sun's cascade instead.
+// WRITE_ID (measurement) passes the draw-list instance index on for the ID buffer.
+#ifdef WRITE_ID
+#extension GL_ARB_shader_draw_parameters : require
+#endif
 #include "common.glsl"
 
 layout(location = 0) in vec3 in_position;
@@ -18,6 +22,12 @@ out vec3 v_normal;
 out vec2 v_uv;
 out float v_tint;
 flat out float v_layer;
+#ifdef WRITE_ID
+flat out uint v_instance;  // index into the frame's instance records (baseInstance + instance)
+#endif
+#ifdef MATERIAL_BILLBOARD
+flat out vec2 v_yaw_cos_sin;  // rotates the normal map's model-space normals into the world
+#endif
 
 void main() {
     float yaw = in_instance_position_yaw.w;
@@ -30,6 +40,12 @@ void main() {
     v_uv = in_uv;
     v_tint = in_instance_scale_tint_fade_layer.y;
     v_layer = in_instance_scale_tint_fade_layer.w;
+#ifdef MATERIAL_BILLBOARD
+    v_yaw_cos_sin = vec2(c, s);
+#endif
+#ifdef WRITE_ID
+    v_instance = uint(gl_BaseInstanceARB + gl_InstanceID);
+#endif
 #ifdef SHADOW_PASS
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #else

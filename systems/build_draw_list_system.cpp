@@ -25,13 +25,16 @@ std::uint16_t mesh_of(const species_entry& species, representation r) {
     switch (r) {
         case representation::mesh_full: return species.mesh_full;
         case representation::mesh_reduced: return species.mesh_reduced;
+        case representation::crossed_billboard: return species.mesh_billboard;
         default: return species.mesh_far;
     }
 }
 
-// The mesh representation `steps` levels coarser than `r`, stopping at the far mesh.
-representation coarser(representation mesh, int steps) {
-    return static_cast<representation>(std::min(int(mesh) + steps, int(representation::mesh_far)));
+// The mesh representation `steps` levels coarser than `r`, stopping at the far mesh. Other
+// representations are not mesh levels and cast shadows as themselves.
+representation coarser(representation r, int steps) {
+    if (r < representation::mesh_full || r > representation::mesh_far) return r;
+    return static_cast<representation>(std::min(int(r) + steps, int(representation::mesh_far)));
 }
 
 class draw_builder {

@@ -20,13 +20,19 @@ image_rgba8 image_from_bottom_up(int width, int height, const std::vector<std::u
 
 }  // namespace
 
-render_target::render_target(int width, int height)
+render_target::render_target(int width, int height, bool id_buffer)
     : m_width(width), m_height(height), m_color(make_texture(GL_TEXTURE_2D)),
       m_depth(make_texture(GL_TEXTURE_2D)), m_framebuffer(make_framebuffer()) {
     glTextureStorage2D(m_color.id(), 1, GL_RGBA8, width, height);
     glTextureStorage2D(m_depth.id(), 1, GL_DEPTH_COMPONENT24, width, height);
     glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT0, m_color.id(), 0);
     glNamedFramebufferTexture(m_framebuffer.id(), GL_DEPTH_ATTACHMENT, m_depth.id(), 0);
+    if (id_buffer) {
+        m_ids = make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(m_ids.id(), 1, GL_R32UI, width, height);
+        glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT1, m_ids.id(), 0);
+    }
+    draw_ids(false);
     if (glCheckNamedFramebufferStatus(m_framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("render_target: framebuffer incomplete");
 }
@@ -34,6 +40,25 @@ render_target::render_target(int width, int height)
 void render_target::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     glViewport(0, 0, m_width, m_height);
+}
+
+void render_target::draw_ids(bool enabled) const {
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GLenum(enabled && has_id_buffer() ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
+    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 2, buffers);
+}
+
+std::vector<std::uint32_t> render_target::read_ids() const {
+    if (!has_id_buffer()) return {};
+    const std::size_t row = std::size_t(m_width);
+    std::vector<std::uint32_t> bottom_up(row * std::size_t(m_height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(m_ids.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                      GLsizei(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
+    std::vector<std::uint32_t> ids(bottom_up.size());
+    for (int y = 0; y < m_height; ++y)
+        std::memcpy(&ids[std::size_t(y) * row], &bottom_up[std::size_t(m_height - 1 - y) * row],
+                    row * sizeof(std::uint32_t));
+    return ids;
 }
 
 image_rgba8 render_target::read_color() const {

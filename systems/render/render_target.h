@@ -1,6 +1,10 @@
 #pragma once
-// The offscreen framebuffer every frame is rendered into (RGBA8 colour, 24-bit depth). Headless
+// The offscreen framebuffer every frame is rendered into (RGBA8 colour, 24-bit depth, and for
+// measurement an R32UI ID attachment: which draw-list instance covers each pixel). Headless
 // capture reads it back; the window blits it to the default framebuffer.
+#include <cstdint>
+#include <vector>
+
 #include "models/image.h"
 #include "systems/render/gl_objects.h"
 
@@ -8,9 +12,15 @@ namespace sylva::render {
 
 class render_target {
 public:
-    render_target(int width, int height);
+    render_target(int width, int height, bool id_buffer = false);
     void bind() const;
+    // Which attachments the next draws write: colour only, or colour and IDs (when present).
+    void draw_ids(bool enabled) const;
     image_rgba8 read_color() const;  // rows top to bottom
+    // The ID attachment, rows top to bottom: 0 where nothing wrote an ID, else what the surface
+    // shader wrote (draw-list instance index + 1). Empty without an ID buffer.
+    std::vector<std::uint32_t> read_ids() const;
+    bool has_id_buffer() const { return m_ids.id() != 0; }
     void blit_to_default(int window_width, int window_height) const;
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -20,6 +30,7 @@ private:
     int m_height;
     gl_texture m_color;
     gl_texture m_depth;
+    gl_texture m_ids;
     gl_framebuffer m_framebuffer;
 };
 

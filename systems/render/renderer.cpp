@@ -22,6 +22,7 @@ constexpr int k_sky_height = 64;
 constexpr float k_fog_density = 0.0009f;
 
 constexpr std::size_t material_index(material_kind m) { return static_cast<std::size_t>(m); }
+constexpr bool alpha_tested(material_kind m) { return m == material_kind::leaf || m == material_kind::billboard; }
 
 void setup_instance_attributes(GLuint vao) {
     // instance_gpu (systems/draw_list.h): two vec4 attributes, advanced once per instance.
@@ -60,7 +61,7 @@ sky_model sky_of(const frame_view& view) {
 }  // namespace
 
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
-    : m_settings(settings), m_ring(std::size_t(4) << 20), m_target(settings.width, settings.height),
+    : m_settings(settings), m_ring(std::size_t(4) << 20), m_target(settings.width, settings.height, settings.id_buffer),
       m_ground_uv_scale(assets.ground_uv_scale_m) {
     for (std::uint16_t id : assets.terrain_meshes) {
         const mesh_data& tile = assets.meshes.at(id);
@@ -75,10 +76,15 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     m_leaf_textures = make_texture_array(assets.leaf_textures, false, true);
     m_bark_textures = make_texture_array(assets.bark_textures, true);
     m_ground_texture = make_texture_array(std::span(&assets.ground_texture, 1), true);
+    if (!assets.billboard_albedo.empty()) {
+        m_billboard_albedo = make_texture_array(assets.billboard_albedo, false, true);
+        m_billboard_normal = make_texture_array(assets.billboard_normal, false);
+    }
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
-    for (const auto* images : {&assets.leaf_textures, &assets.bark_textures})
+    for (const auto* images : {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
+                               &assets.billboard_normal})
         for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
     m_static_upload_bytes += assets.ground_texture.texels.size();
     glEnable(GL_DEPTH_TEST);
@@ -91,10 +97,12 @@ GLuint renderer::surface_program(material_kind material, bool shadow) {
     program_source source{"surface.vert", "surface.frag", {}};
     if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
+    if (material == material_kind::billboard) source.defines.push_back("MATERIAL_BILLBOARD");
+    if (!shadow && m_settings.id_buffer) source.defines.push_back("WRITE_ID");
     if (shadow) {
         source.defines.push_back("SHADOW_PASS");
         // Opaque casters need no fragment shader at all: depth only.
-        if (material != material_kind::leaf) source.fragment.clear();
+        if (!alpha_tested(material)) source.fragment.clear();
     }
     return m_shaders.program(source);
 }
@@ -165,7 +173,7 @@ void renderer::write_commands(const frame_view& view) {
     for (auto& g : groups) g.clear();
     auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count) {
         for (const auto& sub : mesh.submeshes)
-            groups[std::size_t(pass) * 3 + material_index(sub.material)].push_back(
+            groups[std::size_t(pass) * k_materials + material_index(sub.material)].push_back(
                 {sub.index_count, count, sub.first_index, sub.base_vertex, first});
     };
     for (const auto& batch : draws.batches) {
@@ -190,7 +198,7 @@ void renderer::write_commands(const frame_view& view) {
 
     m_indirect_commands = 0;
     for (std::size_t g = 0; g < k_command_groups; ++g) {
-        auto& range = m_commands[g / 3][g % 3];
+        auto& range = m_commands[g / k_materials][g % k_materials];
         range = {};
         if (groups[g].empty()) continue;
         const std::size_t bytes = groups[g].size() * sizeof(indirect_command);
@@ -235,6 +243,13 @@ void renderer::draw_shadow_cascades() {
         glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
         glBindTextureUnit(0, m_leaf_textures.id());
         draw_group(groups[material_index(material_kind::leaf)], leaf, false);
+        if (groups[material_index(material_kind::billboard)].count) {
+            const GLuint billboard = surface_program(material_kind::billboard, true);
+            glUseProgram(billboard);
+            glUniform1i(glGetUniformLocation(billboard, "u_cascade"), c);
+            glBindTextureUnit(0, m_billboard_albedo.id());
+            draw_group(groups[material_index(material_kind::billboard)], billboard, false);
+        }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     m_timer.end();
@@ -245,6 +260,11 @@ void renderer::draw_opaque() {
     m_target.bind();
     glDepthMask(GL_TRUE);
     glClear(GL_DEPTH_BUFFER_BIT);
+    if (m_target.has_id_buffer()) {
+        m_target.draw_ids(true);
+        const GLuint none = 0;
+        glClearBufferuiv(GL_COLOR, 1, &none);
+    }
     if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());
     const auto& groups = m_commands[std::size_t(render_pass::opaque)];
     glBindTextureUnit(0, m_ground_texture.id());
@@ -253,12 +273,19 @@ void renderer::draw_opaque() {
     draw_group(groups[material_index(material_kind::bark)], surface_program(material_kind::bark, false), true);
     glBindTextureUnit(0, m_leaf_textures.id());
     draw_group(groups[material_index(material_kind::leaf)], surface_program(material_kind::leaf, false), false);
+    if (groups[material_index(material_kind::billboard)].count) {
+        glBindTextureUnit(0, m_billboard_albedo.id());
+        glBindTextureUnit(2, m_billboard_normal.id());
+        draw_group(groups[material_index(material_kind::billboard)],
+                   surface_program(material_kind::billboard, false), false);
+    }
     m_timer.end();
 }
 
 void renderer::draw_sky() {
     // Drawn last at the far plane: only pixels no surface covered are shaded.
     m_timer.begin(gpu_pass::sky);
+    m_target.draw_ids(false);  // the sky leaves ID 0
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glUseProgram(m_shaders.program({"sky.vert", "sky.frag", {}}));
@@ -274,7 +301,7 @@ void renderer::render(const frame_view& view) {
     m_frame_upload_bytes = 0;
     m_draw_calls = 0;
     const auto& draws = *view.draws;
-    std::size_t commands = (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * 3;
+    std::size_t commands = (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_materials;
     std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
                                (draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
                                commands * sizeof(indirect_command) + 16 * 16;

@@ -32,6 +32,9 @@ struct renderer_settings {
     int cascades = 3;
     bool shadows = true;
     float exposure = 1.0f;
+    // Measurement: also write which instance covers each pixel (read_ids). Costs one more
+    // 32-bit write per shaded fragment, so only the bench asks for it.
+    bool id_buffer = false;
 };
 
 // What one frame draws, gathered by the submit system from the ECS.
@@ -58,6 +61,10 @@ public:
     // own CPU timings: submit_cpu_ms, finish_ms).
     frame_stats finish();
     image_rgba8 read_color() const { return m_target.read_color(); }
+    // The ID buffer of the last frame, rows top to bottom: 0 for no instance (sky, or no ID
+    // buffer), else the index into the frame's draw_list::instances plus 1. The terrain is the
+    // instance after the last plant instance.
+    std::vector<std::uint32_t> read_ids() const { return m_target.read_ids(); }
     void present(int window_width, int window_height) const;
     std::size_t programs_compiled() const { return m_shaders.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
@@ -68,7 +75,8 @@ private:
         std::uint32_t count = 0;
     };
     // Indirect command groups per pass (shadow cascades and opaque) and material.
-    using pass_commands = std::array<command_range, 3>;
+    static constexpr std::size_t k_materials = 4;  // material_kind: bark, leaf, ground, billboard
+    using pass_commands = std::array<command_range, k_materials>;
     // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
     struct indirect_command {
         std::uint32_t count;
@@ -77,7 +85,7 @@ private:
         std::int32_t base_vertex;
         std::uint32_t base_instance;
     };
-    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * 3;
+    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * k_materials;
 
     void update_sky_texture(const frame_view& view);
     void write_uniforms(const frame_view& view);
@@ -99,6 +107,8 @@ private:
     gl_texture m_leaf_textures;
     gl_texture m_bark_textures;
     gl_texture m_ground_texture;
+    gl_texture m_billboard_albedo;  // crossed billboards: colour with coverage alpha
+    gl_texture m_billboard_normal;  // and model-space normals
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::uint64_t m_sky_revision = 0;
