@@ -69,12 +69,13 @@ std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
 }
 
 scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache,
-                                 geometry_mode mode)
+                                 player_options options)
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
     m_assets = build_scene_assets(m_scenario, cache);
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
-    if (mode == geometry_mode::full) {
+    m_world.set_resource(options.policy);
+    if (options.geometry == geometry_mode::full) {
         camera& cam = m_world.single<camera>();
         cam.full_geometry = true;
         cam.lod_scale = 1e6f;  // no distance is far enough to switch or cull
@@ -84,7 +85,9 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     render_device device;
     device.terrain_origin = m_scenario.world_offset;
     if (context) {
-        m_renderer = std::make_unique<render::renderer>(renderer_settings_of(m_scenario), m_assets);
+        render::renderer_settings settings = renderer_settings_of(m_scenario);
+        settings.id_buffer = options.id_buffer;
+        m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
@@ -146,6 +149,25 @@ frame_record scenario_player::step() {
 
 image_rgba8 scenario_player::capture() const {
     return m_renderer ? m_renderer->read_color() : image_rgba8{};
+}
+
+std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samples) const {
+    if (!m_renderer) return {};
+    const std::vector<std::uint32_t> instance_ids = m_renderer->read_ids();
+    if (instance_ids.empty()) return {};
+    const std::vector<draw_item>& items = m_world.resource<draw_list>().items;
+    const std::size_t width = m_scenario.width / samples;
+    const std::size_t height = m_scenario.height / samples;
+    const std::size_t centre = samples / 2;
+    std::vector<std::uint32_t> plants(width * height, 0);
+    for (std::size_t y = 0; y < height; ++y)
+        for (std::size_t x = 0; x < width; ++x) {
+            const std::uint32_t id =
+                instance_ids[(y * samples + centre) * m_scenario.width + x * samples + centre];
+            // IDs are draw-list instance index + 1; the terrain's instance follows the plants'.
+            if (id != 0 && id - 1 < items.size()) plants[y * width + x] = items[id - 1].instance + 1;
+        }
+    return plants;
 }
 
 void scenario_player::present(int window_width, int window_height) const {

@@ -14,6 +14,7 @@
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
 #include "systems/render/renderer.h"
+#include "systems/lod_policy.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
@@ -22,16 +23,31 @@ namespace sylva {
 // brute-force configuration; the reference is the same, supersampled by the caller).
 enum class geometry_mode { lod, full };
 
+// How a player draws: the geometry mode, the representation policy and whether the renderer
+// keeps an ID buffer (measurement). Converts from a geometry_mode for the common case.
+struct player_options {
+    player_options() = default;
+    player_options(geometry_mode g) : geometry(g) {}  // NOLINT: implicit on purpose
+    geometry_mode geometry = geometry_mode::lod;
+    lod_policy policy{};
+    bool id_buffer = false;
+};
+
 class scenario_player {
 public:
     // `context` may be null: then nothing is rendered. `threads` 0 means every hardware thread.
     // `cache` may be null: species models are then built every time (tests do this).
     scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache = nullptr,
-                    geometry_mode mode = geometry_mode::lod);
+                    player_options options = {});
     ~scenario_player();
 
     frame_record step();  // plays the current frame, then advances to the next
     image_rgba8 capture() const;
+    // The last frame's ID buffer as plant IDs, rows top to bottom: 0 for no plant (sky, terrain),
+    // else the plant's dense index + 1. For a frame rendered at `samples` times the size along
+    // each axis, the centre sample of each samples x samples block (the pixel's own centre for
+    // odd counts). Empty without an ID buffer.
+    std::vector<std::uint32_t> capture_plant_ids(std::uint32_t samples = 1) const;
     // Blits the last frame to the window's default framebuffer (view).
     void present(int window_width, int window_height) const;
     void set_frame(std::uint64_t frame);

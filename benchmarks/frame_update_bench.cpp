@@ -84,6 +84,7 @@ struct landscape {
         world.set_resource(shadow_settings{});
         world.set_resource(cascade_set{});
         world.set_resource(draw_list{});
+        world.set_resource(lod_policy{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<fit_shadow_cascades_system>();

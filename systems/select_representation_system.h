@@ -8,6 +8,7 @@
 #include "components/plant_instance.h"
 #include "components/transform.h"
 #include "ecs/system.h"
+#include "systems/lod_policy.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
@@ -15,11 +16,14 @@ namespace sylva {
 // The representation for a plant at `distance_m` (pure, for tests).
 representation choose_representation(const species_entry& species, float distance_m, float scale,
                                      float lod_scale);
+// The same under a policy (lod_policy::kind::distance_levels gives choose_representation).
+representation choose_representation(const lod_policy& policy, const species_entry& species, float distance_m,
+                                     float scale, float lod_scale);
 
 struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";
     static constexpr ecs::phase k_phase = ecs::phase::select;
-    using reads = ecs::reads<camera, world_transform, plant_instance, species_library>;
+    using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy>;
     using writes = ecs::writes<lod_state>;
     static void run(ecs::system_context<select_representation_system>& ctx);
 };

@@ -57,6 +57,7 @@ struct three_plants {
         world.set_resource(shadow_settings{2, 1024, 1000.0f, 0.5f});
         world.set_resource(cascades);
         world.set_resource(draw_list{});
+        world.set_resource(lod_policy{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<build_draw_list_system>();

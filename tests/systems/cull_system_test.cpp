@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "systems/select_representation_system.h"
@@ -51,6 +53,20 @@ TEST(select_representation, switches_at_the_species_distance_scaled_by_size_and_
     EXPECT_EQ(choose_representation(oak, 24.0f, 1.0f, 0.5f), representation::mesh_full);
     EXPECT_EQ(choose_representation(oak, 201.0f, 1.0f, 1.0f), representation::mesh_far);
     EXPECT_EQ(choose_representation(oak, 399.0f, 2.0f, 1.0f), representation::mesh_reduced);
+}
+
+TEST(select_representation, bench_policies_fix_or_hard_switch_the_choice) {
+    species_entry oak;
+    oak.reduced_distance_m = 50.0f;
+    oak.far_distance_m = 200.0f;
+    EXPECT_EQ(choose_representation(lod_policy{}, oak, 51.0f, 1.0f, 1.0f), representation::mesh_reduced);
+    lod_policy single{lod_policy::kind::single, representation::mesh_far, representation::none, 0.0f};
+    EXPECT_EQ(choose_representation(single, oak, 1.0f, 1.0f, 1.0f), representation::mesh_far);
+    // Hard switch at 30 m for a plant of scale 2 and lod_scale 0.5: 30 * 2 * 0.5 = 30 m.
+    lod_policy baseline{lod_policy::kind::hard_switch, representation::mesh_full, representation::mesh_far, 30.0f};
+    EXPECT_EQ(choose_representation(baseline, oak, 29.9f, 2.0f, 0.5f), representation::mesh_full);
+    EXPECT_EQ(choose_representation(baseline, oak, 30.0f, 2.0f, 0.5f), representation::mesh_far);
+    EXPECT_EQ(choose_representation(baseline, oak, std::nanf(""), 2.0f, 0.5f), representation::mesh_far);
 }
 
 }  // namespace
