@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
     auto* bake = app.add_subcommand("bake", "Bake a scenario's species (or one glTF model) into the bake cache");
     commands.emplace_back(bake, sylva::add_bake_command(*bake));
+    auto* bench = app.add_subcommand(
+        "bench", "Measure frame time against image error for every configuration; writes a table and a plot");
+    commands.emplace_back(bench, sylva::add_bench_command(*bench));
     auto* stress = app.add_subcommand("stress", "Run the numerical stress suite and print a table of its checks");
     commands.emplace_back(stress, sylva::add_stress_command(*stress));
     try {

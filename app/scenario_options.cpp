@@ -1,5 +1,6 @@
 #include "app/scenario_options.h"
 
+#include <filesystem>
 #include <spdlog/spdlog.h>
 
 #include "scenarios/scenario_loader.h"
@@ -8,8 +9,9 @@ namespace sylva {
 
 void add_scenario_options(CLI::App& command, scenario_options& options) {
     command.add_option("scenario", options.path,
-                       "Scenario JSON file (see README: scenario format); default: the embedded "
-                       "scenarios/default.json");
+                       "Scenario JSON file (see README: scenario format), or the name of a bundled "
+                       "scenario (default, tiny, single_tree, forest, meadow, landscape); default: "
+                       "the bundled default");
     command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")
         ->check(CLI::Range(1u, 1000000u));
     command.add_option("--width", options.width, "Image width in pixels (overrides the scenario)")
@@ -22,8 +24,14 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
         ->check(CLI::Range(0, 256));
 }
 
+scenario load_scenario_file_or_bundled(const std::string& path) {
+    const bool bare_name = path.find('/') == std::string::npos && !path.ends_with(".json");
+    if (bare_name && !std::filesystem::exists(path)) return load_bundled_scenario(path);
+    return load_scenario_file(path);
+}
+
 scenario load_with_overrides(const scenario_options& options) {
-    scenario s = options.path.empty() ? load_default_scenario() : load_scenario_file(options.path);
+    scenario s = options.path.empty() ? load_default_scenario() : load_scenario_file_or_bundled(options.path);
     if (options.frames) s.frames = *options.frames;
     if (options.width) s.width = *options.width;
     if (options.height) s.height = *options.height;

@@ -22,6 +22,9 @@ void add_scenario_options(CLI::App& command, scenario_options& options);
 scenario load_with_overrides(const scenario_options& options);
 // The same, but reports a scenario error (file, JSON path, value) and returns nothing, so the
 // command can exit with k_exit_bad_input before it writes anything.
+// A path that names no file and looks like a bare name ("forest") means a bundled scenario.
+scenario load_scenario_file_or_bundled(const std::string& path);
+
 std::optional<scenario> load_or_report(const scenario_options& options);
 
 }  // namespace sylva

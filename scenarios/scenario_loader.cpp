@@ -482,6 +482,26 @@ scenario load_default_scenario() {
     return load_scenario_text(*text, source);
 }
 
+std::vector<std::string> bundled_scenario_names() {
+    std::vector<std::string> names;
+    for (std::string_view path : embedded_file_names())
+        if (path.starts_with("scenarios/") && path.ends_with(".json"))
+            names.emplace_back(path.substr(10, path.size() - 15));
+    return names;
+}
+
+scenario load_bundled_scenario(std::string_view name) {
+    const std::string path = "scenarios/" + std::string(name) + ".json";
+    const auto text = embedded_file(path);
+    if (!text) {
+        std::string known;
+        for (const auto& n : bundled_scenario_names()) known += (known.empty() ? "" : ", ") + n;
+        throw scenario_error(std::string(name), "", "",
+                             "no such file, and no bundled scenario of that name (bundled: " + known + ")");
+    }
+    return load_scenario_text(*text, "embedded:" + path);
+}
+
 std::vector<scenario_camera_key> default_camera_keyframes(const terrain_settings& terrain,
                                                           double duration_s) {
     // South-west to north-east across the middle, looking a quarter of the terrain ahead,

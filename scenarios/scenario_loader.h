@@ -43,6 +43,11 @@ scenario load_scenario_text(std::string_view json_text, std::string_view source_
 // The embedded scenarios/default.json (what `sylva play` plays without a scenario argument).
 scenario load_default_scenario();
 
+// A scenario bundled with Sylva by name ("forest" for scenarios/forest.json, embedded in the
+// binary); throws scenario_error listing the bundled names when there is none of that name.
+scenario load_bundled_scenario(std::string_view name);
+std::vector<std::string> bundled_scenario_names();
+
 // The camera path used when a scenario gives no camera keyframes: a flight across the terrain
 // from its south-west to its north-east quarter, 15-25 m above the ground, over duration_s.
 std::vector<scenario_camera_key> default_camera_keyframes(const terrain_settings& terrain,

@@ -1,0 +1,334 @@
+#include "app/bench_runner.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <tbb/parallel_invoke.h>
+#include <thread>
+
+#include "app/metrics.h"
+#include "components/lod_state.h"
+#include "measure/image_metrics.h"
+#include "measure/temporal_metrics.h"
+#include "models/image_ops.h"
+#include "models/textures.h"
+
+namespace sylva {
+namespace {
+
+// What the configurations are compared against, one entry per frame.
+struct reference_frames {
+    std::vector<image_rgba8> images;
+    std::vector<std::vector<std::uint8_t>> masks;
+    std::vector<plant_colors> colors;
+    std::vector<double> frame_ms;
+};
+
+// Per-frame error sums of one configuration.
+struct error_accumulator {
+    double squared_error = 0.0;  // sum over frames of rmse^2 (every frame has the same pixels)
+    double ssim = 0.0;
+    double perceptual = 0.0;
+    double coverage_iou = 0.0;
+    double popping = 0.0;
+    double lighting_jump = 0.0;
+    std::uint32_t frames = 0;
+    std::uint32_t popping_frames = 0;
+    std::uint64_t switches = 0;
+
+    bench_error result() const {
+        bench_error e;
+        if (frames == 0) return e;
+        const double mse = squared_error / frames;
+        e.rmse = std::sqrt(mse);
+        e.psnr_db = mse > 0.0 ? 10.0 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
+        e.ssim = ssim / frames;
+        e.perceptual = perceptual / frames;
+        e.coverage_iou = coverage_iou / frames;
+        e.popping = popping_frames ? popping / popping_frames : 0.0;
+        e.lighting_jump = switches ? lighting_jump / double(switches) : 0.0;
+        e.switches = switches;
+        return e;
+    }
+};
+
+scenario configured(const scenario& s, const bench_configuration_spec& c) {
+    scenario out = s;
+    out.camera.lod_scale = s.camera.lod_scale * c.lod_scale_factor;
+    out.width = s.width * c.samples;
+    out.height = s.height * c.samples;
+    return out;
+}
+
+player_options measured(player_options options) {
+    options.id_buffer = true;
+    return options;
+}
+
+// Plays frame 0 once and rewinds, so shader compilation and first-use allocation are not timed
+// (each configuration has its own renderer). Playback is a function of the frame number, so
+// the frames that follow are the same as without it.
+void warm_up(scenario_player& player) {
+    player.step();
+    player.set_frame(0);
+}
+
+double median_of(std::vector<double> v) { return v.empty() ? 0.0 : median(std::move(v)); }
+
+// Medians per key over frames (a key missing in a frame counts as 0 there).
+std::map<std::string, double> medians(const std::vector<std::map<std::string, double>>& frames) {
+    std::map<std::string, std::vector<double>> columns;
+    for (const auto& f : frames)
+        for (const auto& [key, value] : f) columns[key];
+    for (const auto& f : frames)
+        for (auto& [key, values] : columns) {
+            const auto it = f.find(key);
+            values.push_back(it == f.end() ? 0.0 : it->second);
+        }
+    std::map<std::string, double> out;
+    for (auto& [key, values] : columns) out[key] = median_of(std::move(values));
+    return out;
+}
+
+std::map<std::string, double> primitives_of(const frame_record& r) {
+    std::map<std::string, double> p{{"triangles", double(r.triangles)},
+                                    {"shadow_triangles", double(r.shadow_triangles)},
+                                    {"points", double(r.points)},
+                                    {"lines", double(r.lines)}};
+    for (std::size_t i = 1; i < r.instances.size(); ++i)
+        p["instances_" + std::string(representation_name(static_cast<representation>(i)))] = double(r.instances[i]);
+    return p;
+}
+
+void save_frame(const image_rgba8& image, const std::filesystem::path& dir, std::uint32_t frame) {
+    std::filesystem::create_directories(dir);
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04u.png", frame);
+    write_image(image, dir / name);
+}
+
+reference_frames render_reference(const scenario& s, render::gl_context& context, bake_cache* cache,
+                                  const bench_settings& settings, std::size_t configurations) {
+    bench_configuration_spec spec;
+    spec.options.geometry = geometry_mode::full;
+    spec.samples = k_bench_reference_samples;
+    scenario_player player(configured(s, spec), settings.threads, &context, cache, measured(spec.options));
+    warm_up(player);
+    reference_frames ref;
+    for (std::uint32_t f = 0; f < s.frames; ++f) {
+        if (settings.progress) settings.progress(-1, configurations, f, s.frames);
+        const frame_record record = player.step();
+        ref.frame_ms.push_back(record.frame_ms);
+        ref.images.push_back(box_downsample(player.capture(), spec.samples));
+        if (!settings.frames_dir.empty()) save_frame(ref.images.back(), settings.frames_dir / "_reference", f);
+        const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
+        ref.masks.push_back(plant_mask(ids));
+        ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
+    }
+    return ref;
+}
+
+bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
+    const auto it = colors.find(id);
+    return it != colors.end() && it->second.pixels >= k_lighting_jump_min_pixels;
+}
+
+bench_configuration run_configuration(const scenario& s, const bench_configuration_spec& spec,
+                                      const reference_frames& ref, render::gl_context& context, bake_cache* cache,
+                                      const bench_settings& settings, int index, std::size_t count) {
+    reset_peak_resident();
+    scenario_player player(configured(s, spec), settings.threads, &context, cache, measured(spec.options));
+    warm_up(player);
+    bench_configuration out;
+    out.name = spec.name;
+    out.family = spec.family;
+    out.description = spec.description;
+    out.quality = spec.quality;
+    out.frames = s.frames;
+
+    error_accumulator errors;
+    std::vector<double> frame_ms;
+    std::vector<double> upload;
+    std::vector<std::map<std::string, double>> cpu, gpu, primitives;
+    image_rgba8 previous_image;
+    plant_colors previous_colors;
+    for (std::uint32_t f = 0; f < s.frames; ++f) {
+        if (settings.progress) settings.progress(index, count, f, s.frames);
+        const frame_record record = player.step();
+        frame_ms.push_back(record.frame_ms);
+        upload.push_back(double(record.upload_bytes));
+        std::map<std::string, double> systems{{"total", record.cpu_ms}};
+        for (const auto& [name, ms] : record.systems) systems[name] = ms;
+        cpu.push_back(std::move(systems));
+        std::map<std::string, double> passes{{"total", record.gpu_ms}};
+        for (const auto& [name, ms] : record.passes) passes[name] = ms;
+        gpu.push_back(std::move(passes));
+        primitives.push_back(primitives_of(record));
+
+        const image_rgba8 image = box_downsample(player.capture(), spec.samples);
+        const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
+        if (!settings.frames_dir.empty()) save_frame(image, settings.frames_dir / spec.name, f);
+        const image_rgba8& reference = ref.images[f];
+        // The metrics are independent of each other; running them side by side changes no
+        // result (each is a serial, deterministic computation).
+        double e_rmse = 0.0, e_ssim = 0.0, e_flip = 0.0;
+        tbb::parallel_invoke([&] { e_rmse = rmse(reference, image); }, [&] { e_ssim = mean_ssim(reference, image); },
+                             [&] { e_flip = flip_error(reference, image, k_bench_flip_pixels_per_degree); });
+        errors.squared_error += e_rmse * e_rmse;
+        errors.ssim += e_ssim;
+        errors.perceptual += e_flip;
+        errors.coverage_iou += coverage_iou(ref.masks[f], plant_mask(ids));
+        ++errors.frames;
+
+        plant_colors colors = mean_plant_colors(image, ids);
+        if (f > 0) {
+            errors.popping += popping_score(image, previous_image, reference, ref.images[f - 1]);
+            ++errors.popping_frames;
+            // Plants that changed representation between the previous frame and this one.
+            const auto& lod = player.world().table<lod_state>();
+            for (std::size_t k = 0; k < lod.size(); ++k) {
+                const lod_state& state = lod.data()[k];
+                if (state.current == state.previous || state.current == representation::none ||
+                    state.previous == representation::none)
+                    continue;
+                const auto id = std::uint32_t(k + 1);
+                if (!enough_pixels(colors, id) || !enough_pixels(previous_colors, id) ||
+                    !enough_pixels(ref.colors[f], id) || !enough_pixels(ref.colors[f - 1], id))
+                    continue;
+                errors.lighting_jump += lighting_jump(previous_colors.at(id), colors.at(id),
+                                                      ref.colors[f - 1].at(id), ref.colors[f].at(id));
+                ++errors.switches;
+            }
+        }
+        previous_image = image;
+        previous_colors = std::move(colors);
+    }
+    out.frame_ms_median = median_of(frame_ms);
+    out.frame_ms_min = frame_ms.empty() ? 0.0 : *std::min_element(frame_ms.begin(), frame_ms.end());
+    out.frame_ms_max = frame_ms.empty() ? 0.0 : *std::max_element(frame_ms.begin(), frame_ms.end());
+    out.cpu_ms = medians(cpu);
+    out.gpu_ms = medians(gpu);
+    out.primitives = medians(primitives);
+    out.upload_bytes = median_of(upload);
+    out.peak_memory_mb = peak_resident_mb();
+    out.error = errors.result();
+    return out;
+}
+
+bench_configuration_spec mesh_lod(double factor) {
+    bench_configuration_spec c;
+    std::ostringstream name;
+    name << "mesh_lod";
+    if (factor != 1.0) name << "_x" << factor;
+    c.name = name.str();
+    c.family = "mesh_lod";
+    std::ostringstream description;
+    description << "the runtime's mesh levels (full, reduced, far) by distance";
+    if (factor != 1.0) description << ", switch distances x" << factor;
+    c.description = description.str();
+    c.quality = factor;
+    c.lod_scale_factor = float(factor);
+    return c;
+}
+
+bench_configuration_spec single(representation r, std::string description) {
+    bench_configuration_spec c;
+    c.name = std::string(representation_name(r)) + "_only";
+    c.family = "single_representation";
+    c.description = std::move(description);
+    c.options.policy = {lod_policy::kind::single, r, r, 0.0f};
+    return c;
+}
+
+bench_configuration_spec baseline(float distance_m, bool named_baseline) {
+    bench_configuration_spec c;
+    c.name = named_baseline ? "baseline" : "baseline_" + std::to_string(int(distance_m)) + "m";
+    c.family = "baseline";
+    c.description = "engine baseline: full mesh nearer than " + std::to_string(int(distance_m)) +
+                    " m x plant scale, one crossed-quad billboard beyond, hard switch";
+    c.quality = distance_m;
+    c.options.policy = {lod_policy::kind::hard_switch, representation::mesh_full, representation::crossed_billboard,
+                        distance_m};
+    return c;
+}
+
+}  // namespace
+
+std::vector<bench_configuration_spec> default_bench_configurations() {
+    std::vector<bench_configuration_spec> list;
+    bench_configuration_spec reference;
+    reference.name = "reference";
+    reference.family = "reference";
+    reference.description = "the reference rendered again (full geometry, 3x3 samples): must give zero error";
+    reference.options.geometry = geometry_mode::full;
+    reference.samples = k_bench_reference_samples;
+    list.push_back(reference);
+
+    bench_configuration_spec brute;
+    brute.name = "brute_force";
+    brute.family = "brute_force";
+    brute.description = "every plant at full geometry, one sample per pixel";
+    brute.options.geometry = geometry_mode::full;
+    list.push_back(brute);
+
+    for (double factor : {1.0, 0.25, 0.5, 2.0}) list.push_back(mesh_lod(factor));
+    list.push_back(single(representation::mesh_reduced, "every plant as its reduced mesh"));
+    list.push_back(single(representation::mesh_far, "every plant as its far mesh"));
+    list.push_back(single(representation::crossed_billboard, "every plant as one crossed-quad billboard"));
+    list.push_back(baseline(50.0f, true));
+    list.push_back(baseline(25.0f, false));
+    list.push_back(baseline(100.0f, false));
+    return list;
+}
+
+bench_report run_bench(const scenario& s, const std::vector<bench_configuration_spec>& configurations,
+                       render::gl_context& context, bake_cache* cache, const bench_settings& settings) {
+    std::vector<const bench_configuration_spec*> selected;
+    for (const auto& c : configurations)
+        if (settings.only.empty() || std::find(settings.only.begin(), settings.only.end(), c.name) != settings.only.end())
+            selected.push_back(&c);
+    for (const auto& name : settings.only)
+        if (std::none_of(configurations.begin(), configurations.end(), [&](const auto& c) { return c.name == name; })) {
+            std::string known;
+            for (const auto& c : configurations) known += (known.empty() ? "" : ", ") + c.name;
+            throw std::invalid_argument("--only: no configuration named '" + name + "' (known: " + known + ")");
+        }
+
+    bench_report report;
+    report.scenario = s.name;
+    report.source = s.source;
+    report.machine = describe_machine();
+    report.gl_renderer = context.renderer();
+    report.width = s.width;
+    report.height = s.height;
+    report.frames = s.frames;
+    report.reference_samples_per_pixel = k_bench_reference_samples * k_bench_reference_samples;
+    report.threads = settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+
+    const reference_frames ref = render_reference(s, context, cache, settings, selected.size());
+    report.reference_frame_ms_median = median_of(ref.frame_ms);
+    for (std::size_t i = 0; i < selected.size(); ++i) {
+        report.configurations.push_back(
+            run_configuration(s, *selected[i], ref, context, cache, settings, int(i), selected.size()));
+    }
+    return report;
+}
+
+double peak_resident_mb() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
+    return 0.0;
+}
+
+void reset_peak_resident() {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";  // resets VmHWM to the current resident size (Linux 4.0+); ignored elsewhere
+}
+
+}  // namespace sylva
