@@ -56,26 +56,6 @@ std::string significant(double v, int digits) {
     return {text.data(), end};
 }
 
-void write_atomically(const std::filesystem::path& path, const std::string& content) {
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    std::error_code ignored;
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << content;
-        out.close();
-        if (!out) {
-            std::filesystem::remove(temporary, ignored);
-            throw std::runtime_error("cannot write " + path.string());
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
-    }
-}
-
 std::vector<bool> front_flags(const bench_report& report, error_of error) {
     std::vector<double> ms;
     std::vector<double> err;

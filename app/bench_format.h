@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the writers of `sylva bench`'s outputs (app/bench_report.cpp: JSON, CSV, summary;
 // app/bench_plot.cpp: the SVG plot): locale-independent number formatting, atomic file writes
-// and the Pareto flags of a report.
+// and the Pareto flags of a report. Files are written with app/atomic_file.h.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -23,9 +23,6 @@ double rounded(double v);
 std::string plain(double v);
 std::string fixed(double v, int decimals);
 std::string significant(double v, int digits);
-
-// Writes a temporary file, then renames it over `path`; throws naming the path.
-void write_atomically(const std::filesystem::path& path, const std::string& content);
 
 // Per configuration: on the Pareto front of (median frame ms, error)?
 std::vector<bool> front_flags(const bench_report& report, error_of error);

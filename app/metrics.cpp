@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/atomic_file.h"
+
 namespace sylva {
 
 std::string_view representation_name(representation r) {
@@ -124,14 +126,7 @@ void write_metrics_json(const std::filesystem::path& path, const run_info& info,
     root["frames"] = nlohmann::json::array();
     for (const auto& f : frames) root["frames"].push_back(frame_json(f));
     root["summary"] = summary_json(info, frames);
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    {
-        std::ofstream out(temporary);
-        if (!out) throw std::runtime_error("cannot write " + temporary.string());
-        out << root.dump(2) << '\n';
-        if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    }
-    std::filesystem::rename(temporary, path);
+    write_atomically(path, root.dump(2) + "\n");
 }
 
 }  // namespace sylva

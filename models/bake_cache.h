@@ -6,6 +6,7 @@
 // half-written entry that a later run would trust.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -52,23 +53,29 @@ class binary_writer {
 public:
     template <class T>
     void pod(const T& value) {
-        const auto* p = reinterpret_cast<const std::byte*>(&value);
-        m_bytes.insert(m_bytes.end(), p, p + sizeof(T));
+        append(&value, sizeof(T));
     }
     template <class T>
     void array(const std::vector<T>& values) {
         pod(std::uint64_t(values.size()));
-        const auto* p = reinterpret_cast<const std::byte*>(values.data());
-        m_bytes.insert(m_bytes.end(), p, p + values.size() * sizeof(T));
+        append(values.data(), values.size() * sizeof(T));
     }
     void text(std::string_view s) {
         pod(std::uint64_t(s.size()));
-        const auto* p = reinterpret_cast<const std::byte*>(s.data());
-        m_bytes.insert(m_bytes.end(), p, p + s.size());
+        append(s.data(), s.size());
     }
     std::vector<std::byte>& bytes() { return m_bytes; }
 
 private:
+    // resize + memcpy rather than vector::insert, whose inlined form GCC 12 misreads as an
+    // overflow (-Wstringop-overflow) when the writer starts empty.
+    void append(const void* data, std::size_t size) {
+        if (size == 0) return;
+        const std::size_t at = m_bytes.size();
+        m_bytes.resize(at + size);
+        std::memcpy(m_bytes.data() + at, data, size);
+    }
+
     std::vector<std::byte> m_bytes;
 };
 

@@ -29,7 +29,7 @@
 namespace sylva {
 
 // Bump whenever the bake, the quad layout or the atlas layout changes what it produces.
-constexpr std::uint32_t k_crossed_billboard_format = 1;
+constexpr std::uint32_t k_crossed_billboard_format = 2;  // 2: meshes in models/mesh_io.h form
 constexpr std::size_t k_crossed_billboard_quads = 2;
 
 struct crossed_billboard_settings {
