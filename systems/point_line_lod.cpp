@@ -1,0 +1,71 @@
+#include "systems/point_line_lod.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sylva {
+
+double image_plane_units(double pixels, double fov_y_radians, double viewport_height_px) {
+    return pixels * 2.0 * std::tan(0.5 * fov_y_radians) / viewport_height_px;
+}
+
+double projected_area(double area_m2, double distance_m) {
+    // Deussen 2002 Eq. 1: A'_p = ½·A_p / r².
+    return 0.5 * area_m2 / (distance_m * distance_m);
+}
+
+double required_points(double area_m2, double distance_m, double sample_distance, double splat_factor) {
+    if (!(distance_m > 0.0)) return distance_m == 0.0 ? std::numeric_limits<double>::infinity() : std::nan("");
+    // Deussen 2002 Eq. 1: p = c_p·A'_p / A'_sp, A'_sp = d'² (see the header on the n_p factor).
+    const double splat_area = sample_distance * sample_distance;
+    return splat_factor * projected_area(area_m2, distance_m) / splat_area;
+}
+
+part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t> points_after,
+                       const primitive_costs& costs) {
+    part_draw d;
+    if (std::isnan(p) || k == 0 || points_after.size() != std::size_t(k) + 1) return d;
+    const double rho = costs.points_per_triangle();  // the paper: 3
+    const double two_k = 2.0 * double(k);
+    // Deussen 2002 §5.3: p >= 3k → all triangles (3 = ρ, the points one triangle costs).
+    if (p >= rho * double(k)) {
+        d.triangles = k;
+        return d;
+    }
+    // §5.3: p < 2k → the first p points (n_p = points_after[0] of them at most).
+    if (p < two_k) {
+        d.primitives = std::min(std::uint32_t(std::max(p, 0.0)), points_after[0]);
+        return d;
+    }
+    // §5.3: 2k <= p < 3k → the first p − 2k triangles and the points of the other triangles;
+    // with ρ for 3, (p − 2k) / (ρ − 2) triangles keep the cost at p points.
+    const auto t = std::min(std::uint32_t((p - two_k) / (rho - 2.0)), k);
+    d.triangles = t;
+    d.primitives = points_after[t];
+    return d;
+}
+
+part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
+                       double distance_m, double sample_distance, const primitive_costs& costs) {
+    part_draw all_triangles{k, 0};
+    if (n_lines == 0 || !(length_m > 0.0)) return all_triangles;
+    if (!(distance_m > 0.0)) return distance_m == 0.0 ? all_triangles : part_draw{};
+    // Deussen 2002 §5.2: ε_l / r >= d' → render the set by triangles.
+    if (error_m / distance_m >= sample_distance) return all_triangles;
+    // Eq. 2: A'_sl = l'·d' = l·d' / (2r); q_l = A'_l / A'_sl.
+    const double line_area = length_m * sample_distance / (2.0 * distance_m);
+    const double q = projected_area(area_m2, distance_m) / line_area;
+    if (q > 1.0) return all_triangles;
+    // q ≤ 1: the first q·n_l lines (rounded to nearest), never fewer than one.
+    const auto lines = std::clamp(std::uint32_t(std::round(q * double(n_lines))), 1u, n_lines);
+    // Never slower than the triangles they stand for, on this device.
+    if (double(lines) * costs.line >= double(k) * costs.triangle) return all_triangles;
+    return {0, lines};
+}
+
+float splat_size_px(const point_line_quality& q) {
+    return q.sample_distance_px * std::sqrt(std::max(q.splat_factor, 0.0f));
+}
+
+}  // namespace sylva

@@ -1,0 +1,84 @@
+#pragma once
+// The level-of-detail rules of Deussen, Colditz, Stamminger, Drettakis 2002 (§5): how many
+// points a part needs (Eq. 1), whether a long thin part is drawn as lines and how many (Eq. 2),
+// and how triangles and points blend (§5.3). Pure functions of plain numbers, so every rule has
+// a unit test with hand-computed values (tests/systems/point_line_lod_test.cpp).
+//
+// Units. The paper puts the image plane at distance one from the eye, so projected areas and
+// the sample distance d' are in image-plane units. Users set d' in pixels; image_plane_units()
+// converts (a pixel at distance one is 2·tan(fov_y / 2) / viewport height wide).
+#include <cstdint>
+#include <span>
+
+namespace sylva {
+
+// What the viewer asks of the point/line representation.
+struct point_line_quality {
+    float sample_distance_px = 1.0f;  // d': mean distance between neighbouring samples on screen
+    float splat_factor = 1.3f;        // c_p (§5.1: "values from 1.2 to 1.5 are usually sufficient")
+};
+
+// d' in image-plane units (the image plane at distance one) from d' in pixels.
+double image_plane_units(double pixels, double fov_y_radians, double viewport_height_px);
+
+// Deussen 2002 Eq. 1, left: A'_p = ½·A_p / r². The projected area of a part of world area
+// `area_m2` whose leaves are randomly oriented (the ½) seen from distance r.
+double projected_area(double area_m2, double distance_m);
+
+// Deussen 2002 Eq. 1, right: p = c_p·(A'_p / A'_sp)·n_p with A'_sp = d'². The paper multiplies
+// by n_p while writing A_p for the part's area; the product is dimensionally a count only when
+// A_p is read as the area per point sample (A_p / n_p), and then it equals c_p·A'/A'_sp with A'
+// the whole part's projected area. We take that reading: p is the number of splats of area
+// d'² that cover the part c_p times over. Returns +inf for r = 0 (draw polygons).
+double required_points(double area_m2, double distance_m, double sample_distance, double splat_factor);
+
+// What one primitive of each kind costs to draw on the device (any common unit: only ratios
+// matter). The paper assumes
+// "a separate triangle requires about as much time for rendering as three points" (§4.1), which
+// is where its 3k threshold comes from; on llvmpipe a point costs about half a triangle and a
+// line several. systems/render/primitive_cost_calibration measures them where Sylva runs.
+struct primitive_costs {
+    double triangle = 3.0;
+    double point = 1.0;
+    double line = 2.0;  // two vertices (the paper counts vertices)
+
+    // ρ: how many points one triangle costs.
+    double points_per_triangle() const { return triangle / point; }
+};
+
+// What a part draws this frame: a prefix of its triangles and a prefix of its points or lines.
+struct part_draw {
+    std::uint32_t triangles = 0;
+    std::uint32_t primitives = 0;  // points or lines, by the part's primitive
+
+    friend bool operator==(const part_draw&, const part_draw&) = default;
+};
+
+// Deussen 2002 §5.3 blending for a part of k triangles whose points are stored in reverse
+// triangle order (models/point_line_model.h), points_after[t] = points of triangles t..k-1
+// (k + 1 entries, points_after[0] = n_p):
+//   p >= 3k       every triangle ("p > n_p → polygons" of Eq. 1 for n_p = 2k, taken at 3k
+//                 where a triangle, about three points' cost, is as cheap as the points)
+//   p <  2k       the first p points (at most n_p)
+//   2k <= p < 3k  the first p − 2k triangles plus the points of the remaining triangles
+// so that the cost (points + 3·triangles) is always about p points. With the device's own
+// costs, 3 becomes ρ (points per triangle): for ρ > 2 the blend runs from 2k to ρk with
+// t = (p − 2k) / (ρ − 2) triangles; for ρ <= 2 a triangle is no dearer than its two points and
+// the part turns polygonal at p >= ρk with no blend. The paper's costs give the paper's rule.
+// A NaN p draws nothing; an infinite one draws every triangle.
+part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t> points_after,
+                       const primitive_costs& costs = {});
+
+// Deussen 2002 §5.2, Eq. 2, for a line part of world area A_l approximated by n_l lines of total
+// length l within ε_l. ε_l / r >= d' → triangles (the lines would be visibly off); else
+// q = A'_l / A'_sl with A'_l = ½·A_l / r² (as Eq. 1) and A'_sl = l·d' / (2r); q <= 1 draws the
+// first q·n_l lines (rounded to nearest, at least one), q > 1 draws every triangle. Lines that
+// would cost more on the device than the part's k triangles are drawn as the triangles.
+part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
+                       double distance_m, double sample_distance, const primitive_costs& costs = {});
+
+// Splat side in pixels: each splat covers c_p·d'² (the splat factor enlarges splats so the
+// random samples leave no holes, §5.1 and §5.4, Fig. 5c).
+float splat_size_px(const point_line_quality& q);
+
+}  // namespace sylva
