@@ -28,8 +28,10 @@ namespace sylva {
 namespace {
 
 constexpr std::size_t k_plants = 1'000'000;
+// What every frame reads or writes for every plant. point_prefix (32 B) is left out: only
+// update_point_prefix and build_draw_list touch it, and only for plants drawn as points/lines.
 constexpr std::size_t k_hot_bytes = sizeof(world_transform) + sizeof(bounds) + sizeof(plant_instance) +
-                                    sizeof(lod_state) + sizeof(point_prefix) + sizeof(fade_alpha);
+                                    sizeof(lod_state) + sizeof(fade_alpha);
 static_assert(k_hot_bytes <= 64, "issue 2: at most 64 bytes of hot per-instance state");
 
 // A 10 km x 10 km landscape with a million trees of two species on a jittered grid, the

@@ -1,16 +1,22 @@
 #pragma once
-// Deussen 2002 §5.3: a plant's level of detail is a few prefix lengths into its randomly
-// ordered triangle, point and line lists. `points` is p from Eq. 1 (the triangle count follows
-// from p and the blend rule), `lines` is q·n_l from Eq. 2. Writer: select_representation (the
-// point/line LOD work); read by build_draw_list. Defined now, filled by the point/line issue.
+// Deussen 2002 §5.3: a plant's level of detail under the point/line representation is a few
+// prefix lengths into its parts' randomly ordered triangle, point and line lists
+// (models/point_line_model.h): per part, the first `triangles` triangles and the first
+// `primitives` points or lines. Writer: update_point_prefix (Eq. 1, Eq. 2 and the blend);
+// read by build_draw_list, which draws exactly these prefixes.
+#include <array>
 #include <cstdint>
 
 namespace sylva {
 
+// Parts per plant cell (bark, twigs, foliage, one important kind); the bake's
+// k_max_cell_parts is static_asserted equal where both are visible.
+constexpr std::size_t k_prefix_parts = 4;
+
 struct point_prefix {
-    std::uint32_t points = 0;
-    std::uint32_t lines = 0;
+    std::array<std::uint32_t, k_prefix_parts> triangles{};
+    std::array<std::uint32_t, k_prefix_parts> primitives{};  // points or lines, by the part
 };
-static_assert(sizeof(point_prefix) == 8);
+static_assert(sizeof(point_prefix) == 32);
 
 }  // namespace sylva

@@ -26,6 +26,10 @@ enum class material_kind : std::uint8_t {
     billboard,
 };
 
+// How a mesh's indices are read: triangle lists for every model mesh; point and line lists for
+// the point/line representation (models/point_line_model.h), assembled when a scene is built.
+enum class primitive_kind : std::uint8_t { triangles, points, lines };
+
 struct submesh {
     std::uint32_t first_index = 0;
     std::uint32_t index_count = 0;
@@ -71,6 +75,8 @@ struct mesh_data {
     glm::vec3 bounds_max{0.0f};
     std::vector<triangle_part> parts;  // one per triangle, empty when unknown
     std::vector<leaf_record> leaves;   // one per foliage element, empty when unknown
+    // Not serialised (models/mesh_io.h): every cached mesh is a triangle list.
+    primitive_kind primitive = primitive_kind::triangles;
 
     std::size_t triangle_count() const { return indices.size() / 3; }
 };

@@ -8,17 +8,26 @@
 namespace sylva {
 namespace {
 
-struct chunk_totals {
-    std::uint32_t items = 0;
-};
+std::uint32_t popcount(std::uint32_t v) { return std::uint32_t(__builtin_popcount(v)); }
 
 // What one plant contributes: a bit per pass it is drawn in, and its mesh in each pass. Each
 // shadow cascade draws the plant one mesh level coarser than the one before it (cascade 0 as
 // the view does): a farther cascade's texel is larger than the detail the finer mesh adds.
+//
+// A plant drawn as points and lines (Deussen 2002 §5.3) is instead up to two prefixes per part,
+// its first triangles and its first points or lines, the same in every pass it is drawn in.
+struct prefix_draw {
+    std::uint16_t mesh = 0;
+    std::uint32_t count = 0;
+};
 struct plant_draws {
     std::array<std::uint16_t, std::size_t(render_pass::count)> mesh{};
-    std::uint32_t pass_mask = 0;  // bit i: render_pass i
+    std::array<prefix_draw, 2 * k_prefix_parts> prefixes{};
+    std::uint32_t prefix_count = 0;  // 0: one whole mesh per pass (`mesh`)
+    std::uint32_t pass_mask = 0;     // bit i: render_pass i
     float distance = 0.0f;
+
+    std::uint32_t items() const { return popcount(pass_mask) * std::max(prefix_count, 1u); }
 };
 
 std::uint16_t mesh_of(const species_entry& species, representation r) {
@@ -47,10 +56,14 @@ public:
     }
 
     plant_draws classify(const world_transform& t, const bounds& b, const plant_instance& p,
-                         const lod_state& lod) const {
+                         const lod_state& lod, const point_prefix& prefix) const {
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
+        if (lod.current == representation::points) {
+            add_prefixes(species, prefix, d);
+            if (d.prefix_count == 0) return d;  // too far for even one point: nothing drawn
+        }
         d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
         for (int c = 0; c < m_cascade_count; ++c)
             d.mesh[std::size_t(shadow_pass(c))] =
@@ -67,13 +80,19 @@ public:
     }
 
 private:
+    void add_prefixes(const species_entry& species, const point_prefix& prefix, plant_draws& d) const {
+        for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
+            const lod_part_entry& part = m_library.lod_parts[species.first_lod_part + i];
+            if (prefix.triangles[i]) d.prefixes[d.prefix_count++] = {part.mesh_triangles, prefix.triangles[i]};
+            if (prefix.primitives[i]) d.prefixes[d.prefix_count++] = {part.mesh_primitives, prefix.primitives[i]};
+        }
+    }
+
     const camera& m_camera;
     const species_library& m_library;
     std::array<cascade_bounds, k_max_cascades> m_cascades{};
     int m_cascade_count = 0;
 };
-
-std::uint32_t popcount(std::uint32_t v) { return std::uint32_t(__builtin_popcount(v)); }
 
 instance_gpu make_instance(const camera& cam, const world_transform& t, const plant_instance& p,
                            const fade_alpha& fade, const species_library& library) {
@@ -109,7 +128,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>();
     const draw_builder builder(cam, library, ctx.resource<cascade_set>());
-    auto plants = ctx.query<const world_transform, const bounds, const plant_instance, const lod_state>();
+    auto plants =
+        ctx.query<const world_transform, const bounds, const plant_instance, const lod_state, const point_prefix>();
     const std::size_t n = plants.size();
     const std::size_t chunk = ecs::k_default_chunk;
     const std::size_t chunks = (n + chunk - 1) / chunk;
@@ -118,11 +138,15 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     // Pass 1: how many items each chunk adds. Pass 2: write them at the prefix-sum offsets.
     std::vector<std::uint32_t>& offsets = list.chunk_offsets;
     offsets.assign(chunks + 1, 0);
+    std::vector<std::uint32_t>& point_plants = list.chunk_point_plants;
+    point_plants.assign(chunks, 0);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod) {
-            count += popcount(builder.classify(t, b, p, lod).pass_mask);
+                                          const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
+            const plant_draws d = builder.classify(t, b, p, lod, prefix);
+            count += d.items();
+            if (d.prefix_count && (d.pass_mask & (1u << unsigned(render_pass::opaque)))) ++point_plants[c];
         });
         offsets[c + 1] = count;
     });
@@ -132,12 +156,14 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         draw_item* out = list.items.data() + offsets[c];
         std::uint32_t index = std::uint32_t(begin);
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod) {
-            const plant_draws d = builder.classify(t, b, p, lod);
+                                          const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
+            const plant_draws d = builder.classify(t, b, p, lod, prefix);
             const std::uint32_t depth = quantize_depth(d.distance);
             for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
                 const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
-                *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
+                if (d.prefix_count == 0) *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
+                for (std::uint32_t i = 0; i < d.prefix_count; ++i)
+                    *out++ = {make_sort_key({pass, d.prefixes[i].mesh, depth}), index, d.prefixes[i].count};
             }
             ++index;
         });
@@ -156,6 +182,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         }
     });
     build_batches(list, library);
+    for (const std::uint32_t c : point_plants)
+        list.instances_by_representation[std::size_t(representation::points)] += c;
 }
 
 }  // namespace sylva

@@ -1,6 +1,8 @@
 #pragma once
 // Turns the frame's LOD decisions into the draw list: one draw item per (visible plant, opaque
-// pass) and per (shadow-casting plant, cascade it overlaps), keyed by pass, mesh and depth.
+// pass) and per (shadow-casting plant, cascade it overlaps), keyed by pass, mesh and depth; a
+// plant drawn as points and lines gives one item per non-empty prefix of its parts
+// (point_prefix) in each of those passes, carrying the prefix length.
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.
@@ -9,6 +11,7 @@
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
 #include "components/plant_instance.h"
+#include "components/point_prefix.h"
 #include "components/transform.h"
 #include "ecs/system.h"
 #include "systems/draw_list.h"
@@ -30,7 +33,7 @@ cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
 struct build_draw_list_system {
     static constexpr std::string_view k_name = "build_draw_list";
     static constexpr ecs::phase k_phase = ecs::phase::build;
-    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, fade_alpha,
+    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha,
                              species_library, cascade_set>;
     using writes = ecs::writes<draw_list>;
     static void run(ecs::system_context<build_draw_list_system>& ctx);

@@ -37,17 +37,25 @@ void build_batches(draw_list& list, const species_library& library) {
     const std::size_t n = list.items.size();
     for (std::size_t first = 0; first < n;) {
         const std::uint64_t bits = batch_bits(list.items[first].key);
+        const std::uint32_t primitives = list.items[first].count;
         std::size_t last = first + 1;
-        while (last < n && batch_bits(list.items[last].key) == bits) ++last;
+        while (last < n && batch_bits(list.items[last].key) == bits && list.items[last].count == primitives) ++last;
         const sort_key_fields f = decode_sort_key(list.items[first].key);
         const auto count = std::uint32_t(last - first);
-        list.batches.push_back({f.pass, f.mesh, std::uint32_t(first), count});
+        list.batches.push_back({f.pass, f.mesh, std::uint32_t(first), count, primitives});
         const mesh_info& mesh = library.meshes.at(f.mesh);
-        if (f.pass == render_pass::opaque) {
-            list.triangles += std::uint64_t(mesh.triangles) * count;
-            list.instances_by_representation[static_cast<std::size_t>(mesh.drawn_as)] += count;
+        const std::uint64_t drawn = std::uint64_t(primitives ? primitives : mesh.triangles) * count;
+        if (f.pass != render_pass::opaque) {
+            if (mesh.primitive == primitive_kind::triangles) list.shadow_triangles += drawn;
         } else {
-            list.shadow_triangles += std::uint64_t(mesh.triangles) * count;
+            switch (mesh.primitive) {
+                case primitive_kind::triangles: list.triangles += drawn; break;
+                case primitive_kind::points: list.points += drawn; break;
+                case primitive_kind::lines: list.lines += drawn; break;
+            }
+            // A plant drawn as point/line prefixes has several items; build_draw_list counts it.
+            if (mesh.drawn_as != representation::points)
+                list.instances_by_representation[static_cast<std::size_t>(mesh.drawn_as)] += count;
         }
         first = last;
     }

@@ -15,7 +15,9 @@ namespace sylva {
 struct draw_item {
     std::uint64_t key = 0;
     std::uint32_t instance = 0;  // dense index of the plant in its component tables
-    std::uint32_t pad = 0;
+    // Primitives to draw from the start of the mesh (a point/line prefix, Deussen 2002 §5.3);
+    // 0 draws the whole mesh.
+    std::uint32_t count = 0;
 };
 static_assert(sizeof(draw_item) == 16);
 
@@ -36,6 +38,7 @@ struct draw_batch {
     std::uint16_t mesh = 0;
     std::uint32_t first_instance = 0;
     std::uint32_t instance_count = 0;
+    std::uint32_t count = 0;  // primitives per instance from the mesh's start; 0: all of them
 };
 
 struct draw_list {
@@ -44,6 +47,7 @@ struct draw_list {
     std::vector<instance_gpu> instances;
     std::vector<draw_batch> batches;
     std::vector<std::uint32_t> chunk_offsets;  // build scratch: items per chunk, prefix-summed
+    std::vector<std::uint32_t> chunk_point_plants;  // build scratch: plants drawn as prefixes
     // Statistics of the opaque pass (what the viewer sees), for metrics.
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances_by_representation{};
     std::uint64_t triangles = 0;
@@ -56,7 +60,8 @@ struct draw_list {
 // key agrees (most of the key is usually constant). `scratch` is resized as needed.
 struct species_library;
 
-// Groups sorted items into batches (runs of equal pass and mesh) and fills the statistics.
+// Groups sorted items into batches (runs of equal pass, mesh and count) and fills the
+// statistics (primitives by the mesh's kind; instances of whole meshes by representation).
 void build_batches(draw_list& list, const species_library& library);
 
 void radix_sort_draw_items(std::vector<draw_item>& items, std::vector<draw_item>& scratch);

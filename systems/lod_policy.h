@@ -1,11 +1,12 @@
 #pragma once
-// How select_representation chooses, as a world resource: the runtime's own distance levels, or
-// one of the fixed policies the bench compares them with (issue 4: "each representation on its
-// own", and the typical engine baseline "full mesh near, one crossed-quad billboard beyond a
-// distance, hard switch").
+// How select_representation chooses, as a world resource: the runtime's own distance levels, the
+// point/line representation (Deussen 2002), or one of the fixed policies the bench compares them
+// with (issue 4: "each representation on its own", and the typical engine baseline "full mesh
+// near, one crossed-quad billboard beyond a distance, hard switch").
 #include <cstdint>
 
 #include "components/lod_state.h"
+#include "systems/point_line_lod.h"
 
 namespace sylva {
 
@@ -14,11 +15,22 @@ struct lod_policy {
         distance_levels,  // the species' mesh levels by distance (select_representation_system.h)
         single,           // every drawn plant as `near`
         hard_switch,      // `near` closer than switch_distance_m times the plant's scale, else `far`
+        points_lines,     // every plant as prefixes of its triangles, points and lines (§5)
     };
     kind mode = kind::distance_levels;
     representation near = representation::mesh_full;
     representation far = representation::mesh_far;
     float switch_distance_m = 50.0f;
+    // The point/line representation's d' and c_p (points_lines only). d' is the starting value
+    // when a frame-time or primitive budget controls it (Deussen 2002 §5.4).
+    point_line_quality points{};
+
+    // True when select_representation can choose the point/line representation: the scene then
+    // bakes and uploads it (and does not otherwise).
+    bool uses_point_lines() const {
+        return mode == kind::points_lines ||
+               (mode != kind::distance_levels && (near == representation::points || far == representation::points));
+    }
 };
 
 }  // namespace sylva

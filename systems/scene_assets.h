@@ -9,6 +9,7 @@
 #include "components/lod_state.h"
 #include "models/image.h"
 #include "models/mesh.h"
+#include "models/point_line_model.h"
 #include "models/terrain.h"
 
 namespace sylva {
@@ -30,18 +31,42 @@ struct species_entry {
     float bounding_radius = 1.0f;      // sphere around the model, unit scale
     float center_height = 0.5f;        // sphere centre above the base, unit scale
     float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
+    // The point/line representation's parts (species_library::lod_parts), when the scene's
+    // LOD policy can select it; none otherwise.
+    std::uint32_t first_lod_part = 0;
+    std::uint32_t lod_part_count = 0;
+};
+
+// One part of a species' point/line representation (models/point_line_model.h lod_part),
+// scaled to the species' height. Read by update_point_prefix (Deussen 2002 Eq. 1, Eq. 2, §5.3)
+// and build_draw_list (which draws its prefixes from the two meshes).
+struct lod_part_entry {
+    lod_primitive primitive = lod_primitive::points;
+    float importance = 1.0f;
+    float area_m2 = 0.0f;        // A_p or A_l
+    glm::vec3 center{0.0f};      // model space, species scale: r is measured to it
+    std::uint32_t triangle_count = 0;   // k
+    std::uint32_t primitive_count = 0;  // n_p points or n_l lines
+    std::uint32_t first_after = 0;      // into species_library::points_after (points parts)
+    float line_length_m = 0.0f;  // l
+    float line_error_m = 0.0f;   // ε_l
+    std::uint16_t mesh_triangles = 0;   // the part's triangles in random order
+    std::uint16_t mesh_primitives = 0;  // its points (reverse order) or lines
 };
 
 // What the per-frame systems need to know about a mesh id (for statistics).
 struct mesh_info {
-    std::uint32_t triangles = 0;
+    std::uint32_t triangles = 0;  // triangles, points or lines, by `primitive`
     representation drawn_as = representation::none;
+    primitive_kind primitive = primitive_kind::triangles;
 };
 
 // The species table as an ECS resource (read by select_representation and build_draw_list).
 struct species_library {
     std::vector<species_entry> species;
     std::vector<mesh_info> meshes;  // indexed by mesh id
+    std::vector<lod_part_entry> lod_parts;
+    std::vector<std::uint32_t> points_after;  // lod_part_entry::first_after indexes it
 };
 
 struct scene_assets {

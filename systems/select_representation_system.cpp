@@ -18,6 +18,9 @@ representation choose_representation(const lod_policy& policy, const species_ent
                                      float scale, float lod_scale) {
     switch (policy.mode) {
         case lod_policy::kind::single: return policy.near;
+        // The point/line representation covers every distance: its prefixes shrink with the
+        // projected size (update_point_prefix), down to polygons near and a few points far.
+        case lod_policy::kind::points_lines: return representation::points;
         case lod_policy::kind::hard_switch:
             // A NaN distance compares false and so takes the far side, like the distance levels.
             return distance_m < policy.switch_distance_m * scale * lod_scale ? policy.near : policy.far;

@@ -22,6 +22,7 @@
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/playback.h"
+#include "systems/point_line_assets.h"
 #include "systems/species_models.h"
 
 namespace sylva {
@@ -68,12 +69,15 @@ void add_mesh(scene_assets& assets, mesh_data mesh, representation drawn_as, std
     assets.meshes.push_back(std::move(mesh));
 }
 
-void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache) {
+void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
+                 const scene_needs& needs) {
     const species_settings& settings = s.species[index];
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model = load_species_model(settings, seed, cache);
     // Baked from the unscaled model, so the cache entry does not depend on height_m.
     crossed_billboard billboard = load_species_billboard(settings, seed, model, cache);
+    point_line_model point_lines;
+    if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
     // Every species is scaled to the scenario's height_m, generated or imported alike; the
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
@@ -94,6 +98,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
     add_mesh(assets, std::move(billboard.mesh), representation::crossed_billboard, entry.mesh_billboard,
              entry.triangles_billboard);
+    if (needs.point_lines) add_point_line_parts(assets, entry, point_lines, scale, settings.importance);
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
@@ -103,7 +108,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
 
 }  // namespace
 
-scene_assets build_scene_assets(const scenario& s, bake_cache* cache) {
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs) {
     scene_assets assets;
     const terrain_settings& t = s.terrain;
     assets.terrain = t.heightmap.empty()
@@ -116,7 +121,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache) {
         assets.meshes.push_back(std::move(tile));
     }
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
-    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache);
+    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
     return assets;
 }
 

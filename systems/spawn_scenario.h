@@ -9,8 +9,14 @@
 
 namespace sylva {
 
+// What a scene bakes beyond the mesh levels and crossed billboards: only what its LOD policy
+// can select (DESIGN §2, "skip what a scene doesn't need").
+struct scene_needs {
+    bool point_lines = false;  // Deussen 2002 points and lines (systems/point_line_assets.h)
+};
+
 // `cache` may be null: species models are then generated or imported every time.
-scene_assets build_scene_assets(const scenario& s, bake_cache* cache);
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs = {});
 
 struct spawn_report {
     std::size_t plants = 0;

@@ -8,6 +8,8 @@
 #include "models/gltf_import.h"
 #include "models/plant_library.h"
 #include "models/plant_model_io.h"
+#include "models/point_line_bake.h"
+#include "models/point_line_io.h"
 #include "models/random.h"
 
 namespace sylva {
@@ -66,6 +68,23 @@ crossed_billboard load_species_billboard(const species_settings& species, std::u
     return load_cached<crossed_billboard>(
         cache, "billboards", species_billboard_key(species, seed), bake,
         [](std::span<const std::byte> bytes) { return deserialize_crossed_billboard(bytes); });
+}
+
+std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed) {
+    const std::uint64_t key = hash_string("point_lines", species_model_key(species, seed));
+    return hash_string(std::to_string(k_point_line_format) + "/" + std::to_string(seed), key);
+}
+
+point_line_model load_species_point_lines(const species_settings& species, std::uint64_t seed,
+                                          const plant_model& model, bake_cache* cache) {
+    auto bake = [&] {
+        point_line_settings settings;
+        settings.seed = seed;
+        return serialize_point_line_model(bake_point_lines(model, settings));
+    };
+    return load_cached<point_line_model>(
+        cache, "point_lines", species_point_line_key(species, seed), bake,
+        [](std::span<const std::byte> bytes) { return deserialize_point_line_model(bytes); });
 }
 
 }  // namespace sylva

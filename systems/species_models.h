@@ -6,6 +6,7 @@
 #include "models/bake_cache.h"
 #include "models/crossed_billboard.h"
 #include "models/plant_model.h"
+#include "models/point_line_model.h"
 #include "scenarios/scenario.h"
 
 namespace sylva {
@@ -32,5 +33,13 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 // unscaled), through the cache ("billboards") when `cache` is not null.
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
                                          const plant_model& model, bake_cache* cache);
+
+// The cache key of a species' point/line representation: its model's key and the bake's format.
+std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed);
+
+// The point/line representation (Deussen 2002 §4) of `model` (unscaled), through the cache
+// ("point_lines") when `cache` is not null.
+point_line_model load_species_point_lines(const species_settings& species, std::uint64_t seed,
+                                          const plant_model& model, bake_cache* cache);
 
 }  // namespace sylva

@@ -1,0 +1,93 @@
+#include "systems/point_line_assets.h"
+
+#include <stdexcept>
+#include <unordered_map>
+
+namespace sylva {
+namespace {
+
+void scale_vertices(std::vector<vertex>& vertices, float scale) {
+    for (auto& v : vertices) v.position *= scale;
+}
+
+// A mesh that lists `vertices` in order as points (one index each) or lines (two each).
+mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive, material_kind material) {
+    mesh_data mesh;
+    mesh.primitive = primitive;
+    mesh.indices.resize(vertices.size());
+    for (std::uint32_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = i;
+    mesh.vertices = std::move(vertices);
+    mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material});
+    return mesh;
+}
+
+std::uint16_t add_mesh(scene_assets& assets, mesh_data mesh, std::uint32_t primitives) {
+    const auto id = std::uint16_t(assets.meshes.size());
+    assets.library.meshes.push_back({primitives, representation::points, mesh.primitive});
+    assets.meshes.push_back(std::move(mesh));
+    return id;
+}
+
+}  // namespace
+
+mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, std::uint32_t index_count,
+                            material_kind material) {
+    mesh_data out;
+    std::unordered_map<std::uint32_t, std::uint32_t> remap;
+    out.indices.reserve(index_count);
+    for (std::uint32_t i = first_index; i < first_index + index_count; ++i) {
+        const std::uint32_t source = mesh.indices.at(i);
+        const auto [it, added] = remap.try_emplace(source, std::uint32_t(out.vertices.size()));
+        if (added) out.vertices.push_back(mesh.vertices.at(source));
+        out.indices.push_back(it->second);
+    }
+    out.submeshes.push_back({0, index_count, material});
+    return out;
+}
+
+void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
+                          float importance) {
+    if (model.cells.empty()) return;
+    // One cell per plant for now; octree cells (§6.1) become entities of their own.
+    const lod_cell& cell = model.cells.front();
+    if (cell.part_count > k_max_cell_parts) throw std::runtime_error("point/line model: too many parts in a cell");
+    entry.first_lod_part = std::uint32_t(assets.library.lod_parts.size());
+    entry.lod_part_count = cell.part_count;
+    for (std::uint32_t i = cell.first_part; i < cell.first_part + cell.part_count; ++i) {
+        const lod_part& part = model.parts.at(i);
+        lod_part_entry e;
+        e.primitive = part.primitive;
+        e.importance = part.importance * importance;
+        e.area_m2 = part.area_m2 * scale * scale;
+        e.center = part.center * scale;
+        e.triangle_count = part.triangle_count;
+        e.line_length_m = part.line_length_m * scale;
+        e.line_error_m = part.line_error_m * scale;
+
+        mesh_data triangles = extract_triangles(model.triangles, part.first_index, 3 * part.triangle_count, part.material);
+        scale_vertices(triangles.vertices, scale);
+        e.mesh_triangles = add_mesh(assets, std::move(triangles), part.triangle_count);
+
+        std::vector<vertex> vertices;
+        if (part.primitive == lod_primitive::points) {
+            e.primitive_count = part.point_count;
+            e.first_after = std::uint32_t(assets.library.points_after.size());
+            const auto after = model.points_after.begin() + part.first_after;
+            assets.library.points_after.insert(assets.library.points_after.end(), after,
+                                               after + part.triangle_count + 1);
+            vertices.assign(model.points.begin() + part.first_point,
+                            model.points.begin() + part.first_point + part.point_count);
+        } else {
+            e.primitive_count = part.line_count;
+            vertices.assign(model.lines.begin() + 2 * part.first_line,
+                            model.lines.begin() + 2 * (part.first_line + part.line_count));
+        }
+        scale_vertices(vertices, scale);
+        const primitive_kind kind =
+            part.primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
+        e.mesh_primitives = add_mesh(assets, primitive_mesh(std::move(vertices), kind, part.material), e.primitive_count);
+        assets.library.lod_parts.push_back(e);
+    }
+}
+
+}  // namespace sylva

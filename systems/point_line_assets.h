@@ -1,0 +1,21 @@
+#pragma once
+// Puts a species' point/line representation (models/point_line_model.h) into a scene: for every
+// part of the plant, a mesh of its triangles in their random order and a mesh of its points or
+// lines, each drawn by prefix, and the part's entry in species_library::lod_parts, scaled to the
+// species' size. Only scenes whose LOD policy can select the representation call this.
+#include "models/point_line_model.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+// `scale` is the species' model-to-world scale (height_m over the model's height).
+// `importance` multiplies every part's baked importance (the species' user factor, §4.3).
+void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
+                          float importance);
+
+// The triangles [first_index, first_index + index_count) of `mesh` as a mesh of their own, with
+// only the vertices they use (the order of the triangles kept).
+mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, std::uint32_t index_count,
+                            material_kind material);
+
+}  // namespace sylva

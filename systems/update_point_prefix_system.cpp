@@ -1,0 +1,66 @@
+#include "systems/update_point_prefix_system.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "ecs/parallel.h"
+
+namespace sylva {
+
+static_assert(k_prefix_parts == k_max_cell_parts, "one prefix per part of a cell");
+
+glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& t) {
+    // The same yaw rotation as shaders/surface.vert: x' = c·x + s·z, z' = −s·x + c·z.
+    const double c = std::cos(double(t.yaw)), s = std::sin(double(t.yaw));
+    const glm::dvec3 m = glm::dvec3(part.center) * double(t.scale);
+    return t.position + glm::dvec3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z);
+}
+
+point_prefix compute_point_prefix(const species_library& library, const species_entry& species,
+                                  const world_transform& t, const glm::dvec3& eye, double sample_distance,
+                                  double splat_factor, const primitive_costs& costs) {
+    point_prefix prefix;
+    const double scale = double(t.scale);
+    for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
+        const lod_part_entry& part = library.lod_parts[species.first_lod_part + i];
+        const double r = glm::length(part_world_center(part, t) - eye);
+        // §4.3: importance scales the area the part is taken to cover (and so p or q).
+        const double area = double(part.area_m2) * scale * scale * double(part.importance);
+        part_draw d;
+        if (part.primitive == lod_primitive::points) {
+            const double p = required_points(area, r, sample_distance, splat_factor);
+            d = blend_points(p, part.triangle_count,
+                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs);
+        } else {
+            d = select_lines(area, double(part.line_length_m) * scale, double(part.line_error_m) * scale,
+                             part.primitive_count, part.triangle_count, r, sample_distance, costs);
+        }
+        prefix.triangles[i] = d.triangles;
+        prefix.primitives[i] = d.primitives;
+    }
+    return prefix;
+}
+
+void update_point_prefix_system::run(ecs::system_context<update_point_prefix_system>& ctx) {
+    const lod_policy& policy = ctx.resource<lod_policy>();
+    if (!policy.uses_point_lines()) return;  // nothing to do costs nothing
+    const camera& cam = ctx.single<camera>();
+    const species_library& library = ctx.resource<species_library>();
+    const double d = image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px);
+    const double c_p = policy.points.splat_factor;
+    const primitive_costs& costs = ctx.resource<primitive_costs>();
+    auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
+    ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
+                                          const lod_state& lod, point_prefix& prefix) {
+            if (lod.current != representation::points) {
+                prefix = {};
+                return;
+            }
+            const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
+            prefix = compute_point_prefix(library, species, t, cam.position, d, c_p, costs);
+        });
+    });
+}
+
+}  // namespace sylva

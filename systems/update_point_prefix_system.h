@@ -1,0 +1,38 @@
+#pragma once
+// Deussen 2002 §5: for every plant drawn with the point/line representation, how much of each
+// part to draw this frame: Eq. 1 and the §5.3 blend for point parts, Eq. 2 for line parts,
+// each with r the distance from the eye to the part's centre (so the parts of one plant, and
+// later the octree cells of a big one, §6.1, choose independently). §4.3 importance multiplies
+// a part's effective area, so important parts keep more primitives and stay polygonal longer.
+// The device's primitive costs (a resource, primitive_costs: measured where Sylva runs, the
+// paper's 1:3 point:triangle otherwise) set where parts turn polygonal. Writes the prefix
+// lengths (point_prefix) that build_draw_list draws, in parallel chunks.
+#include "components/camera.h"
+#include "components/lod_state.h"
+#include "components/plant_instance.h"
+#include "components/point_prefix.h"
+#include "components/transform.h"
+#include "ecs/system.h"
+#include "systems/lod_policy.h"
+#include "systems/scene_assets.h"
+
+namespace sylva {
+
+// The prefixes of one plant (pure, for tests): `sample_distance` is d' in image-plane units.
+point_prefix compute_point_prefix(const species_library& library, const species_entry& species,
+                                  const world_transform& t, const glm::dvec3& eye, double sample_distance,
+                                  double splat_factor, const primitive_costs& costs = {});
+
+// A part's centre in camera-relative world space (the yaw and scale of the instance applied).
+glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& t);
+
+struct update_point_prefix_system {
+    static constexpr std::string_view k_name = "update_point_prefix";
+    static constexpr ecs::phase k_phase = ecs::phase::transition;
+    using reads = ecs::reads<camera, world_transform, plant_instance, lod_state, species_library, lod_policy,
+                             primitive_costs>;
+    using writes = ecs::writes<point_prefix>;
+    static void run(ecs::system_context<update_point_prefix_system>& ctx);
+};
+
+}  // namespace sylva

@@ -1,0 +1,168 @@
+// The point/line prefixes a plant gets for a known camera equal Eq. 1, Eq. 2 and the §5.3 blend
+// computed by hand, and build_draw_list draws exactly those prefixes.
+#include "systems/update_point_prefix_system.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "components/bounds.h"
+#include "components/fade_alpha.h"
+#include "ecs/executor.h"
+#include "ecs/schedule.h"
+#include "systems/build_draw_list_system.h"
+#include "systems/cull_system.h"
+#include "systems/select_representation_system.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+// One species of two parts: a point part (k = 10 triangles, 20 stratified points, A_p = 0.08)
+// and a line part (k = 40 triangles, n_l = 10 lines, A_l = 0.18, l = 5, ε_l = 0.01), both
+// centred on the plant's base. The camera looks down -z with a 90° field of view over 500
+// pixels, so d' = 1 px is 0.004 on the image plane.
+struct prefix_scene {
+    ecs::world world;
+    ecs::schedule schedule;
+
+    explicit prefix_scene(std::vector<double> distances, float point_importance = 1.0f) {
+        species_library library;
+        species_entry plant;
+        plant.bounding_radius = 0.5f;
+        plant.max_distance_m = 1e5f;
+        plant.first_lod_part = 0;
+        plant.lod_part_count = 2;
+        library.species = {plant};
+        library.meshes = {{10, representation::points, primitive_kind::triangles},
+                          {20, representation::points, primitive_kind::points},
+                          {40, representation::points, primitive_kind::triangles},
+                          {10, representation::points, primitive_kind::lines}};
+        lod_part_entry points;
+        points.primitive = lod_primitive::points;
+        points.importance = point_importance;
+        points.area_m2 = 0.08f;
+        points.triangle_count = 10;
+        points.primitive_count = 20;
+        points.mesh_triangles = 0;
+        points.mesh_primitives = 1;
+        for (std::uint32_t t = 0; t <= 10; ++t) library.points_after.push_back(2 * (10 - t));
+        lod_part_entry lines;
+        lines.primitive = lod_primitive::lines;
+        lines.area_m2 = 0.18f;
+        lines.triangle_count = 40;
+        lines.primitive_count = 10;
+        lines.line_length_m = 5.0f;
+        lines.line_error_m = 0.01f;
+        lines.mesh_triangles = 2;
+        lines.mesh_primitives = 3;
+        library.lod_parts = {points, lines};
+        for (double z : distances) {
+            const ecs::entity e = world.create();
+            world.emplace<world_transform>(e, {{0.0, 0.0, -z}, 0.7f, 1.0f});
+            world.emplace<bounds>(e, {0.5f, 0.0f});
+            world.emplace<plant_instance>(e, {species_id{0}, 0, 0});
+            world.emplace<lod_state>(e);
+            world.emplace<point_prefix>(e);
+            world.emplace<fade_alpha>(e);
+        }
+        world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
+        camera cam;
+        cam.position = {0.0, 0.0, 0.0};
+        cam.fov_y = float(std::numbers::pi / 2.0);
+        cam.aspect = 1.0f;
+        cam.viewport_height_px = 500.0f;
+        cam.far_plane = 1e5f;
+        derive_camera_matrices(cam);
+        world.emplace<camera>(world.create(), cam);
+        world.set_resource(std::move(library));
+        world.set_resource(shadow_settings{1, 1024, 1.0f, 0.5f});
+        world.set_resource(cascade_set{});
+        world.set_resource(draw_list{});
+        lod_policy policy;
+        policy.mode = lod_policy::kind::points_lines;
+        policy.points = {1.0f, 1.0f};
+        world.set_resource(policy);
+        world.set_resource(primitive_costs{});  // the paper's: a triangle costs three points
+        schedule.add<cull_system>();
+        schedule.add<select_representation_system>();
+        schedule.add<update_point_prefix_system>();
+        schedule.add<build_draw_list_system>();
+        schedule.build();
+    }
+
+    const point_prefix& prefix(std::size_t i) const { return world.table<point_prefix>().data()[i]; }
+};
+
+TEST(update_point_prefix, prefixes_equal_eq1_eq2_and_the_blend_for_a_known_camera) {
+    // p(r) = ½·0.08/r² / 0.004² = 2500/r² and q(r) = A_l/(r·l·d') = 0.18/(r·0.02) = 9/r; the
+    // distances keep p and q·n_l away from whole numbers, where float rounding could go either way.
+    prefix_scene scene({5.0, 9.5, 10.5, 13.0, 30.0});
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    // r = 5: p = 100 >= 3k → all 10 triangles; q = 1.8 > 1 → all 40 line-part triangles.
+    EXPECT_EQ(scene.prefix(0).triangles[0], 10u);
+    EXPECT_EQ(scene.prefix(0).primitives[0], 0u);
+    EXPECT_EQ(scene.prefix(0).triangles[1], 40u);
+    EXPECT_EQ(scene.prefix(0).primitives[1], 0u);
+    // r = 9.5: p = 27.70 → 7 triangles + the 6 points of the other 3; q = 0.947 → 9 lines.
+    EXPECT_EQ(scene.prefix(1).triangles[0], 7u);
+    EXPECT_EQ(scene.prefix(1).primitives[0], 6u);
+    EXPECT_EQ(scene.prefix(1).triangles[1], 0u);
+    EXPECT_EQ(scene.prefix(1).primitives[1], 9u);
+    // r = 10.5: p = 22.68 → 2 triangles + 16 points; q = 0.857 → 9 lines.
+    EXPECT_EQ(scene.prefix(2).triangles[0], 2u);
+    EXPECT_EQ(scene.prefix(2).primitives[0], 16u);
+    EXPECT_EQ(scene.prefix(2).primitives[1], 9u);
+    // r = 13: p = 14.79 → the first 14 points; q = 0.692 → 7 lines.
+    EXPECT_EQ(scene.prefix(3).triangles[0], 0u);
+    EXPECT_EQ(scene.prefix(3).primitives[0], 14u);
+    EXPECT_EQ(scene.prefix(3).primitives[1], 7u);
+    // r = 30: p = 2.78 → 2 points; q = 0.3 → 3 lines.
+    EXPECT_EQ(scene.prefix(4).primitives[0], 2u);
+    EXPECT_EQ(scene.prefix(4).primitives[1], 3u);
+}
+
+TEST(update_point_prefix, importance_slows_the_reduction_of_a_part) {
+    prefix_scene ordinary({20.0});
+    prefix_scene important({20.0}, 2.0f);
+    ecs::executor executor(1);
+    ordinary.schedule.run(ordinary.world, executor);
+    important.schedule.run(important.world, executor);
+    // r = 20: p = 6.25 → 6 points; with importance 2, p = 12.5 → 12 points.
+    EXPECT_EQ(ordinary.prefix(0).primitives[0], 6u);
+    EXPECT_EQ(important.prefix(0).primitives[0], 12u);
+    // The line part is not affected.
+    EXPECT_EQ(ordinary.prefix(0).primitives[1], important.prefix(0).primitives[1]);
+}
+
+TEST(update_point_prefix, build_draw_list_draws_exactly_the_prefixes) {
+    prefix_scene scene({10.5});
+    ecs::executor executor(1);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    std::vector<std::pair<std::uint16_t, std::uint32_t>> opaque;
+    for (const auto& item : list.items)
+        if (decode_sort_key(item.key).pass == render_pass::opaque)
+            opaque.emplace_back(decode_sort_key(item.key).mesh, item.count);
+    // 2 triangles of mesh 0, 16 points of mesh 1, 9 lines of mesh 3; no line-part triangles.
+    EXPECT_EQ(opaque, (std::vector<std::pair<std::uint16_t, std::uint32_t>>{{0, 2}, {1, 16}, {3, 9}}));
+    EXPECT_EQ(list.triangles, 2u);
+    EXPECT_EQ(list.points, 16u);
+    EXPECT_EQ(list.lines, 9u);
+    EXPECT_EQ(list.instances_by_representation[std::size_t(representation::points)], 1u);
+}
+
+TEST(update_point_prefix, the_part_centre_follows_the_instance_yaw_and_scale) {
+    lod_part_entry part;
+    part.center = {1.0f, 2.0f, 0.0f};
+    const world_transform t{{10.0, 0.0, 0.0}, float(std::numbers::pi / 2.0), 2.0f};
+    // yaw 90°: x' = c·x + s·z = 0, z' = −s·x + c·z = −2 (scaled x = 2).
+    const glm::dvec3 c = part_world_center(part, t);
+    EXPECT_NEAR(c.x, 10.0, 1e-6);
+    EXPECT_NEAR(c.y, 4.0, 1e-6);
+    EXPECT_NEAR(c.z, -2.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace sylva
