@@ -4,7 +4,22 @@
 // pass, so they cast leaf-shaped shadows); billboards take their normal from a normal map baked
 // from the plant (models/crossed_billboard.h) and are shaded like leaves with it.
 // WRITE_ID also writes which instance covers the pixel (measure/: coverage, lighting jumps).
+// PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
+// each sample takes the texture's colour where it was baked (a slightly filtered level: a
+// splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
+// opaque texel), and is lit with its surface's normal turned towards the eye, as a leaf card's
+// visible side is.
 #include "common.glsl"
+
+#if defined(PRIMITIVE_LINES) && !defined(SHADOW_PASS)
+// Lines reach this shader through line.geom, whose outputs are g_*: the same varyings renamed.
+#define v_position g_position
+#define v_normal g_normal
+#define v_uv g_uv
+#define v_tint g_tint
+#define v_layer g_layer
+#define v_instance g_instance
+#endif
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -52,19 +67,27 @@ float sun_visibility(vec3 position, vec3 normal, float view_depth) {
 }
 #endif
 
+#if defined(PRIMITIVE_POINTS) || defined(PRIMITIVE_LINES)
+#define PRIMITIVE_SAMPLES
+#endif
+
 void main() {
-#ifdef MATERIAL_GROUND
+#if defined(MATERIAL_GROUND)
     vec4 albedo = texture(u_albedo, vec3(v_uv * u_params.w, v_layer));
+#elif defined(PRIMITIVE_SAMPLES)
+    vec4 albedo = textureLod(u_albedo, vec3(v_uv, v_layer), 1.0);
 #else
     vec4 albedo = texture(u_albedo, vec3(v_uv, v_layer));
 #endif
-#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
+#if (defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)) && !defined(PRIMITIVE_SAMPLES)
     if (albedo.a < 0.5) discard;
 #endif
 #ifndef SHADOW_PASS
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
     vec3 n = normalize(v_normal);
-#ifdef MATERIAL_LEAF
+#if defined(PRIMITIVE_SAMPLES)
+    if (dot(n, v_position) > 0.0) n = -n;  // the side of the surface that faces the eye
+#elif defined(MATERIAL_LEAF)
     if (!gl_FrontFacing) n = -n;  // leaves are thin double-sided cards
 #endif
 #ifdef MATERIAL_BILLBOARD

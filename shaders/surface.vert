@@ -2,6 +2,10 @@
 // shared vertex buffer, one instance record (camera-relative position, yaw, scale, tint, fade,
 // texture layer) per instance. SHADOW_PASS renders depth from the sun's cascade instead.
 // WRITE_ID (measurement) passes the draw-list instance index on for the ID buffer.
+// PRIMITIVE_POINTS draws the point representation (Deussen 2002 §5.1): each point a square
+// splat of u_splat_px pixels on screen; in a shadow cascade the same world footprint (the
+// splat's image-plane size times the distance from the eye) in shadow-map texels.
+// PRIMITIVE_LINES hands lines to line.geom, which widens them to d' pixels.
 #ifdef WRITE_ID
 #extension GL_ARB_shader_draw_parameters : require
 #endif
@@ -15,6 +19,10 @@ layout(location = 4) in vec4 in_instance_scale_tint_fade_layer;
 
 #ifdef SHADOW_PASS
 uniform int u_cascade;
+#endif
+#ifdef PRIMITIVE_POINTS
+uniform float u_splat_px;     // splat side on screen, pixels
+uniform float u_splat_plane;  // the same on the image plane at distance one
 #endif
 
 out vec3 v_position;  // camera-relative world position
@@ -48,7 +56,13 @@ void main() {
 #endif
 #ifdef SHADOW_PASS
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
+#ifdef PRIMITIVE_POINTS
+    gl_PointSize = max(1.0, u_splat_plane * length(world) / u_cascade_texel_world[u_cascade]);
+#endif
 #else
     gl_Position = u_view_projection * vec4(world, 1.0);
+#ifdef PRIMITIVE_POINTS
+    gl_PointSize = u_splat_px;
+#endif
 #endif
 }

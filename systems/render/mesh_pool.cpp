@@ -64,10 +64,11 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh) {
     m_uploaded_bytes += std::uint64_t(vertex_bytes + index_bytes);
 
     gpu_mesh gpu;
+    gpu.primitive = mesh.primitive;
     for (const auto& sub : mesh.submeshes) {
         gpu.submeshes.push_back({std::uint32_t(m_index_count + sub.first_index), sub.index_count,
                                  std::int32_t(m_vertex_count), sub.material});
-        gpu.triangle_count += sub.index_count / 3;
+        if (mesh.primitive == primitive_kind::triangles) gpu.triangle_count += sub.index_count / 3;
     }
     m_vertex_count += mesh.vertices.size();
     m_index_count += mesh.indices.size();

@@ -18,7 +18,8 @@ struct gpu_submesh {
 
 struct gpu_mesh {
     std::vector<gpu_submesh> submeshes;
-    std::uint32_t triangle_count = 0;
+    std::uint32_t triangle_count = 0;  // triangle meshes only
+    primitive_kind primitive = primitive_kind::triangles;
 };
 
 class mesh_pool {

@@ -22,6 +22,12 @@ constexpr int k_sky_height = 64;
 constexpr float k_fog_density = 0.0009f;
 
 constexpr std::size_t material_index(material_kind m) { return static_cast<std::size_t>(m); }
+constexpr std::uint32_t vertices_per(primitive_kind p) {
+    return p == primitive_kind::triangles ? 3u : (p == primitive_kind::lines ? 2u : 1u);
+}
+constexpr GLenum gl_mode(primitive_kind p) {
+    return p == primitive_kind::triangles ? GL_TRIANGLES : (p == primitive_kind::lines ? GL_LINES : GL_POINTS);
+}
 constexpr bool alpha_tested(material_kind m) { return m == material_kind::leaf || m == material_kind::billboard; }
 
 void setup_instance_attributes(GLuint vao) {
@@ -93,16 +99,22 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
 
 renderer::~renderer() = default;
 
-GLuint renderer::surface_program(material_kind material, bool shadow) {
-    program_source source{"surface.vert", "surface.frag", {}};
+GLuint renderer::surface_program(material_kind material, bool shadow, primitive_kind primitive) {
+    program_source source{"surface.vert", "surface.frag", {}, {}};
+    if (primitive == primitive_kind::points) source.defines.push_back("PRIMITIVE_POINTS");
+    if (primitive == primitive_kind::lines) {
+        source.defines.push_back("PRIMITIVE_LINES");
+        if (!shadow) source.geometry = "line.geom";  // d'-wide quads; shadows take 1-texel lines
+    }
     if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
     if (material == material_kind::billboard) source.defines.push_back("MATERIAL_BILLBOARD");
     if (!shadow && m_settings.id_buffer) source.defines.push_back("WRITE_ID");
     if (shadow) {
         source.defines.push_back("SHADOW_PASS");
-        // Opaque casters need no fragment shader at all: depth only.
-        if (!alpha_tested(material)) source.fragment.clear();
+        // Opaque casters need no fragment shader at all: depth only. Points and lines are
+        // never alpha-tested (the bake put them on opaque texels).
+        if (!alpha_tested(material) || primitive != primitive_kind::triangles) source.fragment.clear();
     }
     return m_shaders.program(source);
 }
@@ -171,14 +183,20 @@ void renderer::write_commands(const frame_view& view) {
     static_assert(sizeof(indirect_command) == 20);
     auto& groups = m_command_groups;
     for (auto& g : groups) g.clear();
-    auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count) {
-        for (const auto& sub : mesh.submeshes)
-            groups[std::size_t(pass) * k_materials + material_index(sub.material)].push_back(
-                {sub.index_count, count, sub.first_index, sub.base_vertex, first});
+    // `primitives` > 0 draws that many primitives from the start of each submesh (a prefix,
+    // Deussen 2002 §5.3); 0 draws them all.
+    auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count,
+                   std::uint32_t primitives = 0) {
+        const std::uint32_t per = vertices_per(mesh.primitive);
+        for (const auto& sub : mesh.submeshes) {
+            const std::uint32_t indices = primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
+            groups[std::size_t(pass) * k_groups_per_pass + group_of(sub.material, mesh.primitive)].push_back(
+                {indices, count, sub.first_index, sub.base_vertex, first});
+        }
     };
     for (const auto& batch : draws.batches) {
         if (is_shadow_pass(batch.pass) && int(batch.pass) >= m_cascade_count) continue;
-        add(batch.pass, m_meshes.get(batch.mesh), batch.first_instance, batch.instance_count);
+        add(batch.pass, m_meshes.get(batch.mesh), batch.first_instance, batch.instance_count, batch.count);
     }
     // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
     const auto terrain_instance = std::uint32_t(draws.instances.size());
@@ -198,7 +216,7 @@ void renderer::write_commands(const frame_view& view) {
 
     m_indirect_commands = 0;
     for (std::size_t g = 0; g < k_command_groups; ++g) {
-        auto& range = m_commands[g / k_materials][g % k_materials];
+        auto& range = m_commands[g / k_groups_per_pass][g % k_groups_per_pass];
         range = {};
         if (groups[g].empty()) continue;
         const std::size_t bytes = groups[g].size() * sizeof(indirect_command);
@@ -210,14 +228,15 @@ void renderer::write_commands(const frame_view& view) {
     }
 }
 
-void renderer::draw_group(const command_range& range, GLuint program, bool cull_back_faces) {
+void renderer::draw_group(const command_range& range, GLuint program, bool cull_back_faces,
+                          primitive_kind primitive) {
     if (range.count == 0) return;
     glUseProgram(program);
     if (cull_back_faces)
         glEnable(GL_CULL_FACE);
     else
         glDisable(GL_CULL_FACE);
-    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+    glMultiDrawElementsIndirect(gl_mode(primitive), GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(range.offset), GLsizei(range.count), 0);
     ++m_draw_calls;
 }
@@ -233,23 +252,24 @@ void renderer::draw_shadow_cascades() {
         glUseProgram(ground);
         glUniform1i(glGetUniformLocation(ground, "u_cascade"), c);
         const auto& groups = m_commands[std::size_t(shadow_pass(c))];
-        draw_group(groups[material_index(material_kind::ground)], ground, false);
+        draw_group(groups[group_of(material_kind::ground, primitive_kind::triangles)], ground, false);
         const GLuint bark = surface_program(material_kind::bark, true);
         glUseProgram(bark);
         glUniform1i(glGetUniformLocation(bark, "u_cascade"), c);
-        draw_group(groups[material_index(material_kind::bark)], bark, false);
+        draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles)], bark, false);
         const GLuint leaf = surface_program(material_kind::leaf, true);
         glUseProgram(leaf);
         glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
         glBindTextureUnit(0, m_leaf_textures.id());
-        draw_group(groups[material_index(material_kind::leaf)], leaf, false);
-        if (groups[material_index(material_kind::billboard)].count) {
+        draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles)], leaf, false);
+        if (groups[group_of(material_kind::billboard, primitive_kind::triangles)].count) {
             const GLuint billboard = surface_program(material_kind::billboard, true);
             glUseProgram(billboard);
             glUniform1i(glGetUniformLocation(billboard, "u_cascade"), c);
             glBindTextureUnit(0, m_billboard_albedo.id());
-            draw_group(groups[material_index(material_kind::billboard)], billboard, false);
+            draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)], billboard, false);
         }
+        draw_samples(groups, c);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     m_timer.end();
@@ -268,18 +288,45 @@ void renderer::draw_opaque() {
     if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());
     const auto& groups = m_commands[std::size_t(render_pass::opaque)];
     glBindTextureUnit(0, m_ground_texture.id());
-    draw_group(groups[material_index(material_kind::ground)], surface_program(material_kind::ground, false), true);
+    draw_group(groups[group_of(material_kind::ground, primitive_kind::triangles)], surface_program(material_kind::ground, false), true);
     glBindTextureUnit(0, m_bark_textures.id());
-    draw_group(groups[material_index(material_kind::bark)], surface_program(material_kind::bark, false), true);
+    draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles)], surface_program(material_kind::bark, false), true);
     glBindTextureUnit(0, m_leaf_textures.id());
-    draw_group(groups[material_index(material_kind::leaf)], surface_program(material_kind::leaf, false), false);
-    if (groups[material_index(material_kind::billboard)].count) {
+    draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles)], surface_program(material_kind::leaf, false), false);
+    if (groups[group_of(material_kind::billboard, primitive_kind::triangles)].count) {
         glBindTextureUnit(0, m_billboard_albedo.id());
         glBindTextureUnit(2, m_billboard_normal.id());
-        draw_group(groups[material_index(material_kind::billboard)],
+        draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)],
                    surface_program(material_kind::billboard, false), false);
     }
+    draw_samples(groups, -1);
     m_timer.end();
+}
+
+// The point and line representation's samples (Deussen 2002 §5.1, §5.2) of bark and leaf
+// parts, in a shadow cascade (`cascade` >= 0) or the view (-1).
+void renderer::draw_samples(const pass_commands& groups, int cascade) {
+    const bool shadow = cascade >= 0;
+    for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
+        for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
+            const command_range& range = groups[group_of(material, primitive)];
+            if (range.count == 0) continue;
+            const GLuint program = surface_program(material, shadow, primitive);
+            glUseProgram(program);
+            if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
+            if (primitive == primitive_kind::points) {
+                glEnable(GL_PROGRAM_POINT_SIZE);
+                glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
+                glUniform1f(glGetUniformLocation(program, "u_splat_plane"), m_splat_plane);
+            } else if (!shadow) {
+                glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
+                glUniform2f(glGetUniformLocation(program, "u_viewport_px"), float(m_settings.width),
+                            float(m_settings.height));
+            }
+            glBindTextureUnit(0, material == material_kind::leaf ? m_leaf_textures.id() : m_bark_textures.id());
+            draw_group(range, program, false, primitive);
+        }
+    }
 }
 
 void renderer::draw_sky() {
@@ -288,7 +335,7 @@ void renderer::draw_sky() {
     m_target.draw_ids(false);  // the sky leaves ID 0
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    glUseProgram(m_shaders.program({"sky.vert", "sky.frag", {}}));
+    glUseProgram(m_shaders.program({"sky.vert", "sky.frag", {}, {}}));
     glBindTextureUnit(0, m_sky_texture.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++m_draw_calls;
@@ -300,6 +347,9 @@ void renderer::render(const frame_view& view) {
     const auto start = std::chrono::steady_clock::now();
     m_frame_upload_bytes = 0;
     m_draw_calls = 0;
+    m_splat_px = view.splat_px;
+    m_splat_plane = view.splat_plane;
+    m_line_width_px = view.line_width_px;
     const auto& draws = *view.draws;
     std::size_t commands = (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_materials;
     std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +

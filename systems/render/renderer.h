@@ -46,6 +46,11 @@ struct frame_view {
     const draw_list* draws = nullptr;
     glm::vec3 terrain_position{0.0f};  // camera-relative
     float time_s = 0.0f;
+    // The point/line representation (Deussen 2002 §5): splat side in pixels and in image-plane
+    // units at distance one, and line width d' in pixels.
+    float splat_px = 1.0f;
+    float splat_plane = 0.0f;
+    float line_width_px = 1.0f;
 };
 
 class renderer {
@@ -68,15 +73,21 @@ public:
     void present(int window_width, int window_height) const;
     std::size_t programs_compiled() const { return m_shaders.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
+    // Uploads a mesh after construction (its id follows the scene's meshes); draw lists may then
+    // name it. Used by the primitive-cost calibration.
+    std::uint16_t add_mesh(const mesh_data& mesh) { return m_meshes.add(mesh); }
+    const renderer_settings& settings() const { return m_settings; }
 
 private:
     struct command_range {
         std::size_t offset = 0;  // bytes into the ring buffer
         std::uint32_t count = 0;
     };
-    // Indirect command groups per pass (shadow cascades and opaque) and material.
-    static constexpr std::size_t k_materials = 4;  // material_kind: bark, leaf, ground, billboard
-    using pass_commands = std::array<command_range, k_materials>;
+    // Indirect command groups per pass (shadow cascades and opaque), material and primitive.
+    static constexpr std::size_t k_materials = 4;   // material_kind: bark, leaf, ground, billboard
+    static constexpr std::size_t k_primitives = 3;  // primitive_kind: triangles, points, lines
+    static constexpr std::size_t k_groups_per_pass = k_materials * k_primitives;
+    using pass_commands = std::array<command_range, k_groups_per_pass>;
     // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
     struct indirect_command {
         std::uint32_t count;
@@ -85,17 +96,23 @@ private:
         std::int32_t base_vertex;
         std::uint32_t base_instance;
     };
-    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * k_materials;
+    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * k_groups_per_pass;
+    static constexpr std::size_t group_of(material_kind m, primitive_kind p) {
+        return std::size_t(p) * k_materials + std::size_t(m);
+    }
 
     void update_sky_texture(const frame_view& view);
     void write_uniforms(const frame_view& view);
     void write_instances(const frame_view& view);
     void write_commands(const frame_view& view);
-    void draw_group(const command_range& range, GLuint program, bool cull_back_faces);
+    void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
+                    primitive_kind primitive = primitive_kind::triangles);
+    void draw_samples(const pass_commands& groups, int cascade);
     void draw_shadow_cascades();
     void draw_opaque();
     void draw_sky();
-    GLuint surface_program(material_kind material, bool shadow);
+    GLuint surface_program(material_kind material, bool shadow,
+                           primitive_kind primitive = primitive_kind::triangles);
 
     renderer_settings m_settings;
     shader_library m_shaders;
@@ -124,6 +141,9 @@ private:
     // allocating in the frame loop.
     std::array<std::vector<indirect_command>, k_command_groups> m_command_groups;
     std::size_t m_uniform_offset = 0;
+    float m_splat_px = 1.0f;
+    float m_splat_plane = 0.0f;
+    float m_line_width_px = 1.0f;
     int m_cascade_count = 0;
     std::uint64_t m_frame_upload_bytes = 0;
     std::uint64_t m_static_upload_bytes = 0;

@@ -60,7 +60,7 @@ GLuint compile(GLenum stage, const std::string& text, std::string_view path) {
 }
 
 std::string key_of(const program_source& source) {
-    std::string key = source.vertex + "|" + source.fragment;
+    std::string key = source.vertex + "|" + source.geometry + "|" + source.fragment;
     for (const auto& d : source.defines) key += "|" + d;
     return key;
 }
@@ -82,6 +82,11 @@ GLuint shader_library::program(const program_source& source) {
     gl_program program(glCreateProgram());
     GLuint vs = compile(GL_VERTEX_SHADER, expand(source.vertex, source.defines), source.vertex);
     glAttachShader(program.id(), vs);
+    GLuint gs = 0;
+    if (!source.geometry.empty()) {
+        gs = compile(GL_GEOMETRY_SHADER, expand(source.geometry, source.defines), source.geometry);
+        glAttachShader(program.id(), gs);
+    }
     GLuint fs = 0;
     if (!source.fragment.empty()) {
         fs = compile(GL_FRAGMENT_SHADER, expand(source.fragment, source.defines), source.fragment);
@@ -89,6 +94,7 @@ GLuint shader_library::program(const program_source& source) {
     }
     glLinkProgram(program.id());
     glDeleteShader(vs);
+    if (gs) glDeleteShader(gs);
     if (fs) glDeleteShader(fs);
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);

@@ -9,6 +9,7 @@
 #include "systems/draw_list.h"
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
+#include "systems/lod_policy.h"
 #include "systems/playback.h"
 #include "systems/render/renderer.h"
 
@@ -24,7 +25,7 @@ struct submit_system {
     static constexpr std::string_view k_name = "submit";
     static constexpr ecs::phase k_phase = ecs::phase::submit;
     static constexpr bool k_main_thread = true;
-    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock>;
+    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy>;
     using writes = ecs::writes<render_device, frame_stats>;
     static void run(ecs::system_context<submit_system>& ctx);
 };

@@ -97,12 +97,34 @@ TEST(shader_library, every_surface_variant_compiles_and_links_once) {
     const std::vector<std::vector<std::string>> variants = {
         {}, {"MATERIAL_LEAF"}, {"MATERIAL_GROUND"}, {"SHADOW_PASS"}, {"MATERIAL_LEAF", "SHADOW_PASS"}};
     for (const auto& defines : variants) {
-        const GLuint p = shaders.program({"surface.vert", "surface.frag", defines});
+        const GLuint p = shaders.program({"surface.vert", "surface.frag", defines, {}});
         EXPECT_NE(p, 0u);
-        EXPECT_EQ(shaders.program({"surface.vert", "surface.frag", defines}), p);
+        EXPECT_EQ(shaders.program({"surface.vert", "surface.frag", defines, {}}), p);
     }
-    EXPECT_NE(shaders.program({"sky.vert", "sky.frag", {}}), 0u);
+    EXPECT_NE(shaders.program({"sky.vert", "sky.frag", {}, {}}), 0u);
     EXPECT_EQ(shaders.compiled_count(), variants.size() + 1);
+}
+
+TEST(shader_library, point_and_line_variants_compile_and_link_with_the_line_geometry_shader) {
+    SYLVA_REQUIRE_GL();
+    render::shader_library shaders;
+    // Leaf samples, and bark samples (bark has no material define).
+    for (const std::vector<std::string>& material : {std::vector<std::string>{"MATERIAL_LEAF"}, std::vector<std::string>{}}) {
+        auto with = [&](std::initializer_list<std::string> more) {
+            std::vector<std::string> d = material;
+            d.insert(d.end(), more);
+            return d;
+        };
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_POINTS", "SHADOW_PASS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES"}), "line.geom"}), 0u);
+        EXPECT_NE(
+            shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), "line.geom"}),
+            0u);
+        EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_LINES", "SHADOW_PASS"}), {}}), 0u);
+    }
+    EXPECT_EQ(shaders.compiled_count(), 12u);
 }
 
 TEST(shader_library, includes_are_expanded_and_missing_files_are_named) {
