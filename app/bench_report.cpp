@@ -267,6 +267,7 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"reference",
                                 {{"samples_per_pixel", report.reference_samples_per_pixel},
                                  {"frame_ms_median", number(report.reference_frame_ms_median)}}},
+                               {"primitive_costs", report.primitive_costs},
                                {"configurations", configurations}};
     write_atomically(path, root.dump(2) + "\n");
 }

@@ -55,6 +55,9 @@ struct bench_report {
     std::uint32_t frames = 0;
     std::uint32_t reference_samples_per_pixel = 9;
     double reference_frame_ms_median = 0.0;
+    // The device's relative primitive costs the point/line configurations selected with
+    // (triangle, point, line; systems/render/primitive_cost_calibration.h); empty without them.
+    std::map<std::string, double> primitive_costs;
     std::vector<bench_configuration> configurations;
 };
 

@@ -66,6 +66,7 @@ scenario configured(const scenario& s, const bench_configuration_spec& c) {
 
 player_options measured(player_options options) {
     options.id_buffer = true;
+    options.scenario_lod = false;  // each configuration draws exactly what it names
     return options;
 }
 
@@ -139,9 +140,15 @@ bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
 
 bench_configuration run_configuration(const scenario& s, const bench_configuration_spec& spec,
                                       const reference_frames& ref, render::gl_context& context, bake_cache* cache,
-                                      const bench_settings& settings, int index, std::size_t count) {
+                                      bench_settings& settings, int index, std::size_t count) {
     reset_peak_resident();
-    scenario_player player(configured(s, spec), settings.threads, &context, cache, measured(spec.options));
+    player_options options = measured(spec.options);
+    if (settings.costs) {
+        options.costs = *settings.costs;
+        options.measure_costs = false;
+    }
+    scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
+    if (options.measure_costs && options.policy.uses_point_lines()) settings.costs = player.costs();
     warm_up(player);
     bench_configuration out;
     out.name = spec.name;
@@ -256,6 +263,24 @@ bench_configuration_spec baseline(float distance_m, bool named_baseline) {
     return c;
 }
 
+// Deussen 2002: every plant as prefixes of its random-order triangles, points and lines, with
+// sample distance d' (pixels); the sweep trades error for time (§5.4).
+bench_configuration_spec points_lines(float sample_distance_px) {
+    bench_configuration_spec c;
+    std::ostringstream name;
+    name << "points_lines";
+    if (sample_distance_px != 1.0f) name << "_d" << sample_distance_px;
+    c.name = name.str();
+    c.family = "points_lines";
+    std::ostringstream description;
+    description << "points and lines (Deussen 2002), d' = " << sample_distance_px << " px, c_p = 1.3";
+    c.description = description.str();
+    c.quality = sample_distance_px;
+    c.options.policy.mode = lod_policy::kind::points_lines;
+    c.options.policy.points = {sample_distance_px, 1.3f};
+    return c;
+}
+
 }  // namespace
 
 std::vector<bench_configuration_spec> default_bench_configurations() {
@@ -282,11 +307,19 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(baseline(50.0f, true));
     list.push_back(baseline(25.0f, false));
     list.push_back(baseline(100.0f, false));
+    for (float d : {1.0f, 0.5f, 2.0f, 4.0f}) list.push_back(points_lines(d));
+    // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
+    // with about 1 M primitives).
+    bench_configuration_spec budget = points_lines(1.0f);
+    budget.name = "points_lines_budget_1m";
+    budget.description = "points and lines, d' adapted every frame to 1 M triangle equivalents (Deussen 2002 §5.4)";
+    budget.options.budget.primitives = 1e6;
+    list.push_back(budget);
     return list;
 }
 
 bench_report run_bench(const scenario& s, const std::vector<bench_configuration_spec>& configurations,
-                       render::gl_context& context, bake_cache* cache, const bench_settings& settings) {
+                       render::gl_context& context, bake_cache* cache, bench_settings settings) {
     std::vector<const bench_configuration_spec*> selected;
     for (const auto& c : configurations)
         if (settings.only.empty() || std::find(settings.only.begin(), settings.only.end(), c.name) != settings.only.end())
@@ -315,6 +348,10 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
         report.configurations.push_back(
             run_configuration(s, *selected[i], ref, context, cache, settings, int(i), selected.size()));
     }
+    if (settings.costs)
+        report.primitive_costs = {{"triangle", settings.costs->triangle},
+                                  {"point", settings.costs->point},
+                                  {"line", settings.costs->line}};
     return report;
 }
 

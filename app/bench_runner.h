@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,11 +53,15 @@ struct bench_settings {
     // Called with (configuration index or -1 for the reference, configuration count, frame,
     // frames) for progress output.
     std::function<void(int, std::size_t, std::uint32_t, std::uint32_t)> progress;
+    // The device's primitive costs for the point/line configurations. Unset: measured once by
+    // the first configuration that needs them (through the cache) and used by all, so every
+    // configuration selects with the same costs.
+    std::optional<primitive_costs> costs;
 };
 
 // Plays `s.frames` frames of `s` per configuration. Throws on GL or file errors.
 bench_report run_bench(const scenario& s, const std::vector<bench_configuration_spec>& configurations,
-                       render::gl_context& context, bake_cache* cache, const bench_settings& settings);
+                       render::gl_context& context, bake_cache* cache, bench_settings settings);
 
 // The process's resident-memory high-water mark in MB (VmHWM), and its reset (Linux: writing 5
 // to /proc/self/clear_refs), so each configuration reports its own peak.

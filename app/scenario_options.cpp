@@ -22,6 +22,26 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                        "Worker threads for the frame's systems (0: every hardware thread). Results "
                        "are bit-identical for any value")
         ->check(CLI::Range(0, 256));
+    command
+        .add_option("--representation", options.representation,
+                    "How plants are drawn (overrides lod.representation): mesh_levels (full, reduced and "
+                    "far meshes by distance) or points_lines (Deussen 2002 points and lines)")
+        ->check(CLI::IsMember({"mesh_levels", "points_lines"}));
+    command
+        .add_option("--sample-distance", options.sample_distance_px,
+                    "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "
+                    "lod.sample_distance_px; larger is faster and coarser)")
+        ->check(CLI::Range(0.05f, 64.0f));
+    command
+        .add_option("--primitive-budget", options.primitive_budget,
+                    "Adapt d' every frame to draw about this many triangle equivalents (points_lines; "
+                    "Deussen 2002 §5.4; overrides lod.primitive_budget)")
+        ->check(CLI::Range(0.0, 1e9));
+    command
+        .add_option("--target-frame-ms", options.target_frame_ms,
+                    "Adapt d' every frame to hold this GPU frame time (points_lines; not deterministic; "
+                    "overrides lod.target_frame_ms)")
+        ->check(CLI::Range(0.0, 1e5));
 }
 
 scenario load_scenario_file_or_bundled(const std::string& path) {
@@ -35,6 +55,16 @@ scenario load_with_overrides(const scenario_options& options) {
     if (options.frames) s.frames = *options.frames;
     if (options.width) s.width = *options.width;
     if (options.height) s.height = *options.height;
+    if (options.representation) s.lod.representation = *options.representation;
+    if (options.sample_distance_px) s.lod.sample_distance_px = *options.sample_distance_px;
+    if (options.primitive_budget) {
+        s.lod.primitive_budget = *options.primitive_budget;
+        s.lod.target_frame_ms = 0.0;
+    }
+    if (options.target_frame_ms) {
+        s.lod.target_frame_ms = *options.target_frame_ms;
+        s.lod.primitive_budget = 0.0;
+    }
     return s;
 }
 

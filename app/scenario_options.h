@@ -15,6 +15,11 @@ struct scenario_options {
     std::optional<std::uint32_t> width;
     std::optional<std::uint32_t> height;
     int threads = 0;
+    // Overrides of the scenario's `lod` section (scenarios/scenario.h).
+    std::optional<std::string> representation;
+    std::optional<float> sample_distance_px;
+    std::optional<double> primitive_budget;
+    std::optional<double> target_frame_ms;
 };
 
 void add_scenario_options(CLI::App& command, scenario_options& options);

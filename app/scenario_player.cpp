@@ -5,15 +5,18 @@
 
 #include "components/camera.h"
 #include "components/lod_state.h"
+#include "systems/adapt_sample_distance_system.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/fit_shadow_cascades_system.h"
 #include "systems/frame_stats.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/pass_timer.h"
+#include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/submit_system.h"
 #include "systems/select_representation_system.h"
 #include "systems/spawn_scenario.h"
+#include "systems/update_point_prefix_system.h"
 #include "systems/update_camera_system.h"
 #include "systems/update_sun_system.h"
 
@@ -36,8 +39,10 @@ int resolve_threads(int threads) {
 void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<update_camera_system>();
     schedule.add<update_sun_system>();
+    schedule.add<adapt_sample_distance_system>();
     schedule.add<cull_system>();
     schedule.add<select_representation_system>();
+    schedule.add<update_point_prefix_system>();
     schedule.add<project_environment_system>();
     schedule.add<fit_shadow_cascades_system>();
     schedule.add<build_draw_list_system>();
@@ -56,6 +61,39 @@ render::renderer_settings renderer_settings_of(const scenario& s) {
     return r;
 }
 
+// The player's policy, or the scenario's own `lod` section when the player leaves the default.
+lod_policy policy_of(const scenario& s, const player_options& options) {
+    lod_policy policy = options.policy;
+    if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels &&
+        s.lod.representation == "points_lines") {
+        policy.mode = lod_policy::kind::points_lines;
+        policy.points = {s.lod.sample_distance_px, s.lod.splat_factor};
+    }
+    return policy;
+}
+
+// The device's primitive costs for this renderer and d', from the cache or measured now.
+primitive_costs device_costs(render::renderer& r, const render::gl_context& context, const lod_policy& policy,
+                             bake_cache* cache) {
+    render::calibration_settings settings;
+    settings.sample_distance_px = policy.points.sample_distance_px;
+    settings.splat_factor = policy.points.splat_factor;
+    std::uint64_t key = hash_string("primitive_costs/1");
+    key = hash_string(context.renderer() + "/" + context.version(), key);
+    key = hash_string(std::to_string(r.settings().width) + "x" + std::to_string(r.settings().height) + "/" +
+                          std::to_string(settings.sample_distance_px) + "/" + std::to_string(settings.splat_factor),
+                      key);
+    auto measure = [&] {
+        const render::calibration_result result = render::calibrate_primitive_costs(r, settings);
+        binary_writer out;
+        out.pod(result.costs);
+        return out.bytes();
+    };
+    const std::vector<std::byte> bytes = cache ? cache->get_or_bake("primitive_costs", key, measure) : measure();
+    binary_reader in(bytes);
+    return in.pod<primitive_costs>();
+}
+
 }  // namespace
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
@@ -72,9 +110,17 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
                                  player_options options)
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
-    m_assets = build_scene_assets(m_scenario, cache);
+    const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
+    m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
-    m_world.set_resource(options.policy);
+    m_world.set_resource(policy);
+    m_world.set_resource(options.costs);
+    sample_distance_budget budget = options.budget;
+    if (options.scenario_lod && (m_scenario.lod.primitive_budget > 0.0 || m_scenario.lod.target_frame_ms > 0.0)) {
+        budget.primitives = m_scenario.lod.primitive_budget;
+        budget.frame_ms = m_scenario.lod.target_frame_ms;
+    }
+    m_world.set_resource(budget);
     if (options.geometry == geometry_mode::full) {
         camera& cam = m_world.single<camera>();
         cam.full_geometry = true;
@@ -89,6 +135,8 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         settings.id_buffer = options.id_buffer;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
+        if (options.measure_costs && policy.uses_point_lines())
+            m_world.set_resource(device_costs(*m_renderer, *context, policy, cache));
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();

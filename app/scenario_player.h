@@ -14,6 +14,7 @@
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
 #include "systems/render/renderer.h"
+#include "systems/adapt_sample_distance_system.h"
 #include "systems/lod_policy.h"
 #include "systems/scene_assets.h"
 
@@ -30,6 +31,18 @@ struct player_options {
     player_options(geometry_mode g) : geometry(g) {}  // NOLINT: implicit on purpose
     geometry_mode geometry = geometry_mode::lod;
     lod_policy policy{};
+    // When `policy` is the default (distance levels), follow the scenario's `lod` section
+    // instead. The bench turns this off: its configurations say exactly what they draw.
+    bool scenario_lod = true;
+    // The budget d' is adapted to (Deussen 2002 §5.4; none by default). With scenario_lod the
+    // scenario's lod.primitive_budget / target_frame_ms take its place when set.
+    sample_distance_budget budget{};
+    // What primitives cost on the device (the point/line representation's thresholds); the
+    // paper's by default, measured ones from systems/render/primitive_cost_calibration.h.
+    primitive_costs costs{};
+    // With the point/line representation and a GL device: measure `costs` on the device first
+    // (systems/render/primitive_cost_calibration.h), through the bake cache when there is one.
+    bool measure_costs = true;
     bool id_buffer = false;
 };
 
@@ -61,6 +74,8 @@ public:
     ecs::world& world() { return m_world; }
     const ecs::schedule& schedule() const { return m_schedule; }
     run_info info() const { return m_info; }
+    // What primitives cost where this player draws (measured, or as given in its options).
+    const primitive_costs& costs() const { return m_world.resource<primitive_costs>(); }
 
 private:
     scenario m_scenario;

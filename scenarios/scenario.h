@@ -40,6 +40,9 @@
 //     reduced_distance_m number     60           0 .. 1000000; the reduced mesh is drawn beyond it
 //     far_distance_m     number     200          0 .. 1000000; the far mesh is drawn beyond it;
 //                                                must be >= reduced_distance_m
+//     importance         number     1            0.01 .. 100; Deussen 2002 §4.3: multiplies the
+//                                                importance of every part (above 1: kept
+//                                                detailed longer under points_lines)
 //     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it;
 //                                                must be >= far_distance_m
 //   }
@@ -100,6 +103,21 @@
 //     enabled              boolean  true
 //     max_plants_per_tile  integer  256   1 .. 1000000; a tile holding more is split in four
 //   }
+//   lod {         how plants are drawn at a distance
+//     representation     string  "mesh_levels"  "mesh_levels" (the species' full, reduced and
+//                                               far meshes by distance) or "points_lines"
+//                                               (Deussen 2002: prefixes of random-order
+//                                               triangles, points and lines, §5)
+//     sample_distance_px number  1      0.05 .. 64; d', the screen distance between samples
+//     splat_factor       number  1.3    1 .. 4; c_p of Eq. 1 (the paper: 1.2 .. 1.5)
+//     primitive_budget   number  0      0 .. 1e9; with points_lines, d' is adapted every frame
+//                                       to draw about this many triangle equivalents (points
+//                                       and lines weighed by their cost; Deussen 2002 §5.4);
+//                                       0: d' stays fixed
+//     target_frame_ms    number  0      0 .. 100000; the same for a GPU frame time (not
+//                                       deterministic: for walkthroughs); not with
+//                                       primitive_budget
+//   }
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -139,6 +157,7 @@ struct species_settings {
     float reduced_distance_m = 60.0f;
     float far_distance_m = 200.0f;
     float max_distance_m = 1500.0f;
+    float importance = 1.0f;
     bool operator==(const species_settings&) const = default;
 };
 
@@ -225,6 +244,18 @@ struct eco_tile_settings {
     bool operator==(const eco_tile_settings&) const = default;
 };
 
+// The representations `lod.representation` may name.
+inline constexpr std::array<std::string_view, 2> k_lod_representations{"mesh_levels", "points_lines"};
+
+struct lod_settings {
+    std::string representation = "mesh_levels";
+    float sample_distance_px = 1.0f;
+    float splat_factor = 1.3f;
+    double primitive_budget = 0.0;
+    double target_frame_ms = 0.0;
+    bool operator==(const lod_settings&) const = default;
+};
+
 struct scenario {
     std::string name;
     std::string source;  // the file it came from, or "embedded:scenarios/default.json"
@@ -242,6 +273,7 @@ struct scenario {
     shadow_settings shadows;
     render_settings render;
     eco_tile_settings eco_tiles;
+    lod_settings lod;
     bool operator==(const scenario&) const = default;
 };
 

@@ -141,6 +141,7 @@ const field_table<species_settings>& species_fields() {
             .number("reduced_distance_m", &t::reduced_distance_m, k_distance_m)
             .number("far_distance_m", &t::far_distance_m, k_distance_m)
             .number("max_distance_m", &t::max_distance_m, k_distance_m)
+            .number("importance", &t::importance, {0.01, 100.0})
             .check([](const json_node& n, const t& s) {
                 expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
                                s.far_distance_m, false);
@@ -307,6 +308,22 @@ const field_table<eco_tile_settings>& eco_tile_fields() {
     return table;
 }
 
+const field_table<lod_settings>& lod_fields() {
+    using t = lod_settings;
+    static const auto table = field_table<t>()
+                                  .choice("representation", &t::representation, k_lod_representations)
+                                  .number("sample_distance_px", &t::sample_distance_px, {0.05, 64.0})
+                                  .number("splat_factor", &t::splat_factor, {1.0, 4.0})
+                                  .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
+                                  .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
+                                  .check([](const json_node& n, const t& s) {
+                                      if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
+                                          n.find("target_frame_ms")
+                                              ->fail("give either primitive_budget or target_frame_ms, not both");
+                                  });
+    return table;
+}
+
 const field_table<scenario>& scenario_fields() {
     using t = scenario;
     static const auto table =
@@ -333,7 +350,8 @@ const field_table<scenario>& scenario_fields() {
             .object("sun", &t::sun, sun_fields())
             .object("shadows", &t::shadows, shadow_fields())
             .object("render", &t::render, render_fields())
-            .object("eco_tiles", &t::eco_tiles, eco_tile_fields());
+            .object("eco_tiles", &t::eco_tiles, eco_tile_fields())
+            .object("lod", &t::lod, lod_fields());
     return table;
 }
 

@@ -163,7 +163,8 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
     const nlohmann::json j = nlohmann::json::parse(read_text(dir / "bench.json"));
     EXPECT_EQ(keys_of(j),
               (std::set<std::string>{"scenario", "source", "machine", "gl_renderer", "threads",
-                                     "width", "height", "frames", "reference", "configurations"}));
+                                     "width", "height", "frames", "reference", "primitive_costs",
+                                     "configurations"}));
     EXPECT_EQ(j["scenario"], "meadow <dense>");
     EXPECT_EQ(j["reference"],
               (nlohmann::json{{"samples_per_pixel", 9}, {"frame_ms_median", 500.0}}));

@@ -16,7 +16,8 @@ namespace {
 std::vector<bench_configuration_spec> some_configurations() {
     std::vector<bench_configuration_spec> chosen;
     for (const auto& c : default_bench_configurations())
-        if (c.name == "reference" || c.name == "brute_force" || c.name == "mesh_lod" || c.name == "baseline")
+        if (c.name == "reference" || c.name == "brute_force" || c.name == "mesh_lod" || c.name == "baseline" ||
+            c.name == "points_lines_d2")
             chosen.push_back(c);
     return chosen;
 }
@@ -25,6 +26,7 @@ bench_report bench_tiny(int threads) {
     scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
     bench_settings settings;
     settings.threads = threads;
+    settings.costs = primitive_costs{1.0, 0.5, 4.0};  // fixed: a measurement would differ run to run
     return run_bench(s, some_configurations(), *testing::shared_gl_context(), nullptr, settings);
 }
 
@@ -38,8 +40,8 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
     SYLVA_REQUIRE_GL();
     const bench_report one = bench_tiny(1);
     const bench_report two = bench_tiny(2);
-    ASSERT_EQ(one.configurations.size(), 4u);
-    ASSERT_EQ(two.configurations.size(), 4u);
+    ASSERT_EQ(one.configurations.size(), 5u);
+    ASSERT_EQ(two.configurations.size(), 5u);
     for (std::size_t i = 0; i < one.configurations.size(); ++i) {
         const bench_configuration& a = one.configurations[i];
         const bench_configuration& b = two.configurations[i];
@@ -72,6 +74,12 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
     EXPECT_GT(named(one, "brute_force").error.rmse, 0.0);  // one sample per pixel aliases
     EXPECT_GT(named(one, "brute_force").primitives.at("triangles"),
               named(one, "mesh_lod").primitives.at("triangles"));
+    // The point/line representation draws points and lines, and fewer triangles than brute force.
+    EXPECT_GT(named(one, "points_lines_d2").primitives.at("points"), 0.0);
+    EXPECT_GT(named(one, "points_lines_d2").primitives.at("lines"), 0.0);
+    EXPECT_LT(named(one, "points_lines_d2").primitives.at("triangles"),
+              named(one, "brute_force").primitives.at("triangles"));
+    EXPECT_EQ(one.primitive_costs.at("point"), 0.5);
 }
 
 }  // namespace

@@ -296,7 +296,7 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
                  {"/sead",
                   "unknown field; expected one of: name, seed, resolution, frames, fps, "
                   "world_offset, terrain, species, populations, camera, sun, shadows, render, "
-                  "eco_tiles",
+                  "eco_tiles, lod",
                   "4"});
 }
 
@@ -306,7 +306,8 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "size_m, resolution, height_m, octaves, frequency, seed, ground_color, heightmap, "
          "tiles_per_side"},
         {"/species/0/heigth_m",
-         "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m"},
+         "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
+         "importance"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
          "min_altitude_m, max_altitude_m, placement, density_map, density"},
@@ -318,6 +319,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/sun/keyframes/0/time", "t, elevation_deg, azimuth_deg"},
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
+        {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -580,7 +582,7 @@ TEST(scenario_loader, only_the_first_problem_is_reported) {
     expect_error(j, {"/bogus",
                      "unknown field; expected one of: name, seed, resolution, frames, fps, "
                      "world_offset, terrain, species, populations, camera, sun, shadows, render, "
-                     "eco_tiles",
+                     "eco_tiles, lod",
                      "1"});
     j.erase("bogus");
     expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
@@ -679,6 +681,35 @@ TEST(scenario_loader, placement_density_and_altitude_fields_load_and_round_trip)
     EXPECT_FALSE(s.eco_tiles.enabled);
     EXPECT_EQ(s.eco_tiles.max_plants_per_tile, 64u);
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+}
+
+TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
+    json j = minimal();
+    j["lod"] = {{"representation", "points_lines"}, {"sample_distance_px", 2.5}, {"splat_factor", 1.5},
+                {"primitive_budget", 250000}};
+    j["species"][0]["importance"] = 3;
+    const scenario s = load(j);
+    EXPECT_EQ(s.lod.representation, "points_lines");
+    EXPECT_EQ(s.lod.sample_distance_px, 2.5f);
+    EXPECT_EQ(s.lod.splat_factor, 1.5f);
+    EXPECT_EQ(s.lod.primitive_budget, 250000.0);
+    EXPECT_EQ(s.species[0].importance, 3.0f);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    EXPECT_EQ(load(minimal()).lod.representation, "mesh_levels");
+}
+
+TEST(scenario_loader, lod_fields_name_the_bad_value) {
+    expect_error(set(minimal(), "/lod/representation", "voxels"),
+                 {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines", "\"voxels\""});
+    expect_error(set(minimal(), "/lod/sample_distance_px", 0),
+                 {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
+    expect_error(set(minimal(), "/lod/splat_factor", 0.5),
+                 {"/lod/splat_factor", "out of range; expected a number from 1 to 4", "0.5"});
+    expect_error(set(minimal(), "/species/0/importance", 0),
+                 {"/species/0/importance", "out of range; expected a number from 0.01 to 100", "0"});
+    json both = minimal();
+    both["lod"] = {{"primitive_budget", 1000}, {"target_frame_ms", 30}};
+    expect_error(both, {"/lod/target_frame_ms", "give either primitive_budget or target_frame_ms, not both", "30"});
 }
 
 TEST(scenario_loader, placement_mode_and_generator_presets_are_choices) {
