@@ -87,6 +87,7 @@ struct landscape {
         world.set_resource(cascade_set{});
         world.set_resource(draw_list{});
         world.set_resource(lod_policy{});
+        world.set_resource(primitive_costs{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<fit_shadow_cascades_system>();

@@ -11,8 +11,8 @@
 // visible side is.
 #include "common.glsl"
 
-#if defined(PRIMITIVE_LINES) && !defined(SHADOW_PASS)
-// Lines reach this shader through line.geom, whose outputs are g_*: the same varyings renamed.
+#ifdef LINE_QUADS
+// Wide lines reach this shader through line.geom, whose outputs are g_*: the same varyings.
 #define v_position g_position
 #define v_normal g_normal
 #define v_uv g_uv

@@ -4,11 +4,11 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
+#include "systems/update_point_prefix_system.h"
 
 namespace sylva {
 namespace {
 
-std::uint32_t popcount(std::uint32_t v) { return std::uint32_t(__builtin_popcount(v)); }
 
 // What one plant contributes: a bit per pass it is drawn in, and its mesh in each pass. Each
 // shadow cascade draws the plant one mesh level coarser than the one before it (cascade 0 as
@@ -20,14 +20,22 @@ struct prefix_draw {
     std::uint16_t mesh = 0;
     std::uint32_t count = 0;
 };
+// In a shadow cascade the prefixes are the cascade's own: its texel is the sample distance there.
+constexpr std::size_t k_passes = std::size_t(render_pass::count);
 struct plant_draws {
-    std::array<std::uint16_t, std::size_t(render_pass::count)> mesh{};
-    std::array<prefix_draw, 2 * k_prefix_parts> prefixes{};
-    std::uint32_t prefix_count = 0;  // 0: one whole mesh per pass (`mesh`)
-    std::uint32_t pass_mask = 0;     // bit i: render_pass i
+    std::array<std::uint16_t, k_passes> mesh{};
+    std::array<std::array<prefix_draw, 2 * k_prefix_parts>, k_passes> prefixes{};
+    std::array<std::uint32_t, k_passes> prefix_count{};
+    bool prefixed = false;       // drawn as prefixes (`prefixes`), else one whole mesh per pass
+    std::uint32_t pass_mask = 0;  // bit i: render_pass i
     float distance = 0.0f;
 
-    std::uint32_t items() const { return popcount(pass_mask) * std::max(prefix_count, 1u); }
+    std::uint32_t items_in(std::size_t pass) const { return prefixed ? prefix_count[pass] : 1u; }
+    std::uint32_t items() const {
+        std::uint32_t n = 0;
+        for (std::uint32_t mask = pass_mask; mask; mask &= mask - 1) n += items_in(std::size_t(__builtin_ctz(mask)));
+        return n;
+    }
 };
 
 std::uint16_t mesh_of(const species_entry& species, representation r) {
@@ -48,8 +56,11 @@ representation coarser(representation r, int steps) {
 
 class draw_builder {
 public:
-    draw_builder(const camera& cam, const species_library& library, const cascade_set& cascades)
-        : m_camera(cam), m_library(library) {
+    draw_builder(const camera& cam, const species_library& library, const cascade_set& cascades,
+                 const lod_policy& policy, const primitive_costs& costs)
+        : m_camera(cam), m_library(library), m_cascade_set(cascades), m_splat_factor(policy.points.splat_factor),
+          m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px)),
+          m_costs(costs) {
         m_cascade_count = cascades.count;
         for (int c = 0; c < cascades.count; ++c)
             m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
@@ -61,8 +72,16 @@ public:
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
         if (lod.current == representation::points) {
-            add_prefixes(species, prefix, d);
-            if (d.prefix_count == 0) return d;  // too far for even one point: nothing drawn
+            d.prefixed = true;
+            add_prefixes(species, prefix, d, render_pass::opaque);
+            // A cascade samples the plant at its texel size, but never finer than the viewer
+            // sees the plant (d'·r): its shadow lands about as far away as the plant stands.
+            const double seen_m = m_sample_distance * glm::length(glm::dvec3(t.position - m_camera.position));
+            for (int c = 0; c < m_cascade_count; ++c) {
+                const double texel = std::max(double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
+                add_prefixes(species, compute_shadow_prefix(m_library, species, t.scale, texel, m_splat_factor, m_costs),
+                             d, shadow_pass(c));
+            }
         }
         d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
         for (int c = 0; c < m_cascade_count; ++c)
@@ -80,16 +99,23 @@ public:
     }
 
 private:
-    void add_prefixes(const species_entry& species, const point_prefix& prefix, plant_draws& d) const {
+    void add_prefixes(const species_entry& species, const point_prefix& prefix, plant_draws& d,
+                      render_pass pass) const {
+        auto& list = d.prefixes[std::size_t(pass)];
+        std::uint32_t& count = d.prefix_count[std::size_t(pass)];
         for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
             const lod_part_entry& part = m_library.lod_parts[species.first_lod_part + i];
-            if (prefix.triangles[i]) d.prefixes[d.prefix_count++] = {part.mesh_triangles, prefix.triangles[i]};
-            if (prefix.primitives[i]) d.prefixes[d.prefix_count++] = {part.mesh_primitives, prefix.primitives[i]};
+            if (prefix.triangles[i]) list[count++] = {part.mesh_triangles, prefix.triangles[i]};
+            if (prefix.primitives[i]) list[count++] = {part.mesh_primitives, prefix.primitives[i]};
         }
     }
 
     const camera& m_camera;
     const species_library& m_library;
+    const cascade_set& m_cascade_set;
+    double m_splat_factor = 1.3;
+    double m_sample_distance = 0.0;  // d' on the image plane
+    const primitive_costs& m_costs;
     std::array<cascade_bounds, k_max_cascades> m_cascades{};
     int m_cascade_count = 0;
 };
@@ -127,7 +153,8 @@ bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, fl
 void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>();
-    const draw_builder builder(cam, library, ctx.resource<cascade_set>());
+    const draw_builder builder(cam, library, ctx.resource<cascade_set>(), ctx.resource<lod_policy>(),
+                               ctx.resource<primitive_costs>());
     auto plants =
         ctx.query<const world_transform, const bounds, const plant_instance, const lod_state, const point_prefix>();
     const std::size_t n = plants.size();
@@ -146,7 +173,9 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
                                           const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
             const plant_draws d = builder.classify(t, b, p, lod, prefix);
             count += d.items();
-            if (d.prefix_count && (d.pass_mask & (1u << unsigned(render_pass::opaque)))) ++point_plants[c];
+            if (d.prefixed && d.prefix_count[std::size_t(render_pass::opaque)] &&
+                (d.pass_mask & (1u << unsigned(render_pass::opaque))))
+                ++point_plants[c];
         });
         offsets[c + 1] = count;
     });
@@ -161,9 +190,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const std::uint32_t depth = quantize_depth(d.distance);
             for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
                 const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
-                if (d.prefix_count == 0) *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
-                for (std::uint32_t i = 0; i < d.prefix_count; ++i)
-                    *out++ = {make_sort_key({pass, d.prefixes[i].mesh, depth}), index, d.prefixes[i].count};
+                if (!d.prefixed) *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
+                const auto& prefixes = d.prefixes[std::size_t(pass)];
+                for (std::uint32_t i = 0; i < d.items_in(std::size_t(pass)) && d.prefixed; ++i)
+                    *out++ = {make_sort_key({pass, prefixes[i].mesh, depth}), index, prefixes[i].count};
             }
             ++index;
         });

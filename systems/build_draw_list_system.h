@@ -2,7 +2,8 @@
 // Turns the frame's LOD decisions into the draw list: one draw item per (visible plant, opaque
 // pass) and per (shadow-casting plant, cascade it overlaps), keyed by pass, mesh and depth; a
 // plant drawn as points and lines gives one item per non-empty prefix of its parts
-// (point_prefix) in each of those passes, carrying the prefix length.
+// (point_prefix) in the view, and in each cascade the prefixes its texel size calls for
+// (compute_shadow_prefix), each item carrying its prefix length.
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.
@@ -16,6 +17,7 @@
 #include "ecs/system.h"
 #include "systems/draw_list.h"
 #include "systems/lighting/shadow_cascades.h"
+#include "systems/lod_policy.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
@@ -34,7 +36,7 @@ struct build_draw_list_system {
     static constexpr std::string_view k_name = "build_draw_list";
     static constexpr ecs::phase k_phase = ecs::phase::build;
     using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha,
-                             species_library, cascade_set>;
+                             species_library, cascade_set, lod_policy, primitive_costs>;
     using writes = ecs::writes<draw_list>;
     static void run(ecs::system_context<build_draw_list_system>& ctx);
 };

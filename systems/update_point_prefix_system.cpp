@@ -41,6 +41,28 @@ point_prefix compute_point_prefix(const species_library& library, const species_
     return prefix;
 }
 
+point_prefix compute_shadow_prefix(const species_library& library, const species_entry& species, float scale,
+                                   double texel_world_m, double splat_factor, const primitive_costs& costs) {
+    point_prefix prefix;
+    const double s = double(scale);
+    for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
+        const lod_part_entry& part = library.lod_parts[species.first_lod_part + i];
+        const double area = double(part.area_m2) * s * s * double(part.importance);
+        part_draw d;
+        // At r = 1 the image plane is the world: the texel is d' in metres.
+        if (part.primitive == lod_primitive::points) {
+            d = blend_points(required_points(area, 1.0, texel_world_m, splat_factor), part.triangle_count,
+                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs);
+        } else {
+            d = select_lines(area, double(part.line_length_m) * s, double(part.line_error_m) * s, part.primitive_count,
+                             part.triangle_count, 1.0, texel_world_m, costs);
+        }
+        prefix.triangles[i] = d.triangles;
+        prefix.primitives[i] = d.primitives;
+    }
+    return prefix;
+}
+
 void update_point_prefix_system::run(ecs::system_context<update_point_prefix_system>& ctx) {
     const lod_policy& policy = ctx.resource<lod_policy>();
     if (!policy.uses_point_lines()) return;  // nothing to do costs nothing

@@ -23,6 +23,12 @@ point_prefix compute_point_prefix(const species_library& library, const species_
                                   const world_transform& t, const glm::dvec3& eye, double sample_distance,
                                   double splat_factor, const primitive_costs& costs = {});
 
+// The prefixes of one plant in a shadow cascade whose texel is `texel_world_m` wide: the
+// texel is the sample distance there (the shadow map sees every part at its own size, so
+// Eq. 1 becomes p = c_p·½·A/τ² and Eq. 2 q = A/(l·τ), with ε_l >= τ for polygons).
+point_prefix compute_shadow_prefix(const species_library& library, const species_entry& species, float scale,
+                                   double texel_world_m, double splat_factor, const primitive_costs& costs = {});
+
 // A part's centre in camera-relative world space (the yaw and scale of the instance applied).
 glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& t);
 

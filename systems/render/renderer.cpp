@@ -20,6 +20,8 @@ constexpr GLuint k_instance_binding = 1;
 constexpr int k_sky_width = 128;
 constexpr int k_sky_height = 64;
 constexpr float k_fog_density = 0.0009f;
+// Lines up to this width (pixels) are drawn as GL's one-pixel lines, wider ones by line.geom.
+constexpr float k_native_line_width_px = 1.25f;
 
 constexpr std::size_t material_index(material_kind m) { return static_cast<std::size_t>(m); }
 constexpr std::uint32_t vertices_per(primitive_kind p) {
@@ -104,7 +106,12 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
     if (primitive == primitive_kind::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (primitive == primitive_kind::lines) {
         source.defines.push_back("PRIMITIVE_LINES");
-        if (!shadow) source.geometry = "line.geom";  // d'-wide quads; shadows take 1-texel lines
+        // d'-wide quads; GL's own one-pixel lines where d' is about a pixel, and in the shadow
+        // cascades (one texel wide).
+        if (!shadow && m_line_width_px > k_native_line_width_px) {
+            source.geometry = "line.geom";
+            source.defines.push_back("LINE_QUADS");
+        }
     }
     if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
@@ -318,7 +325,7 @@ void renderer::draw_samples(const pass_commands& groups, int cascade) {
                 glEnable(GL_PROGRAM_POINT_SIZE);
                 glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
                 glUniform1f(glGetUniformLocation(program, "u_splat_plane"), m_splat_plane);
-            } else if (!shadow) {
+            } else if (!shadow && m_line_width_px > k_native_line_width_px) {
                 glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
                 glUniform2f(glGetUniformLocation(program, "u_viewport_px"), float(m_settings.width),
                             float(m_settings.height));

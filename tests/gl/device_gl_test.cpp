@@ -118,13 +118,15 @@ TEST(shader_library, point_and_line_variants_compile_and_link_with_the_line_geom
         EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
         EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
         EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_POINTS", "SHADOW_PASS"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES"}), "line.geom"}), 0u);
-        EXPECT_NE(
-            shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), "line.geom"}),
-            0u);
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "LINE_QUADS"}), "line.geom"}),
+                  0u);
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag",
+                                   with({"PRIMITIVE_LINES", "LINE_QUADS", "WRITE_ID"}), "line.geom"}),
+                  0u);
+        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), {}}), 0u);
         EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_LINES", "SHADOW_PASS"}), {}}), 0u);
     }
-    EXPECT_EQ(shaders.compiled_count(), 12u);
+    EXPECT_EQ(shaders.compiled_count(), 14u);
 }
 
 TEST(shader_library, includes_are_expanded_and_missing_files_are_named) {

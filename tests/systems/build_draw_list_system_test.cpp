@@ -58,6 +58,7 @@ struct three_plants {
         world.set_resource(cascades);
         world.set_resource(draw_list{});
         world.set_resource(lod_policy{});
+        world.set_resource(primitive_costs{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<build_draw_list_system>();
