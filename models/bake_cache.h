@@ -64,6 +64,8 @@ public:
         pod(std::uint64_t(s.size()));
         append(s.data(), s.size());
     }
+    // Bytes as they are, with no count (the caller wrote one).
+    void raw(std::span<const std::byte> bytes) { append(bytes.data(), bytes.size()); }
     std::vector<std::byte>& bytes() { return m_bytes; }
 
 private:

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <glm/common.hpp>
 #include <limits>
 #include <map>
@@ -300,29 +299,6 @@ std::vector<std::vector<part_plan>> plan_parts(const bake_context& ctx, std::siz
     return cells;
 }
 
-// Rewrites `record` with the listed fields of its own value and every other byte (padding) zero.
-template <class T, class... Field>
-void zero_padding(T& record, Field T::*... fields) {
-    const T value = record;
-    auto* bytes = reinterpret_cast<unsigned char*>(&record);
-    std::memset(bytes, 0, sizeof(T));
-    const auto* from = reinterpret_cast<const unsigned char*>(&value);
-    (std::memcpy(bytes + (reinterpret_cast<const unsigned char*>(&(value.*fields)) - from),
-                 &(value.*fields), sizeof(value.*fields)),
-     ...);
-}
-
-// write_mesh stores submeshes and triangle records as raw bytes, padding included, and the
-// compiler leaves padding undefined however the records are built: zero it so that equal bakes
-// give equal bytes (the bake cache and the determinism tests compare them).
-void zero_record_padding(mesh_data& mesh) {
-    for (submesh& s : mesh.submeshes)
-        zero_padding(s, &submesh::first_index, &submesh::index_count, &submesh::material);
-    for (triangle_part& p : mesh.parts)
-        zero_padding(p, &triangle_part::branch, &triangle_part::level, &triangle_part::kind,
-                     &triangle_part::parent_branch);
-}
-
 template <class T>
 void shuffle(std::vector<T>& values, rng& random) {
     for (std::size_t i = values.size(); i > 1; --i)
@@ -480,7 +456,6 @@ point_line_model bake_point_lines(const plant_model& model, const point_line_set
         for (part_plan& plan : plans[c]) colours.push_back(bake_part(ctx, std::move(plan), out));
     }
     assign_importance(ctx, colours, out);
-    zero_record_padding(out.triangles);
     return out;
 }
 
