@@ -158,6 +158,7 @@ struct species_settings {
     float far_distance_m = 200.0f;
     float max_distance_m = 1500.0f;
     float importance = 1.0f;
+    std::uint32_t octree_depth = 0;
     bool operator==(const species_settings&) const = default;
 };
 

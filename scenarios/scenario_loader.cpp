@@ -142,6 +142,7 @@ const field_table<species_settings>& species_fields() {
             .number("far_distance_m", &t::far_distance_m, k_distance_m)
             .number("max_distance_m", &t::max_distance_m, k_distance_m)
             .number("importance", &t::importance, {0.01, 100.0})
+            .integer("octree_depth", &t::octree_depth, {0, 3})
             .check([](const json_node& n, const t& s) {
                 expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
                                s.far_distance_m, false);

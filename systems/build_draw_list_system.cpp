@@ -66,21 +66,23 @@ public:
             m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
     }
 
+    // `parts` are the plant's point/line parts, or one octree cell's (§6.1), whose prefixes
+    // `prefix` holds; a split plant itself has none (its cells are classified one by one).
     plant_draws classify(const world_transform& t, const bounds& b, const plant_instance& p,
-                         const lod_state& lod, const point_prefix& prefix) const {
+                         const lod_state& lod, const point_prefix& prefix, part_range parts) const {
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
         if (lod.current == representation::points) {
             d.prefixed = true;
-            add_prefixes(species, prefix, d, render_pass::opaque);
+            add_prefixes(parts, prefix, d, render_pass::opaque);
             // A cascade samples the plant at its texel size, but never finer than the viewer
             // sees the plant (d'·r): its shadow lands about as far away as the plant stands.
             const double seen_m = m_sample_distance * glm::length(glm::dvec3(t.position - m_camera.position));
             for (int c = 0; c < m_cascade_count; ++c) {
                 const double texel = std::max(double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
-                add_prefixes(species, compute_shadow_prefix(m_library, species, t.scale, texel, m_splat_factor, m_costs),
-                             d, shadow_pass(c));
+                add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_splat_factor, m_costs), d,
+                             shadow_pass(c));
             }
         }
         d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
@@ -99,12 +101,11 @@ public:
     }
 
 private:
-    void add_prefixes(const species_entry& species, const point_prefix& prefix, plant_draws& d,
-                      render_pass pass) const {
+    void add_prefixes(part_range parts, const point_prefix& prefix, plant_draws& d, render_pass pass) const {
         auto& list = d.prefixes[std::size_t(pass)];
         std::uint32_t& count = d.prefix_count[std::size_t(pass)];
-        for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
-            const lod_part_entry& part = m_library.lod_parts[species.first_lod_part + i];
+        for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
+            const lod_part_entry& part = m_library.lod_parts[parts.first + i];
             if (prefix.triangles[i]) list[count++] = {part.mesh_triangles, prefix.triangles[i]};
             if (prefix.primitives[i]) list[count++] = {part.mesh_primitives, prefix.primitives[i]};
         }
@@ -150,6 +151,22 @@ bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, fl
     return std::abs(p.x) <= 1.0f + r.x && std::abs(p.y) <= 1.0f + r.y && p.z <= 1.0f + r.z;
 }
 
+// Writes the items of one classified plant (or cell) for every pass it is drawn in.
+draw_item* write_items(const plant_draws& d, std::uint32_t plant, draw_item* out) {
+    const std::uint32_t depth = quantize_depth(d.distance);
+    for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
+        const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
+        if (!d.prefixed) {
+            *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), plant, 0};
+            continue;
+        }
+        const auto& prefixes = d.prefixes[std::size_t(pass)];
+        for (std::uint32_t i = 0; i < d.items_in(std::size_t(pass)); ++i)
+            *out++ = {make_sort_key({pass, prefixes[i].mesh, depth}), plant, prefixes[i].count};
+    }
+    return out;
+}
+
 void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>();
@@ -157,52 +174,66 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
                                ctx.resource<primitive_costs>());
     auto plants =
         ctx.query<const world_transform, const bounds, const plant_instance, const lod_state, const point_prefix>();
+    auto cells = ctx.query<const octree_cell, const cell_prefix>();
     const std::size_t n = plants.size();
     const std::size_t chunk = ecs::k_default_chunk;
     const std::size_t chunks = (n + chunk - 1) / chunk;
+    const std::size_t cell_chunks = (cells.size() + chunk - 1) / chunk;
     draw_list& list = ctx.resource_mut<draw_list>();
+    const auto transforms = ctx.read<world_transform>().data();
+    const auto bounds_of = ctx.read<bounds>().data();
+    const auto instances = ctx.read<plant_instance>().data();
+    const auto lods = ctx.read<lod_state>().data();
+    auto classify_cell = [&](const octree_cell& cell, const cell_prefix& prefix) {
+        const std::size_t k = cell.plant;
+        return builder.classify(transforms[k], bounds_of[k], instances[k], lods[k], prefix.prefix,
+                                parts_of(library.cells[cell.cell]));
+    };
 
-    // Pass 1: how many items each chunk adds. Pass 2: write them at the prefix-sum offsets.
+    // Pass 1: how many items each chunk adds (plant chunks, then octree-cell chunks).
+    // Pass 2: write them at the prefix-sum offsets.
     std::vector<std::uint32_t>& offsets = list.chunk_offsets;
-    offsets.assign(chunks + 1, 0);
+    offsets.assign(chunks + cell_chunks + 1, 0);
     std::vector<std::uint32_t>& point_plants = list.chunk_point_plants;
     point_plants.assign(chunks, 0);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
                                           const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
-            const plant_draws d = builder.classify(t, b, p, lod, prefix);
-            count += d.items();
-            if (d.prefixed && d.prefix_count[std::size_t(render_pass::opaque)] &&
-                (d.pass_mask & (1u << unsigned(render_pass::opaque))))
-                ++point_plants[c];
+            const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
+            count += builder.classify(t, b, p, lod, prefix, parts_of(species)).items();
+            if (lod.current == representation::points && lod.visible) ++point_plants[c];
         });
         offsets[c + 1] = count;
     });
-    for (std::size_t c = 0; c < chunks; ++c) offsets[c + 1] += offsets[c];
-    list.items.resize(offsets[chunks]);
+    ctx.parallel_for(cells.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
+        std::uint32_t count = 0;
+        cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, const cell_prefix& prefix) {
+            count += classify_cell(cell, prefix).items();
+        });
+        offsets[chunks + c + 1] = count;
+    });
+    for (std::size_t c = 0; c < chunks + cell_chunks; ++c) offsets[c + 1] += offsets[c];
+    list.items.resize(offsets[chunks + cell_chunks]);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         draw_item* out = list.items.data() + offsets[c];
         std::uint32_t index = std::uint32_t(begin);
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
                                           const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
-            const plant_draws d = builder.classify(t, b, p, lod, prefix);
-            const std::uint32_t depth = quantize_depth(d.distance);
-            for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
-                const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
-                if (!d.prefixed) *out++ = {make_sort_key({pass, d.mesh[std::size_t(pass)], depth}), index, 0};
-                const auto& prefixes = d.prefixes[std::size_t(pass)];
-                for (std::uint32_t i = 0; i < d.items_in(std::size_t(pass)) && d.prefixed; ++i)
-                    *out++ = {make_sort_key({pass, prefixes[i].mesh, depth}), index, prefixes[i].count};
-            }
+            const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
+            out = write_items(builder.classify(t, b, p, lod, prefix, parts_of(species)), index, out);
             ++index;
+        });
+    });
+    ctx.parallel_for(cells.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
+        draw_item* out = list.items.data() + offsets[chunks + c];
+        cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, const cell_prefix& prefix) {
+            out = write_items(classify_cell(cell, prefix), cell.plant, out);
         });
     });
     radix_sort_draw_items(list.items, list.scratch);
 
     // Instance records in sorted order; the tables are aligned, so a dense index reads them all.
-    const auto transforms = ctx.read<world_transform>().data();
-    const auto instances = ctx.read<plant_instance>().data();
     const auto fades = ctx.read<fade_alpha>().data();
     list.instances.resize(list.items.size());
     ctx.parallel_for(list.items.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t) {

@@ -3,7 +3,8 @@
 // pass) and per (shadow-casting plant, cascade it overlaps), keyed by pass, mesh and depth; a
 // plant drawn as points and lines gives one item per non-empty prefix of its parts
 // (point_prefix) in the view, and in each cascade the prefixes its texel size calls for
-// (compute_shadow_prefix), each item carrying its prefix length.
+// (compute_shadow_prefix), each item carrying its prefix length; the octree cells of big plants
+// (Deussen 2002 §6.1) add their own items, drawn with their plant's instance record.
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.
@@ -11,6 +12,7 @@
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
+#include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
 #include "components/transform.h"
@@ -35,8 +37,8 @@ cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
 struct build_draw_list_system {
     static constexpr std::string_view k_name = "build_draw_list";
     static constexpr ecs::phase k_phase = ecs::phase::build;
-    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha,
-                             species_library, cascade_set, lod_policy, primitive_costs>;
+    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, octree_cell,
+                             cell_prefix, fade_alpha, species_library, cascade_set, lod_policy, primitive_costs>;
     using writes = ecs::writes<draw_list>;
     static void run(ecs::system_context<build_draw_list_system>& ctx);
 };

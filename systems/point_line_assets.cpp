@@ -45,14 +45,13 @@ mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, st
     return out;
 }
 
-void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
-                          float importance) {
-    if (model.cells.empty()) return;
-    // One cell per plant for now; octree cells (§6.1) become entities of their own.
-    const lod_cell& cell = model.cells.front();
+namespace {
+
+// Adds the parts of one cell to the library; returns the index of the first.
+std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model, const lod_cell& cell, float scale,
+                             float importance) {
     if (cell.part_count > k_max_cell_parts) throw std::runtime_error("point/line model: too many parts in a cell");
-    entry.first_lod_part = std::uint32_t(assets.library.lod_parts.size());
-    entry.lod_part_count = cell.part_count;
+    const auto first = std::uint32_t(assets.library.lod_parts.size());
     for (std::uint32_t i = cell.first_part; i < cell.first_part + cell.part_count; ++i) {
         const lod_part& part = model.parts.at(i);
         lod_part_entry e;
@@ -87,6 +86,25 @@ void add_point_line_parts(scene_assets& assets, species_entry& entry, const poin
             part.primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
         e.mesh_primitives = add_mesh(assets, primitive_mesh(std::move(vertices), kind, part.material), e.primitive_count);
         assets.library.lod_parts.push_back(e);
+    }
+    return first;
+}
+
+}  // namespace
+
+void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
+                          float importance) {
+    if (model.cells.empty()) return;
+    entry.first_cell = std::uint32_t(assets.library.cells.size());
+    entry.cell_count = std::uint32_t(model.cells.size());
+    for (const lod_cell& cell : model.cells) {
+        const std::uint32_t first = add_cell_parts(assets, model, cell, scale, importance);
+        assets.library.cells.push_back({first, cell.part_count});
+    }
+    // One cell: the plant itself carries its parts' prefixes. Several (§6.1): its cells do.
+    if (model.cells.size() == 1) {
+        entry.first_lod_part = assets.library.cells.back().first_lod_part;
+        entry.lod_part_count = assets.library.cells.back().lod_part_count;
     }
 }
 

@@ -32,7 +32,16 @@ struct species_entry {
     float center_height = 0.5f;        // sphere centre above the base, unit scale
     float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
     // The point/line representation's parts (species_library::lod_parts), when the scene's
-    // LOD policy can select it; none otherwise.
+    // LOD policy can select it; none otherwise, and none for a species split into octree cells
+    // (Deussen 2002 §6.1), whose parts belong to its cells (species_library::cells).
+    std::uint32_t first_lod_part = 0;
+    std::uint32_t lod_part_count = 0;
+    std::uint32_t first_cell = 0;
+    std::uint32_t cell_count = 0;  // > 1: every plant of the species has this many cell entities
+};
+
+// One octree cell of a split species: its parts in species_library::lod_parts.
+struct lod_cell_entry {
     std::uint32_t first_lod_part = 0;
     std::uint32_t lod_part_count = 0;
 };
@@ -66,6 +75,7 @@ struct species_library {
     std::vector<species_entry> species;
     std::vector<mesh_info> meshes;  // indexed by mesh id
     std::vector<lod_part_entry> lod_parts;
+    std::vector<lod_cell_entry> cells;
     std::vector<std::uint32_t> points_after;  // lod_part_entry::first_after indexes it
 };
 

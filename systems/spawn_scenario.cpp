@@ -9,6 +9,7 @@
 #include "components/environment.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
+#include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
 #include "components/sun.h"
@@ -192,6 +193,25 @@ void create_plant(ecs::world& world, const scenario& s, const scene_assets& asse
     world.emplace<fade_alpha>(e);
 }
 
+// Deussen 2002 §6.1: every plant of a species split into octree cells gets one entity per
+// cell, created in plant order after the plant tables are aligned (so `plant` is the dense
+// index every plant table shares, and the plant tables stay as culling expects them).
+void spawn_octree_cells(ecs::world& world, const species_library& library) {
+    const auto& plants = world.table<plant_instance>();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> cells;  // (plant, cell)
+    for (std::size_t i = 0; i < plants.size(); ++i) {
+        const species_entry& species = library.species[static_cast<std::size_t>(plants.data()[i].species)];
+        if (species.cell_count < 2) continue;
+        for (std::uint32_t c = 0; c < species.cell_count; ++c) cells.emplace_back(std::uint32_t(i), species.first_cell + c);
+    }
+    for (const auto& [plant, cell] : cells) {
+        const ecs::entity e = world.create();
+        world.emplace<octree_cell>(e, {plant, cell});
+        world.emplace<cell_prefix>(e);
+    }
+    if (!cells.empty()) world.align<octree_cell, cell_prefix>();
+}
+
 // Deussen 2002 §6.2: with eco tiles on, plants are created tile by tile (each tile's plants a
 // contiguous range of the component tables) and the tiles become entities that culling walks.
 std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_assets& assets) {
@@ -214,6 +234,7 @@ std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_asset
         create_tile_entities(world, tree, assets.terrain, extent);
     }
     world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
+    spawn_octree_cells(world, assets.library);
     return plants.size();
 }
 

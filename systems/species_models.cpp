@@ -72,7 +72,9 @@ crossed_billboard load_species_billboard(const species_settings& species, std::u
 
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed) {
     const std::uint64_t key = hash_string("point_lines", species_model_key(species, seed));
-    return hash_string(std::to_string(k_point_line_format) + "/" + std::to_string(seed), key);
+    return hash_string(std::to_string(k_point_line_format) + "/" + std::to_string(seed) + "/" +
+                           std::to_string(species.octree_depth),
+                       key);
 }
 
 point_line_model load_species_point_lines(const species_settings& species, std::uint64_t seed,
@@ -80,6 +82,7 @@ point_line_model load_species_point_lines(const species_settings& species, std::
     auto bake = [&] {
         point_line_settings settings;
         settings.seed = seed;
+        settings.octree_depth = int(species.octree_depth);
         return serialize_point_line_model(bake_point_lines(model, settings));
     };
     return load_cached<point_line_model>(

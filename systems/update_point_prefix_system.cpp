@@ -16,13 +16,16 @@ glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& 
     return t.position + glm::dvec3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z);
 }
 
-point_prefix compute_point_prefix(const species_library& library, const species_entry& species,
-                                  const world_transform& t, const glm::dvec3& eye, double sample_distance,
-                                  double splat_factor, const primitive_costs& costs) {
+part_range parts_of(const species_entry& species) { return {species.first_lod_part, species.lod_part_count}; }
+part_range parts_of(const lod_cell_entry& cell) { return {cell.first_lod_part, cell.lod_part_count}; }
+
+point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
+                                  const glm::dvec3& eye, double sample_distance, double splat_factor,
+                                  const primitive_costs& costs) {
     point_prefix prefix;
     const double scale = double(t.scale);
-    for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
-        const lod_part_entry& part = library.lod_parts[species.first_lod_part + i];
+    for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
+        const lod_part_entry& part = library.lod_parts[parts.first + i];
         const double r = glm::length(part_world_center(part, t) - eye);
         // §4.3: importance scales the area the part is taken to cover (and so p or q).
         const double area = double(part.area_m2) * scale * scale * double(part.importance);
@@ -41,12 +44,12 @@ point_prefix compute_point_prefix(const species_library& library, const species_
     return prefix;
 }
 
-point_prefix compute_shadow_prefix(const species_library& library, const species_entry& species, float scale,
+point_prefix compute_shadow_prefix(const species_library& library, part_range parts, float scale,
                                    double texel_world_m, double splat_factor, const primitive_costs& costs) {
     point_prefix prefix;
     const double s = double(scale);
-    for (std::uint32_t i = 0; i < species.lod_part_count && i < k_prefix_parts; ++i) {
-        const lod_part_entry& part = library.lod_parts[species.first_lod_part + i];
+    for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
+        const lod_part_entry& part = library.lod_parts[parts.first + i];
         const double area = double(part.area_m2) * s * s * double(part.importance);
         part_draw d;
         // At r = 1 the image plane is the world: the texel is d' in metres.
@@ -80,7 +83,21 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 return;
             }
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            prefix = compute_point_prefix(library, species, t, cam.position, d, c_p, costs);
+            prefix = compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs);
+        });
+    });
+    // §6.1: each octree cell of a big plant chooses on its own, r measured to its parts.
+    const auto transforms = ctx.read<world_transform>().data();
+    const auto lods = ctx.read<lod_state>().data();
+    auto cells = ctx.query<const octree_cell, cell_prefix>();
+    ctx.parallel_for(cells.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+        cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, cell_prefix& out) {
+            if (lods[cell.plant].current != representation::points) {
+                out.prefix = {};
+                return;
+            }
+            out.prefix = compute_point_prefix(library, parts_of(library.cells[cell.cell]), transforms[cell.plant],
+                                              cam.position, d, c_p, costs);
         });
     });
 }

@@ -6,9 +6,11 @@
 // a part's effective area, so important parts keep more primitives and stay polygonal longer.
 // The device's primitive costs (a resource, primitive_costs: measured where Sylva runs, the
 // paper's 1:3 point:triangle otherwise) set where parts turn polygonal. Writes the prefix
-// lengths (point_prefix) that build_draw_list draws, in parallel chunks.
+// lengths (point_prefix; cell_prefix for the octree cells of big plants, §6.1) that
+// build_draw_list draws, in parallel chunks.
 #include "components/camera.h"
 #include "components/lod_state.h"
+#include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
 #include "components/transform.h"
@@ -18,15 +20,23 @@
 
 namespace sylva {
 
-// The prefixes of one plant (pure, for tests): `sample_distance` is d' in image-plane units.
-point_prefix compute_point_prefix(const species_library& library, const species_entry& species,
-                                  const world_transform& t, const glm::dvec3& eye, double sample_distance,
-                                  double splat_factor, const primitive_costs& costs = {});
+// Which parts a plant or an octree cell draws: lod_parts[first, first + count).
+struct part_range {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+};
+part_range parts_of(const species_entry& species);
+part_range parts_of(const lod_cell_entry& cell);
+
+// The prefixes of a plant's (or cell's) parts: `sample_distance` is d' in image-plane units.
+point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
+                                  const glm::dvec3& eye, double sample_distance, double splat_factor,
+                                  const primitive_costs& costs = {});
 
 // The prefixes of one plant in a shadow cascade whose texel is `texel_world_m` wide: the
 // texel is the sample distance there (the shadow map sees every part at its own size, so
 // Eq. 1 becomes p = c_p·½·A/τ² and Eq. 2 q = A/(l·τ), with ε_l >= τ for polygons).
-point_prefix compute_shadow_prefix(const species_library& library, const species_entry& species, float scale,
+point_prefix compute_shadow_prefix(const species_library& library, part_range parts, float scale,
                                    double texel_world_m, double splat_factor, const primitive_costs& costs = {});
 
 // A part's centre in camera-relative world space (the yaw and scale of the instance applied).
@@ -35,9 +45,9 @@ glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& 
 struct update_point_prefix_system {
     static constexpr std::string_view k_name = "update_point_prefix";
     static constexpr ecs::phase k_phase = ecs::phase::transition;
-    using reads = ecs::reads<camera, world_transform, plant_instance, lod_state, species_library, lod_policy,
-                             primitive_costs>;
-    using writes = ecs::writes<point_prefix>;
+    using reads = ecs::reads<camera, world_transform, plant_instance, lod_state, octree_cell, species_library,
+                             lod_policy, primitive_costs>;
+    using writes = ecs::writes<point_prefix, cell_prefix>;
     static void run(ecs::system_context<update_point_prefix_system>& ctx);
 };
 

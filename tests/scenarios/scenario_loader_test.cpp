@@ -307,7 +307,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "tiles_per_side"},
         {"/species/0/heigth_m",
          "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
-         "importance"},
+         "importance, octree_depth"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
          "min_altitude_m, max_altitude_m, placement, density_map, density"},
@@ -688,12 +688,14 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
     j["lod"] = {{"representation", "points_lines"}, {"sample_distance_px", 2.5}, {"splat_factor", 1.5},
                 {"primitive_budget", 250000}};
     j["species"][0]["importance"] = 3;
+    j["species"][0]["octree_depth"] = 1;
     const scenario s = load(j);
     EXPECT_EQ(s.lod.representation, "points_lines");
     EXPECT_EQ(s.lod.sample_distance_px, 2.5f);
     EXPECT_EQ(s.lod.splat_factor, 1.5f);
     EXPECT_EQ(s.lod.primitive_budget, 250000.0);
     EXPECT_EQ(s.species[0].importance, 3.0f);
+    EXPECT_EQ(s.species[0].octree_depth, 1u);
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
     EXPECT_EQ(load(minimal()).lod.representation, "mesh_levels");
 }

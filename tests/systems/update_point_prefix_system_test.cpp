@@ -153,6 +153,48 @@ TEST(update_point_prefix, build_draw_list_draws_exactly_the_prefixes) {
     EXPECT_EQ(list.instances_by_representation[std::size_t(representation::points)], 1u);
 }
 
+// Deussen 2002 §6.1: a big plant split into two octree cells, one 5 m from the eye and one 30 m:
+// the near cell is drawn as triangles, the far one as points, in the same frame.
+TEST(update_point_prefix, octree_cells_of_one_plant_choose_independently) {
+    prefix_scene scene({20.0});
+    scene.world.table<world_transform>().data()[0].yaw = 0.0f;  // cell centres straight along -z
+    species_library& library = scene.world.resource<species_library>();
+    lod_part_entry near_part = library.lod_parts[0];
+    near_part.center = {0.0f, 0.0f, 15.0f};  // the plant stands 20 m ahead: this part at 5 m
+    lod_part_entry far_part = library.lod_parts[0];
+    far_part.center = {0.0f, 0.0f, -10.0f};  // and this one at 30 m
+    far_part.mesh_triangles = 2;
+    far_part.mesh_primitives = 3;
+    library.lod_parts = {near_part, far_part};
+    library.cells = {{0, 1}, {1, 1}};
+    library.species[0].lod_part_count = 0;  // a split plant's parts belong to its cells
+    library.species[0].first_cell = 0;
+    library.species[0].cell_count = 2;
+    for (std::uint32_t c = 0; c < 2; ++c) {
+        const ecs::entity e = scene.world.create();
+        scene.world.emplace<octree_cell>(e, {0, c});
+        scene.world.emplace<cell_prefix>(e);
+    }
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const auto& cells = scene.world.table<cell_prefix>();
+    ASSERT_EQ(cells.size(), 2u);
+    // r = 5: p = 100 → all 10 triangles; r = 30: p = 2500/900 = 2.78 → 2 points.
+    EXPECT_EQ(cells.data()[0].prefix.triangles[0], 10u);
+    EXPECT_EQ(cells.data()[0].prefix.primitives[0], 0u);
+    EXPECT_EQ(cells.data()[1].prefix.triangles[0], 0u);
+    EXPECT_EQ(cells.data()[1].prefix.primitives[0], 2u);
+    // The plant itself has no parts; its cells' items carry its instance.
+    const draw_list& list = scene.world.resource<draw_list>();
+    std::vector<std::pair<std::uint16_t, std::uint32_t>> opaque;
+    for (const auto& item : list.items) {
+        EXPECT_EQ(item.instance, 0u);
+        if (decode_sort_key(item.key).pass == render_pass::opaque)
+            opaque.emplace_back(decode_sort_key(item.key).mesh, item.count);
+    }
+    EXPECT_EQ(opaque, (std::vector<std::pair<std::uint16_t, std::uint32_t>>{{0, 10}, {3, 2}}));
+}
+
 TEST(update_point_prefix, the_part_centre_follows_the_instance_yaw_and_scale) {
     lod_part_entry part;
     part.center = {1.0f, 2.0f, 0.0f};
