@@ -58,6 +58,34 @@ TEST_P(imported_species, renders_in_a_scenario_with_its_leaves_classified) {
     fs::remove_all(dir);
 }
 
+// Issue 5, item 7: the point/line representation works on imported trees too. At 20 px
+// between samples the imported species is drawn as points (or lines), its parts baked from a
+// model without branch records.
+TEST_P(imported_species, draws_as_points_and_lines) {
+    SYLVA_REQUIRE_GL();
+    const fs::path dir = fs::temp_directory_path() / ("sylva_gltf_points_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path model = GetParam()(dir);
+    const fs::path file = dir / "imported.json";
+    std::ofstream(file) << scenario_with_model(model);
+    const scenario s = load_scenario_file(file);
+    render::context_options options;
+    options.width = 160;
+    options.height = 90;
+    auto context = render::create_context(options);
+    player_options points;
+    points.policy.mode = lod_policy::kind::points_lines;
+    points.policy.points = {20.0f, 1.3f};
+    points.measure_costs = false;
+    scenario_player player(s, 2, context.get(), nullptr, points);
+    const frame_record r = player.step();
+    const species_entry& imported = player.assets().library.species.at(0);
+    ASSERT_GT(imported.lod_part_count, 0u);
+    EXPECT_GT(r.points + r.lines, 0u);
+    EXPECT_EQ(r.instances[std::size_t(representation::points)], 6u);
+    fs::remove_all(dir);
+}
+
 fs::path opaque_leaves_glb(const fs::path& dir) { return test::write_opaque_leaves(dir, true); }
 
 INSTANTIATE_TEST_SUITE_P(fixtures, imported_species,
