@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "models/texture_sampling.h"
+
 namespace sylva {
 namespace {
 
@@ -49,35 +51,6 @@ struct projected_vertex {
     float depth = 0.0f;
 };
 
-// The four texels and weights of a bilinear fetch with GL_REPEAT wrapping, texel row 0 at v = 0.
-struct bilinear_footprint {
-    const std::uint8_t* texel[4];  // (x0, y0), (x1, y0), (x0, y1), (x1, y1)
-    float weight[4];
-};
-
-std::uint32_t wrap(std::int32_t i, std::uint32_t size) {
-    if ((size & (size - 1)) == 0) return std::uint32_t(i) & (size - 1);  // power of two
-    const auto n = std::int32_t(size);
-    const std::int32_t m = i % n;
-    return std::uint32_t(m < 0 ? m + n : m);
-}
-
-bilinear_footprint footprint(const image_rgba8& texture, glm::vec2 uv) {
-    // Clamped far beyond any sensible tiling so the integer conversion is defined.
-    constexpr float k_limit = 1e8f;
-    const float x = std::clamp(uv.x * float(texture.width) - 0.5f, -k_limit, k_limit);
-    const float y = std::clamp(uv.y * float(texture.height) - 0.5f, -k_limit, k_limit);
-    const float fx = std::floor(x);
-    const float fy = std::floor(y);
-    const float tx = x - fx;
-    const float ty = y - fy;
-    const std::uint32_t x0 = wrap(std::int32_t(fx), texture.width);
-    const std::uint32_t x1 = wrap(std::int32_t(fx) + 1, texture.width);
-    const std::uint32_t y0 = wrap(std::int32_t(fy), texture.height);
-    const std::uint32_t y1 = wrap(std::int32_t(fy) + 1, texture.height);
-    return {{texture.at(x0, y0), texture.at(x1, y0), texture.at(x0, y1), texture.at(x1, y1)},
-            {(1.0f - tx) * (1.0f - ty), tx * (1.0f - ty), (1.0f - tx) * ty, tx * ty}};
-}
 
 // 0..255, what GL's alpha test compares with 0.5 (times 255).
 float bilinear_alpha(const image_rgba8& texture, glm::vec2 uv) {

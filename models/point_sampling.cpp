@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "models/texture_sampling.h"
+
 namespace sylva {
 namespace {
 
@@ -14,33 +16,6 @@ constexpr float k_alpha_threshold = 0.5f;
 constexpr glm::vec3 k_untextured_colour{0.5f};
 constexpr float k_tail_fraction = 0.05f;  // dropped at either end of the area ratio test
 
-std::uint32_t wrap(std::int32_t i, std::uint32_t size) {
-    const auto n = std::int32_t(size);
-    const std::int32_t m = i % n;
-    return std::uint32_t(m < 0 ? m + n : m);
-}
-
-// The four texels and weights of a bilinear fetch: the same footprint as billboard_bake.cpp's.
-struct bilinear_footprint {
-    const std::uint8_t* texel[4];
-    float weight[4];
-};
-
-bilinear_footprint footprint(const image_rgba8& texture, glm::vec2 uv) {
-    constexpr float k_limit = 1e8f;  // far beyond any tiling, so the integer conversion is defined
-    const float x = std::clamp(uv.x * float(texture.width) - 0.5f, -k_limit, k_limit);
-    const float y = std::clamp(uv.y * float(texture.height) - 0.5f, -k_limit, k_limit);
-    const float fx = std::floor(x);
-    const float fy = std::floor(y);
-    const float tx = x - fx;
-    const float ty = y - fy;
-    const std::uint32_t x0 = wrap(std::int32_t(fx), texture.width);
-    const std::uint32_t x1 = wrap(std::int32_t(fx) + 1, texture.width);
-    const std::uint32_t y0 = wrap(std::int32_t(fy), texture.height);
-    const std::uint32_t y1 = wrap(std::int32_t(fy) + 1, texture.height);
-    return {{texture.at(x0, y0), texture.at(x1, y0), texture.at(x0, y1), texture.at(x1, y1)},
-            {(1.0f - tx) * (1.0f - ty), tx * (1.0f - ty), (1.0f - tx) * ty, tx * ty}};
-}
 
 bool has_texels(const image_rgba8* texture) {
     return texture != nullptr && texture->width > 0 && texture->height > 0 &&
