@@ -70,6 +70,8 @@ nlohmann::json frame_json(const frame_record& f) {
             {"submit_issue_ms", f.submit_issue_ms},
             {"upload_bytes", f.upload_bytes},
             {"draw_calls", f.draw_calls},
+            {"aggregated_tiles", f.aggregated_tiles},
+            {"aggregated_plants", f.aggregated_plants},
             {"image_hash", f.image_hash},
             {"state_hash", f.state_hash}};
 }

@@ -31,6 +31,9 @@ struct frame_record {
     double submit_issue_ms = 0.0;   // issuing the GL calls (llvmpipe does vertex work here)
     std::uint64_t upload_bytes = 0;
     std::uint32_t draw_calls = 0;
+    // Deussen 2002 §6.2: far eco tiles drawn as their aggregated point sets, and their plants.
+    std::uint32_t aggregated_tiles = 0;
+    std::uint32_t aggregated_plants = 0;
     std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)
     std::uint64_t state_hash = 0;  // FNV-1a of the LOD state and the draw list
 };

@@ -6,6 +6,7 @@
 #include "components/camera.h"
 #include "components/lod_state.h"
 #include "systems/adapt_sample_distance_system.h"
+#include "systems/aggregate_eco_tiles_system.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/fit_shadow_cascades_system.h"
@@ -42,6 +43,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<adapt_sample_distance_system>();
     schedule.add<cull_system>();
     schedule.add<select_representation_system>();
+    schedule.add<aggregate_eco_tiles_system>();
     schedule.add<update_point_prefix_system>();
     schedule.add<project_environment_system>();
     schedule.add<fit_shadow_cascades_system>();
@@ -113,6 +115,11 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
     m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
+    // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines).
+    m_world.set_resource(policy.uses_point_lines() ? build_tile_point_sets(m_world, m_assets, m_scenario.seed)
+                                                   : tile_point_sets{});
+    m_world.resource<species_library>().meshes = m_assets.library.meshes;  // with the tile sets' meshes
+    m_world.set_resource(tile_point_draws{});
     m_world.set_resource(policy);
     m_world.set_resource(options.costs);
     sample_distance_budget budget = options.budget;
@@ -190,6 +197,8 @@ frame_record scenario_player::step() {
     record.submit_record_ms = stats.record_ms;
     record.submit_issue_ms = stats.submit_cpu_ms;
     record.draw_calls = stats.draw_calls;
+    record.aggregated_tiles = m_world.resource<tile_point_draws>().tiles;
+    record.aggregated_plants = m_world.resource<tile_point_draws>().plants;
     record.state_hash = state_hash();
     ++m_frame;
     return record;
@@ -204,6 +213,12 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
     const std::vector<std::uint32_t> instance_ids = m_renderer->read_ids();
     if (instance_ids.empty()) return {};
     const std::vector<draw_item>& items = m_world.resource<draw_list>().items;
+    const tile_point_sets& tile_sets = m_world.resource<tile_point_sets>();
+    const auto& tiles = m_world.table<tile>();
+    auto plant_of = [&](std::uint32_t instance) {
+        if (!(instance & k_tile_item_bit)) return instance;
+        return tiles.data()[tile_sets.parts[instance & ~k_tile_item_bit].tile].first_plant;
+    };
     const std::size_t width = m_scenario.width / samples;
     const std::size_t height = m_scenario.height / samples;
     const std::size_t centre = samples / 2;
@@ -213,7 +228,8 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
             const std::uint32_t id =
                 instance_ids[(y * samples + centre) * m_scenario.width + x * samples + centre];
             // IDs are draw-list instance index + 1; the terrain's instance follows the plants'.
-            if (id != 0 && id - 1 < items.size()) plants[y * width + x] = items[id - 1].instance + 1;
+            // A far eco tile's samples count as its first plant's.
+            if (id != 0 && id - 1 < items.size()) plants[y * width + x] = plant_of(items[id - 1].instance) + 1;
         }
     return plants;
 }

@@ -214,7 +214,12 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         offsets[chunks + c + 1] = count;
     });
     for (std::size_t c = 0; c < chunks + cell_chunks; ++c) offsets[c + 1] += offsets[c];
-    list.items.resize(offsets[chunks + cell_chunks]);
+    // Far eco tiles drawn as their point and line sets (Deussen 2002 §6.2) come last.
+    const tile_point_sets& tile_sets = ctx.resource<tile_point_sets>();
+    const std::vector<std::uint32_t>& tile_counts = ctx.resource<tile_point_draws>().counts;
+    std::size_t tile_items = 0;
+    for (const std::uint32_t count : tile_counts) tile_items += count > 0;
+    list.items.resize(offsets[chunks + cell_chunks] + tile_items);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         draw_item* out = list.items.data() + offsets[c];
         std::uint32_t index = std::uint32_t(begin);
@@ -231,6 +236,14 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             out = write_items(classify_cell(cell, prefix), cell.plant, out);
         });
     });
+    draw_item* tile_out = list.items.data() + offsets[chunks + cell_chunks];
+    for (std::size_t i = 0; i < tile_counts.size(); ++i) {
+        if (tile_counts[i] == 0) continue;
+        const tile_point_part& part = tile_sets.parts[i];
+        const auto depth = quantize_depth(float(glm::length(tile_sets.origin[part.tile] - cam.position)));
+        *tile_out++ = {make_sort_key({render_pass::opaque, part.mesh, depth}), k_tile_item_bit | std::uint32_t(i),
+                       tile_counts[i]};
+    }
     radix_sort_draw_items(list.items, list.scratch);
 
     // Instance records in sorted order; the tables are aligned, so a dense index reads them all.
@@ -239,6 +252,14 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     ctx.parallel_for(list.items.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint32_t k = list.items[i].instance;
+            if (k & k_tile_item_bit) {
+                const tile_point_part& part = tile_sets.parts[k & ~k_tile_item_bit];
+                instance_gpu g;
+                g.position = glm::vec3(tile_sets.origin[part.tile] - cam.position);
+                g.texture_layer = part.texture_layer;
+                list.instances[i] = g;
+                continue;
+            }
             list.instances[i] = make_instance(cam, transforms[k], instances[k], fades[k], library);
         }
     });

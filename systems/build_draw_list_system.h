@@ -4,7 +4,8 @@
 // plant drawn as points and lines gives one item per non-empty prefix of its parts
 // (point_prefix) in the view, and in each cascade the prefixes its texel size calls for
 // (compute_shadow_prefix), each item carrying its prefix length; the octree cells of big plants
-// (Deussen 2002 §6.1) add their own items, drawn with their plant's instance record.
+// (Deussen 2002 §6.1) add their own items, drawn with their plant's instance record; far eco
+// tiles drawn as their point sets (§6.2) add one item per set, marked with k_tile_item_bit.
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.
@@ -20,6 +21,7 @@
 #include "systems/draw_list.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/lod_policy.h"
+#include "systems/aggregate_eco_tiles_system.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
@@ -38,7 +40,8 @@ struct build_draw_list_system {
     static constexpr std::string_view k_name = "build_draw_list";
     static constexpr ecs::phase k_phase = ecs::phase::build;
     using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, octree_cell,
-                             cell_prefix, fade_alpha, species_library, cascade_set, lod_policy, primitive_costs>;
+                             cell_prefix, fade_alpha, species_library, cascade_set, lod_policy, primitive_costs,
+                             tile_point_sets, tile_point_draws>;
     using writes = ecs::writes<draw_list>;
     static void run(ecs::system_context<build_draw_list_system>& ctx);
 };

@@ -59,6 +59,8 @@ struct three_plants {
         world.set_resource(draw_list{});
         world.set_resource(lod_policy{});
         world.set_resource(primitive_costs{});
+        world.set_resource(tile_point_sets{});
+        world.set_resource(tile_point_draws{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<build_draw_list_system>();

@@ -84,6 +84,8 @@ struct prefix_scene {
         policy.points = {1.0f, 1.0f};
         world.set_resource(policy);
         world.set_resource(primitive_costs{});  // the paper's: a triangle costs three points
+        world.set_resource(tile_point_sets{});
+        world.set_resource(tile_point_draws{});
         schedule.add<cull_system>();
         schedule.add<select_representation_system>();
         schedule.add<update_point_prefix_system>();
