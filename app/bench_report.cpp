@@ -131,8 +131,8 @@ std::string table_md(const bench_report& report, const std::vector<bool>& on_fro
     });
     std::string md =
         "| configuration | median ms [min–max] | speed-up vs brute_force | PSNR dB | SSIM | FLIP | "
-        "coverage IoU | popping | lighting jump | triangles/frame | Pareto (FLIP) |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+        "coverage IoU | popping | lighting jump | triangles/frame | points/frame | lines/frame | Pareto (FLIP) |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
     for (const std::size_t i : order) {
         const bench_configuration& c = report.configurations[i];
         const bench_error& e = c.error;
@@ -143,8 +143,9 @@ std::string table_md(const bench_report& report, const std::vector<bool>& on_fro
               " | " + or_dash(e.psnr_db, 1) + " | " + or_dash(e.ssim, 4) + " | " +
               or_dash(e.perceptual, 4) + " | " + or_dash(e.coverage_iou, 4) + " | " +
               or_dash(e.popping, 2) + " | " + or_dash(e.lighting_jump, 2) + " | " +
-              grouped(entry_or_nan(c.primitives, "triangles")) + " | " + (on_front[i] ? "★" : "") +
-              " |\n";
+              grouped(entry_or_nan(c.primitives, "triangles")) + " | " +
+              grouped(entry_or_nan(c.primitives, "points")) + " | " + grouped(entry_or_nan(c.primitives, "lines")) +
+              " | " + (on_front[i] ? "★" : "") + " |\n";
     }
     return md;
 }

@@ -14,10 +14,11 @@ bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double dista
             if (!(p <= double(part.count))) return false;
             counts[i] = std::uint32_t(p);
         } else {
-            // Eq. 2: q = A'_l / A'_sl with l the length of all the tile's lines.
-            const part_draw d = select_lines(part.area_m2, part.line_length_m, part.line_error_m, part.count,
-                                             k_tile_samples + 1, distance_m, sample_distance, {1.0, 1.0, 0.0});
-            if (d.triangles > 0) return false;
+            // Eq. 2: q = A'_l / A'_sl with l the length of all the tile's lines; q·n_l of the
+            // n_l lines the set stands for, which the set must hold.
+            const part_draw d = select_lines(part.area_m2, part.line_length_m, part.line_error_m, part.stands_for,
+                                             part.stands_for, distance_m, sample_distance, {1.0, 1.0, 0.0});
+            if (d.triangles > 0 || d.primitives > part.count) return false;
             counts[i] = d.primitives;
         }
     }

@@ -25,6 +25,7 @@ struct sample_set {
     double full_length = 0.0;  // of every line the set stands for
     float line_error = 0.0f;
     std::uint32_t samples = 0;
+    double stands_for = 0.0;  // samples of every plant of the tile
 };
 
 std::uint32_t vertices_per(lod_primitive p) { return p == lod_primitive::lines ? 2u : 1u; }
@@ -130,6 +131,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     set.area += a;
                     set.line_error = std::max(set.line_error, part.line_error_m * w.scale);
                     set.full_length += double(part.line_length_m) * w.scale;
+                    set.stands_for += part.primitive_count;
                     take(set, mesh.vertices, vertices_per(part.primitive), density[key] * a, offset, w.yaw, w.scale);
                 });
             }
@@ -153,6 +155,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     merged.area += set.area;
                     merged.line_error = std::max(merged.line_error, set.line_error);
                     merged.full_length += set.full_length;
+                    merged.stands_for += set.stands_for;
                     take(merged, set.vertices, vertices_per(std::get<2>(key)), density[key] * set.area, offset, 0.0f,
                          1.0f);
                 }
@@ -185,6 +188,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
             part.line_length_m = float(set.full_length);
             part.line_error_m = set.line_error;
             part.count = set.samples;
+            part.stands_for = std::uint32_t(std::min(set.stands_for, 4e9));
             mesh_data mesh;
             mesh.primitive = primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
             mesh.indices.resize(set.vertices.size());

@@ -34,7 +34,8 @@ struct tile_point_part {
     float area_m2 = 0.0f;        // A of Eq. 1 / Eq. 2: the plants' parts, scaled, importance applied
     float line_length_m = 0.0f;  // l: the sampled lines' total length scaled up to the whole tile
     float line_error_m = 0.0f;   // ε_l: the largest of the plants'
-    std::uint32_t count = 0;     // samples in the mesh (n)
+    std::uint32_t count = 0;     // samples in the mesh
+    std::uint32_t stands_for = 0;  // samples of all the tile's plants it is drawn from (n_l of Eq. 2)
 };
 
 // The tile sets as a world resource (read by aggregate_eco_tiles and build_draw_list).

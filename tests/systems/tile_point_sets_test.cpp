@@ -106,5 +106,24 @@ TEST(tile_point_sets, a_tile_is_drawn_as_its_set_only_where_eq1_needs_no_more_sa
     EXPECT_FALSE(tile_prefixes(sets, 0, 50.0, 0.004, 1.0, counts));
 }
 
+TEST(tile_point_sets, a_line_set_draws_q_times_the_lines_its_tile_stands_for) {
+    tile_point_sets sets;
+    sets.first_part = {0, 1};
+    tile_point_part part;
+    part.primitive = lod_primitive::lines;
+    part.area_m2 = 18.0f;        // 1000 blades of 0.018 m²
+    part.line_length_m = 500.0f;  // 1000 blades of 0.5 m
+    part.line_error_m = 0.01f;
+    part.count = 200;  // the set holds 200 of them
+    part.stands_for = 1000;
+    sets.parts = {part};
+    std::vector<std::uint32_t> counts(1, 0);
+    // q = A / (r·l·d') = 18 / (r · 500 · 0.004): r = 90 → 0.1 → 100 of the 1000 lines (the set
+    // has them); r = 30 → 0.3 → 300 lines, more than the set holds: not drawn as a tile.
+    EXPECT_TRUE(tile_prefixes(sets, 0, 90.0, 0.004, 1.0, counts));
+    EXPECT_EQ(counts[0], 100u);
+    EXPECT_FALSE(tile_prefixes(sets, 0, 30.0, 0.004, 1.0, counts));
+}
+
 }  // namespace
 }  // namespace sylva
