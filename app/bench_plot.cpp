@@ -277,7 +277,7 @@ std::string axes_svg(const axis& x, const axis& y, const panel& p) {
         svg += "<line x1=\"" + px(x(t)) + "\" y1=\"" + px(k_plot_top) + "\" x2=\"" + px(x(t)) +
                "\" y2=\"" + px(k_plot_bottom) + "\" stroke=\"#e4e4e4\"/>\n<text x=\"" + px(x(t)) +
                "\" y=\"" + px(k_plot_bottom + 16) + "\" text-anchor=\"middle\">" +
-               significant(t, 4) + "</text>\n";
+               significant(t, 6) + "</text>\n";
     for (const double t : y.ticks)
         svg += "<line x1=\"" + px(p.left) + "\" y1=\"" + px(y(t)) + "\" x2=\"" + px(right) +
                "\" y2=\"" + px(y(t)) + "\" stroke=\"#e4e4e4\"/>\n<text x=\"" + px(p.left - 6) +
