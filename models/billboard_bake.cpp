@@ -52,28 +52,6 @@ struct projected_vertex {
 };
 
 
-// 0..255, what GL's alpha test compares with 0.5 (times 255).
-float bilinear_alpha(const image_rgba8& texture, glm::vec2 uv) {
-    const bilinear_footprint f = footprint(texture, uv);
-    float a = 0.0f;
-    for (int i = 0; i < 4; ++i) a += f.weight[i] * float(f.texel[i][3]);
-    return a;
-}
-
-// rgb 0..255. `alpha_weighted`: weights multiplied by alpha, so the transparent texels of a leaf
-// card do not pull their (meaningless) colour into the leaf's edge.
-glm::vec3 bilinear_colour(const image_rgba8& texture, glm::vec2 uv, bool alpha_weighted) {
-    const bilinear_footprint f = footprint(texture, uv);
-    glm::vec3 sum{0.0f};
-    float total = 0.0f;
-    for (int i = 0; i < 4; ++i) {
-        const float w = alpha_weighted ? f.weight[i] * float(f.texel[i][3]) : f.weight[i];
-        sum += w * glm::vec3(f.texel[i][0], f.texel[i][1], f.texel[i][2]);
-        total += w;
-    }
-    return total > 0.0f ? sum / total : sum;
-}
-
 // Is a subsample lying exactly on edge a -> b inside? Exactly one of a -> b and b -> a says yes
 // (an antisymmetric choice equivalent to the top-left rule), so a shared edge is counted once.
 bool owns_edge(std::int64_t dx, std::int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }

@@ -65,23 +65,10 @@ surface_texture surface_of(material_kind material, const image_rgba8& leaf_textu
     return {&bark_texture, false};
 }
 
-float texture_alpha(const image_rgba8& texture, glm::vec2 uv) {
-    const bilinear_footprint f = footprint(texture, uv);
-    float a = 0.0f;
-    for (int i = 0; i < 4; ++i) a += f.weight[i] * float(f.texel[i][3]);
-    return a / 255.0f;
-}
+float texture_alpha(const image_rgba8& texture, glm::vec2 uv) { return bilinear_alpha(texture, uv) / 255.0f; }
 
 glm::vec3 texture_colour(const image_rgba8& texture, glm::vec2 uv, bool alpha_weighted) {
-    const bilinear_footprint f = footprint(texture, uv);
-    glm::vec3 sum{0.0f};
-    float total = 0.0f;
-    for (int i = 0; i < 4; ++i) {
-        const float w = alpha_weighted ? f.weight[i] * float(f.texel[i][3]) : f.weight[i];
-        sum += w * glm::vec3(f.texel[i][0], f.texel[i][1], f.texel[i][2]);
-        total += w;
-    }
-    return (total > 0.0f ? sum / total : sum) / 255.0f;
+    return bilinear_colour(texture, uv, alpha_weighted) / 255.0f;
 }
 
 bool passes_alpha_test(const surface_texture& surface, glm::vec2 uv) {

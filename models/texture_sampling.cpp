@@ -29,4 +29,23 @@ bilinear_footprint footprint(const image_rgba8& texture, glm::vec2 uv) {
             {(1.0f - tx) * (1.0f - ty), tx * (1.0f - ty), (1.0f - tx) * ty, tx * ty}};
 }
 
+float bilinear_alpha(const image_rgba8& texture, glm::vec2 uv) {
+    const bilinear_footprint f = footprint(texture, uv);
+    float a = 0.0f;
+    for (int i = 0; i < 4; ++i) a += f.weight[i] * float(f.texel[i][3]);
+    return a;
+}
+
+glm::vec3 bilinear_colour(const image_rgba8& texture, glm::vec2 uv, bool alpha_weighted) {
+    const bilinear_footprint f = footprint(texture, uv);
+    glm::vec3 sum{0.0f};
+    float total = 0.0f;
+    for (int i = 0; i < 4; ++i) {
+        const float w = alpha_weighted ? f.weight[i] * float(f.texel[i][3]) : f.weight[i];
+        sum += w * glm::vec3(f.texel[i][0], f.texel[i][1], f.texel[i][2]);
+        total += w;
+    }
+    return total > 0.0f ? sum / total : sum;
+}
+
 }  // namespace sylva

@@ -5,6 +5,7 @@
 // the renderer would show.
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "models/image.h"
 
@@ -19,5 +20,11 @@ struct bilinear_footprint {
     float weight[4];
 };
 bilinear_footprint footprint(const image_rgba8& texture, glm::vec2 uv);
+
+// Alpha at `uv`, 0..255: what GL's alpha test compares with 0.5 (times 255).
+float bilinear_alpha(const image_rgba8& texture, glm::vec2 uv);
+// Colour at `uv`, rgb 0..255. `alpha_weighted`: weights multiplied by alpha, so the transparent
+// texels of a leaf card do not pull their (meaningless) colour into the leaf's edge.
+glm::vec3 bilinear_colour(const image_rgba8& texture, glm::vec2 uv, bool alpha_weighted);
 
 }  // namespace sylva
