@@ -26,21 +26,36 @@ std::string scenario_with_model(const fs::path& model) {
       "camera": {"keyframes": [{"t": 0, "position": [0, 4, 28], "target": [0, 4, 0]}]}})";
 }
 
-class imported_species : public ::testing::TestWithParam<fs::path (*)(const fs::path&)> {};
+class imported_species : public ::testing::TestWithParam<fs::path (*)(const fs::path&)> {
+protected:
+    // Writes the fixture and a scenario using it into a fresh folder (removed afterwards) and
+    // makes a 160x90 headless context.
+    scenario load(const std::string& folder) {
+        m_dir = fs::temp_directory_path() / (folder + std::to_string(::getpid()));
+        fs::create_directories(m_dir);
+        const fs::path model = GetParam()(m_dir);
+        const fs::path file = m_dir / "imported.json";
+        std::ofstream(file) << scenario_with_model(model);
+        render::context_options options;
+        options.width = 160;
+        options.height = 90;
+        m_context = render::create_context(options);
+        return load_scenario_file(file);
+    }
+    void TearDown() override {
+        if (!m_dir.empty()) fs::remove_all(m_dir);
+    }
+    render::gl_context* context() { return m_context.get(); }
+
+private:
+    fs::path m_dir;
+    std::unique_ptr<render::gl_context> m_context;
+};
 
 TEST_P(imported_species, renders_in_a_scenario_with_its_leaves_classified) {
     SYLVA_REQUIRE_GL();
-    const fs::path dir = fs::temp_directory_path() / ("sylva_gltf_render_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path model = GetParam()(dir);
-    const fs::path file = dir / "imported.json";
-    std::ofstream(file) << scenario_with_model(model);
-    const scenario s = load_scenario_file(file);
-    render::context_options options;
-    options.width = 160;
-    options.height = 90;
-    auto context = render::create_context(options);
-    scenario_player player(s, 2, context.get());
+    const scenario s = load("sylva_gltf_render_");
+    scenario_player player(s, 2, context());
     const frame_record r = player.step();
     EXPECT_GT(r.triangles, 0u);
     // Every imported instance is drawn (4 of them) besides the 2 oaks.
@@ -55,7 +70,6 @@ TEST_P(imported_species, renders_in_a_scenario_with_its_leaves_classified) {
     EXPECT_TRUE(has_leaf);
     // Scaled to the scenario's 8 m whatever its source units.
     EXPECT_NEAR(meshes.at(imported.mesh_full).bounds_max.y, 8.0f, 0.01f);
-    fs::remove_all(dir);
 }
 
 // Issue 5, item 7: the point/line representation works on imported trees too. At 20 px
@@ -63,27 +77,17 @@ TEST_P(imported_species, renders_in_a_scenario_with_its_leaves_classified) {
 // model without branch records.
 TEST_P(imported_species, draws_as_points_and_lines) {
     SYLVA_REQUIRE_GL();
-    const fs::path dir = fs::temp_directory_path() / ("sylva_gltf_points_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path model = GetParam()(dir);
-    const fs::path file = dir / "imported.json";
-    std::ofstream(file) << scenario_with_model(model);
-    const scenario s = load_scenario_file(file);
-    render::context_options options;
-    options.width = 160;
-    options.height = 90;
-    auto context = render::create_context(options);
+    const scenario s = load("sylva_gltf_points_");
     player_options points;
     points.policy.mode = lod_policy::kind::points_lines;
     points.policy.points = {20.0f, 1.3f};
     points.measure_costs = false;
-    scenario_player player(s, 2, context.get(), nullptr, points);
+    scenario_player player(s, 2, context(), nullptr, points);
     const frame_record r = player.step();
     const species_entry& imported = player.assets().library.species.at(0);
     ASSERT_GT(imported.lod_part_count, 0u);
     EXPECT_GT(r.points + r.lines, 0u);
     EXPECT_EQ(r.instances[std::size_t(representation::points)], 6u);
-    fs::remove_all(dir);
 }
 
 fs::path opaque_leaves_glb(const fs::path& dir) { return test::write_opaque_leaves(dir, true); }
