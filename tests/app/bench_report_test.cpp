@@ -371,16 +371,16 @@ TEST(bench_report_summary, table_sorted_by_frame_time_with_hand_computed_speed_u
     // 50 / 4 = 12.5; 50 / 6 = 8.33; 50 / 50 = 1; 50 / 500 = 0.1.
     const std::string lod =
         "| lod_scale_0.5 | 4.00 [3.80–4.40] | 12.5× | 30.0 | 0.9800 | 0.0180 | 0.9900 | 0.00 | "
-        "0.00 | 150,000 | ★ |";
+        "0.00 | 150,000 | 0 | 0 | ★ |";
     const std::string baseline =
         "| baseline | 6.00 [5.50–7.00] | 8.33× | 27.1 | 0.9300 | 0.0900 | 0.9900 | 0.00 | "
-        "7.50 | 150,000 |  |";
+        "7.50 | 150,000 | 0 | 0 |  |";
     const std::string brute =
         "| brute_force | 50.0 [48.0–55.0] | 1.00× | 38.5 | 0.9900 | 0.0200 | 0.9990 | 0.10 | "
-        "0.00 | 2,000,000 |  |";
+        "0.00 | 2,000,000 | 0 | 0 |  |";
     const std::string reference =
         "| reference | 500 [490–520] | 0.10× | ∞ | 1.0000 | 0.0000 | 1.0000 | 0.00 | 0.00 | "
-        "150,000 | ★ |";
+        "150,000 | 0 | 0 | ★ |";
     for (const std::string& row : {lod, baseline, brute, reference})
         EXPECT_NE(md.find(row + "\n"), std::string::npos) << row << "\n---\n" << md;
     EXPECT_LT(md.find(lod), md.find(baseline));
