@@ -315,6 +315,12 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     budget.description = "points and lines, d' adapted every frame to 1 M triangle equivalents (Deussen 2002 §5.4)";
     budget.options.budget.primitives = 1e6;
     list.push_back(budget);
+    // The same without §6.2's tile sets: every plant drawn on its own, to measure what they do.
+    bench_configuration_spec plants_only = points_lines(1.0f);
+    plants_only.name = "points_lines_no_tile_sets";
+    plants_only.description = "points and lines, d' = 1 px, every plant on its own (no eco-tile point sets, §6.2)";
+    plants_only.options.policy.tile_sets = false;
+    list.push_back(plants_only);
     return list;
 }
 

@@ -31,7 +31,7 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
     draws.counts.assign(sets.parts.size(), 0);
     draws.tiles = draws.plants = 0;
     const lod_policy& policy = ctx.resource<lod_policy>();
-    if (sets.parts.empty() || policy.mode != lod_policy::kind::points_lines) return;
+    if (sets.parts.empty() || policy.mode != lod_policy::kind::points_lines || !policy.tile_sets) return;
     const camera& cam = ctx.single<camera>();
     const double d = image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px);
     const auto& tiles = ctx.read<tile>();

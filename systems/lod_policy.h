@@ -24,6 +24,8 @@ struct lod_policy {
     // The point/line representation's d' and c_p (points_lines only). d' is the starting value
     // when a frame-time or primitive budget controls it (Deussen 2002 §5.4).
     point_line_quality points{};
+    // Deussen 2002 §6.2: far eco tiles drawn as their aggregated sets (points_lines only).
+    bool tile_sets = true;
 
     // True when select_representation can choose the point/line representation: the scene then
     // bakes and uploads it (and does not otherwise).

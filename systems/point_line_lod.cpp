@@ -23,9 +23,15 @@ double required_points(double area_m2, double distance_m, double sample_distance
 }
 
 part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t> points_after,
-                       const primitive_costs& costs) {
+                       const primitive_costs& costs, double importance) {
     part_draw d;
     if (std::isnan(p) || k == 0 || points_after.size() != std::size_t(k) + 1) return d;
+    if (importance > 1.0) {
+        // §4.3: decide at m·p; as points only, draw p.
+        d = blend_points(p * importance, k, points_after, costs);
+        if (d.triangles == 0) d.primitives = std::min(std::uint32_t(std::max(p, 0.0)), points_after[0]);
+        return d;
+    }
     const double rho = costs.points_per_triangle();  // the paper: 3
     const double two_k = 2.0 * double(k);
     // Deussen 2002 §5.3: p >= 3k → all triangles (3 = ρ, the points one triangle costs).
@@ -47,7 +53,14 @@ part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t>
 }
 
 part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
-                       double distance_m, double sample_distance, const primitive_costs& costs) {
+                       double distance_m, double sample_distance, const primitive_costs& costs, double importance) {
+    if (importance > 1.0) {
+        // §4.3: polygons while m·q > 1; as lines, the q·n_l coverage asks for.
+        const part_draw d =
+            select_lines(area_m2 * importance, length_m, error_m, n_lines, k, distance_m, sample_distance, costs);
+        if (d.triangles > 0) return d;
+        return select_lines(area_m2, length_m, error_m, n_lines, k, distance_m, sample_distance, costs);
+    }
     part_draw all_triangles{k, 0};
     if (n_lines == 0 || !(length_m > 0.0)) return all_triangles;
     if (!(distance_m > 0.0)) return distance_m == 0.0 ? all_triangles : part_draw{};

@@ -66,16 +66,22 @@ struct part_draw {
 // t = (p − 2k) / (ρ − 2) triangles; for ρ <= 2 a triangle is no dearer than its two points and
 // the part turns polygonal at p >= ρk with no blend. The paper's costs give the paper's rule.
 // A NaN p draws nothing; an infinite one draws every triangle.
+//
+// §4.3 importance m (>= 1) makes a part "reduced more slowly": it blends and turns polygonal as
+// if it needed m·p samples, so it keeps its triangles m times farther; once it is points only
+// it draws the p its coverage needs (m·p splats of the same size would paint it m times over).
 part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t> points_after,
-                       const primitive_costs& costs = {});
+                       const primitive_costs& costs = {}, double importance = 1.0);
 
 // Deussen 2002 §5.2, Eq. 2, for a line part of world area A_l approximated by n_l lines of total
 // length l within ε_l. ε_l / r >= d' → triangles (the lines would be visibly off); else
 // q = A'_l / A'_sl with A'_l = ½·A_l / r² (as Eq. 1) and A'_sl = l·d' / (2r); q <= 1 draws the
 // first q·n_l lines (rounded to nearest, at least one), q > 1 draws every triangle. Lines that
 // would cost more on the device than the part's k triangles are drawn as the triangles.
+// Importance m (§4.3) turns the part polygonal at q > 1/m; as lines it draws q·n_l (see above).
 part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
-                       double distance_m, double sample_distance, const primitive_costs& costs = {});
+                       double distance_m, double sample_distance, const primitive_costs& costs = {},
+                       double importance = 1.0);
 
 // Splat side in pixels: each splat covers c_p·d'² (the splat factor enlarges splats so the
 // random samples leave no holes, §5.1 and §5.4, Fig. 5c).

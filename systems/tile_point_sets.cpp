@@ -106,7 +106,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                 each_part(k, [&](std::uint32_t species, const lod_part_entry& part, const mesh_data& mesh) {
                     const float s = transforms.data()[k].scale;
                     area[{species, mesh.submeshes[0].material, part.primitive}] +=
-                        double(part.area_m2) * s * s * double(part.importance);
+                        double(part.area_m2) * s * s;
                 });
             // Samples per m², the same for every plant of a set (so samples follow area), as
             // high as the budget and the sparsest plant's own list allow.
@@ -115,7 +115,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                 each_part(k, [&](std::uint32_t species, const lod_part_entry& part, const mesh_data& mesh) {
                     const set_key key{species, mesh.submeshes[0].material, part.primitive};
                     const float s = transforms.data()[k].scale;
-                    const double a = double(part.area_m2) * s * s * double(part.importance);
+                    const double a = double(part.area_m2) * s * s;
                     const double plant_density = a > 0.0 ? double(part.primitive_count) / a : 0.0;
                     const auto it = density.find(key);
                     density[key] = it == density.end() ? std::min(plant_density, k_tile_samples / area[key])
@@ -126,7 +126,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                 const glm::vec3 offset(w.position - out.origin[i]);
                 each_part(k, [&](std::uint32_t species, const lod_part_entry& part, const mesh_data& mesh) {
                     const set_key key{species, mesh.submeshes[0].material, part.primitive};
-                    const double a = double(part.area_m2) * w.scale * w.scale * double(part.importance);
+                    const double a = double(part.area_m2) * w.scale * w.scale;
                     sample_set& set = own[key];
                     set.area += a;
                     set.line_error = std::max(set.line_error, part.line_error_m * w.scale);

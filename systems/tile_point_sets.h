@@ -31,7 +31,8 @@ struct tile_point_part {
     std::uint16_t mesh = 0;  // points or lines relative to the tile's origin
     lod_primitive primitive = lod_primitive::points;
     float texture_layer = 0.0f;
-    float area_m2 = 0.0f;        // A of Eq. 1 / Eq. 2: the plants' parts, scaled, importance applied
+    float area_m2 = 0.0f;  // A of Eq. 1 / Eq. 2: the plants' parts, scaled (a far tile needs coverage,
+                           // not importance: no part of it is polygonal)
     float line_length_m = 0.0f;  // l: the sampled lines' total length scaled up to the whole tile
     float line_error_m = 0.0f;   // ε_l: the largest of the plants'
     std::uint32_t count = 0;     // samples in the mesh

@@ -27,16 +27,16 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
         const lod_part_entry& part = library.lod_parts[parts.first + i];
         const double r = glm::length(part_world_center(part, t) - eye);
-        // §4.3: importance scales the area the part is taken to cover (and so p or q).
-        const double area = double(part.area_m2) * scale * scale * double(part.importance);
+        const double area = double(part.area_m2) * scale * scale;
         part_draw d;
         if (part.primitive == lod_primitive::points) {
             const double p = required_points(area, r, sample_distance, splat_factor);
             d = blend_points(p, part.triangle_count,
-                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs);
+                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs,
+                             part.importance);
         } else {
             d = select_lines(area, double(part.line_length_m) * scale, double(part.line_error_m) * scale,
-                             part.primitive_count, part.triangle_count, r, sample_distance, costs);
+                             part.primitive_count, part.triangle_count, r, sample_distance, costs, part.importance);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;
@@ -50,15 +50,16 @@ point_prefix compute_shadow_prefix(const species_library& library, part_range pa
     const double s = double(scale);
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
         const lod_part_entry& part = library.lod_parts[parts.first + i];
-        const double area = double(part.area_m2) * s * s * double(part.importance);
+        const double area = double(part.area_m2) * s * s;
         part_draw d;
         // At r = 1 the image plane is the world: the texel is d' in metres.
         if (part.primitive == lod_primitive::points) {
             d = blend_points(required_points(area, 1.0, texel_world_m, splat_factor), part.triangle_count,
-                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs);
+                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs,
+                             part.importance);
         } else {
             d = select_lines(area, double(part.line_length_m) * s, double(part.line_error_m) * s, part.primitive_count,
-                             part.triangle_count, 1.0, texel_world_m, costs);
+                             part.triangle_count, 1.0, texel_world_m, costs, part.importance);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;

@@ -2,8 +2,8 @@
 // Deussen 2002 §5: for every plant drawn with the point/line representation, how much of each
 // part to draw this frame: Eq. 1 and the §5.3 blend for point parts, Eq. 2 for line parts,
 // each with r the distance from the eye to the part's centre (so the parts of one plant, and
-// later the octree cells of a big one, §6.1, choose independently). §4.3 importance multiplies
-// a part's effective area, so important parts keep more primitives and stay polygonal longer.
+// later the octree cells of a big one, §6.1, choose independently). §4.3 importance keeps
+// important parts polygonal longer (point_line_lod.h: blend_points, select_lines).
 // The device's primitive costs (a resource, primitive_costs: measured where Sylva runs, the
 // paper's 1:3 point:triangle otherwise) set where parts turn polygonal. Writes the prefix
 // lengths (point_prefix; cell_prefix for the octree cells of big plants, §6.1) that

@@ -100,6 +100,19 @@ TEST(point_line_lod, lines_dearer_than_their_triangles_are_drawn_as_triangles) {
     EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 30, 10.0, 0.004, llvmpipe), (part_draw{30, 0}));
 }
 
+TEST(point_line_lod, importance_moves_the_polygon_threshold_not_the_point_count) {
+    const auto after = stratified_after(10);
+    // m = 4: p = 8 decides as 32 >= 3k → every triangle; p = 6 decides as 24 → 4 triangles and
+    // the 12 points of the other 6; p = 4 decides as 16 < 2k → the 4 points coverage needs.
+    EXPECT_EQ(blend_points(8.0, 10, after, {}, 4.0), (part_draw{10, 0}));
+    EXPECT_EQ(blend_points(6.0, 10, after, {}, 4.0), (part_draw{4, 12}));
+    EXPECT_EQ(blend_points(4.0, 10, after, {}, 4.0), (part_draw{0, 4}));
+    // Lines: q = 0.36 at r = 25 (4 lines); with m = 3, 3q > 1 → triangles; at r = 50,
+    // q = 0.18 and 3q = 0.54 → the 2 lines q asks for.
+    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 25.0, 0.004, {}, 3.0), (part_draw{40, 0}));
+    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 50.0, 0.004, {}, 3.0), (part_draw{0, 2}));
+}
+
 TEST(point_line_lod, eq2_lines_are_polygons_when_their_error_is_larger_than_d_prime) {
     // ε_l / r = 0.05 / 20 = 0.0025 >= d' = 0.001: triangles.
     EXPECT_EQ(select_lines(0.2, 5.0, 0.05, 10, 40, 20.0, 0.001), (part_draw{40, 0}));

@@ -125,16 +125,21 @@ TEST(update_point_prefix, prefixes_equal_eq1_eq2_and_the_blend_for_a_known_camer
     EXPECT_EQ(scene.prefix(4).primitives[1], 3u);
 }
 
-TEST(update_point_prefix, importance_slows_the_reduction_of_a_part) {
-    prefix_scene ordinary({20.0});
-    prefix_scene important({20.0}, 2.0f);
+TEST(update_point_prefix, importance_keeps_a_part_polygonal_longer_without_painting_it_over) {
+    prefix_scene ordinary({9.5, 20.0});
+    prefix_scene important({9.5, 20.0}, 2.0f);
     ecs::executor executor(1);
     ordinary.schedule.run(ordinary.world, executor);
     important.schedule.run(important.world, executor);
-    // r = 20: p = 6.25 → 6 points; with importance 2, p = 12.5 → 12 points.
-    EXPECT_EQ(ordinary.prefix(0).primitives[0], 6u);
-    EXPECT_EQ(important.prefix(0).primitives[0], 12u);
-    // The line part is not affected.
+    // r = 9.5: p = 27.7 blends (7 triangles + 6 points); with importance 2, 2p = 55.4 >= 3k: all
+    // 10 triangles.
+    EXPECT_EQ(ordinary.prefix(0).triangles[0], 7u);
+    EXPECT_EQ(important.prefix(0).triangles[0], 10u);
+    EXPECT_EQ(important.prefix(0).primitives[0], 0u);
+    // r = 20: p = 6.25 and 2p = 12.5 < 2k: points only for both, and as many as coverage needs.
+    EXPECT_EQ(ordinary.prefix(1).primitives[0], 6u);
+    EXPECT_EQ(important.prefix(1).primitives[0], 6u);
+    // The line part (importance 1) is not affected.
     EXPECT_EQ(ordinary.prefix(0).primitives[1], important.prefix(0).primitives[1]);
 }
 
