@@ -76,7 +76,7 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
 
 // The device's primitive costs for this renderer and d', from the cache or measured now.
 primitive_costs device_costs(render::renderer& r, const render::gl_context& context, const lod_policy& policy,
-                             bake_cache* cache) {
+                             bake_cache& cache) {
     render::calibration_settings settings;
     settings.sample_distance_px = policy.points.sample_distance_px;
     settings.splat_factor = policy.points.splat_factor;
@@ -91,7 +91,7 @@ primitive_costs device_costs(render::renderer& r, const render::gl_context& cont
         out.pod(result.costs);
         return out.bytes();
     };
-    const std::vector<std::byte> bytes = cache ? cache->get_or_bake("primitive_costs", key, measure) : measure();
+    const std::vector<std::byte> bytes = cache.get_or_bake("primitive_costs", key, measure);
     binary_reader in(bytes);
     return in.pod<primitive_costs>();
 }
@@ -116,8 +116,8 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
     // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines).
-    m_world.set_resource(policy.uses_point_lines() ? build_tile_point_sets(m_world, m_assets, m_scenario.seed)
-                                                   : tile_point_sets{});
+    const bool tile_sets = policy.mode == lod_policy::kind::points_lines && policy.tile_sets;
+    m_world.set_resource(tile_sets ? build_tile_point_sets(m_world, m_assets, m_scenario.seed) : tile_point_sets{});
     m_world.resource<species_library>().meshes = m_assets.library.meshes;  // with the tile sets' meshes
     m_world.set_resource(tile_point_draws{});
     m_world.set_resource(policy);
@@ -142,8 +142,10 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         settings.id_buffer = options.id_buffer;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
-        if (options.measure_costs && policy.uses_point_lines())
-            m_world.set_resource(device_costs(*m_renderer, *context, policy, cache));
+        // Measured once per device and setting, then read from the cache: without a cache the
+        // paper's costs, so a run's images never depend on a timing taken during it.
+        if (options.measure_costs && cache && policy.uses_point_lines())
+            m_world.set_resource(device_costs(*m_renderer, *context, policy, *cache));
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();

@@ -40,8 +40,8 @@ struct player_options {
     // What primitives cost on the device (the point/line representation's thresholds); the
     // paper's by default, measured ones from systems/render/primitive_cost_calibration.h.
     primitive_costs costs{};
-    // With the point/line representation and a GL device: measure `costs` on the device first
-    // (systems/render/primitive_cost_calibration.h), through the bake cache when there is one.
+    // With the point/line representation, a GL device and a bake cache: use the device's costs
+    // (systems/render/primitive_cost_calibration.h), measured once and cached.
     bool measure_costs = true;
     bool id_buffer = false;
 };

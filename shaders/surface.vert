@@ -23,6 +23,7 @@ uniform int u_cascade;
 #ifdef PRIMITIVE_POINTS
 uniform float u_splat_px;     // splat side on screen, pixels
 uniform float u_splat_plane;  // the same on the image plane at distance one
+uniform float u_splat_texels; // smallest splat in a shadow map, texels (√c_p: c_p texels' area)
 #endif
 
 out vec3 v_position;  // camera-relative world position
@@ -57,7 +58,7 @@ void main() {
 #ifdef SHADOW_PASS
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
-    gl_PointSize = max(1.0, u_splat_plane * length(world) / u_cascade_texel_world[u_cascade]);
+    gl_PointSize = max(u_splat_texels, u_splat_plane * length(world) / u_cascade_texel_world[u_cascade]);
 #endif
 #else
     gl_Position = u_view_projection * vec4(world, 1.0);

@@ -16,8 +16,10 @@ bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double dista
         } else {
             // Eq. 2: q = A'_l / A'_sl with l the length of all the tile's lines; q·n_l of the
             // n_l lines the set stands for, which the set must hold.
+            primitive_costs lines_always;  // a tile set has no triangles to fall back on
+            lines_always.line = 0.0;
             const part_draw d = select_lines(part.area_m2, part.line_length_m, part.line_error_m, part.stands_for,
-                                             part.stands_for, distance_m, sample_distance, {1.0, 1.0, 0.0});
+                                             part.stands_for, distance_m, sample_distance, lines_always);
             if (d.triangles > 0 || d.primitives > part.count) return false;
             counts[i] = d.primitives;
         }
@@ -34,6 +36,8 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
     if (sets.parts.empty() || policy.mode != lod_policy::kind::points_lines || !policy.tile_sets) return;
     const camera& cam = ctx.single<camera>();
     const double d = image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px);
+    const shadow_settings& shadows = ctx.resource<shadow_settings>();
+    const double shadow_distance = shadows.cascades > 0 ? double(shadows.max_distance_m) : 0.0;
     const auto& tiles = ctx.read<tile>();
     const auto& visibility = ctx.read<tile_visibility>();
     auto& lods = ctx.write<lod_state>();
@@ -44,7 +48,8 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
         std::size_t next = i + 1;
         while (next < tiles.size() && tiles.data()[next].depth > t.depth) ++next;  // end of subtree
         const double r = glm::length(sets.origin[i] - cam.position);
-        const bool far = r >= k_aggregate_distance_factor * double(sets.radius[i]);
+        const double radius = double(sets.radius[i]);
+        const bool far = r >= k_aggregate_distance_factor * radius && r - radius > shadow_distance;
         if (!visibility.data()[i].visible || !far ||
             !tile_prefixes(sets, std::uint32_t(i), r, d, policy.points.splat_factor, draws.counts)) {
             for (std::uint32_t p = sets.first_part[i]; p < sets.first_part[i + 1]; ++p) draws.counts[p] = 0;

@@ -5,13 +5,14 @@
 // (at least k_aggregate_distance_factor times its radius) whose sets hold enough samples for
 // Eq. 1 and Eq. 2 at that distance is drawn as its sets' prefixes, and its plants are not
 // drawn at all (lod_state none); otherwise its children are tried, and the plants of leaf tiles
-// that do not qualify are drawn one by one as usual. Aggregated tiles cast no shadows (far
-// tiles lie beyond the shadow distance in every shipped scenario).
+// that do not qualify are drawn one by one as usual. Aggregated tiles cast no shadows, so a
+// tile is aggregated only when all of it lies beyond the shadow distance.
 #include "components/camera.h"
 #include "components/lod_state.h"
 #include "components/tile.h"
 #include "components/tile_visibility.h"
 #include "ecs/system.h"
+#include "scenarios/scenario.h"
 #include "systems/lod_policy.h"
 #include "systems/tile_point_sets.h"
 
@@ -35,7 +36,7 @@ bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double dista
 struct aggregate_eco_tiles_system {
     static constexpr std::string_view k_name = "aggregate_eco_tiles";
     static constexpr ecs::phase k_phase = ecs::phase::transition;
-    using reads = ecs::reads<camera, tile, tile_visibility, lod_policy, tile_point_sets>;
+    using reads = ecs::reads<camera, tile, tile_visibility, lod_policy, tile_point_sets, shadow_settings>;
     using writes = ecs::writes<lod_state, tile_point_draws>;
     static void run(ecs::system_context<aggregate_eco_tiles_system>& ctx);
 };

@@ -73,22 +73,6 @@ public:
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
-        if (lod.current == representation::points) {
-            d.prefixed = true;
-            add_prefixes(parts, prefix, d, render_pass::opaque);
-            // A cascade samples the plant at its texel size, but never finer than the viewer
-            // sees the plant (d'·r): its shadow lands about as far away as the plant stands.
-            const double seen_m = m_sample_distance * glm::length(glm::dvec3(t.position - m_camera.position));
-            for (int c = 0; c < m_cascade_count; ++c) {
-                const double texel = std::max(double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
-                add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_splat_factor, m_costs), d,
-                             shadow_pass(c));
-            }
-        }
-        d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
-        for (int c = 0; c < m_cascade_count; ++c)
-            d.mesh[std::size_t(shadow_pass(c))] =
-                mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
         const glm::vec3 base{t.position - m_camera.position};
         const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);
@@ -97,6 +81,25 @@ public:
             for (int c = 0; c < m_cascade_count; ++c)
                 if (sphere_overlaps_cascade(m_cascades[std::size_t(c)], center, b.radius))
                     d.pass_mask |= 1u << unsigned(shadow_pass(c));
+        if (lod.current != representation::points) {
+            d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
+            for (int c = 0; c < m_cascade_count; ++c)
+                d.mesh[std::size_t(shadow_pass(c))] =
+                    mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
+            return d;
+        }
+        d.prefixed = true;
+        add_prefixes(parts, prefix, d, render_pass::opaque);
+        // A cascade samples the plant at its texel size, but never finer than the viewer sees
+        // the plant (d'·r): its shadow lands about as far away as the plant stands. Only the
+        // cascades the plant casts into.
+        const double seen_m = m_sample_distance * double(d.distance);
+        for (int c = 0; c < m_cascade_count; ++c) {
+            if (!(d.pass_mask & (1u << unsigned(shadow_pass(c))))) continue;
+            const double texel = std::max(double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
+            add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_splat_factor, m_costs), d,
+                         shadow_pass(c));
+        }
         return d;
     }
 
@@ -186,6 +189,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     const auto lods = ctx.read<lod_state>().data();
     auto classify_cell = [&](const octree_cell& cell, const cell_prefix& prefix) {
         const std::size_t k = cell.plant;
+        // A plant drawn any other way than as points is drawn whole, by the plant's own items.
+        if (lods[k].current != representation::points) return plant_draws{};
         return builder.classify(transforms[k], bounds_of[k], instances[k], lods[k], prefix.prefix,
                                 parts_of(library.cells[cell.cell]));
     };

@@ -10,25 +10,31 @@ void scale_vertices(std::vector<vertex>& vertices, float scale) {
     for (auto& v : vertices) v.position *= scale;
 }
 
-// A mesh that lists `vertices` in order as points (one index each) or lines (two each).
+// Point and line samples are shaded with the leaf or the bark texture (renderer::draw_samples).
+material_kind sample_material(material_kind m) {
+    return m == material_kind::leaf || m == material_kind::billboard ? material_kind::leaf : material_kind::bark;
+}
+
+}  // namespace
+
 mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive, material_kind material) {
     mesh_data mesh;
     mesh.primitive = primitive;
     mesh.indices.resize(vertices.size());
     for (std::uint32_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = i;
     mesh.vertices = std::move(vertices);
-    mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material});
+    mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), sample_material(material)});
     return mesh;
 }
 
-std::uint16_t add_mesh(scene_assets& assets, mesh_data mesh, std::uint32_t primitives) {
+std::uint16_t add_sample_mesh(scene_assets& assets, mesh_data mesh, std::uint32_t primitives) {
+    if (assets.meshes.size() >= 0xFFFFu)
+        throw std::runtime_error("scene: more than 65,535 meshes (point/line parts and tile sets included)");
     const auto id = std::uint16_t(assets.meshes.size());
     assets.library.meshes.push_back({primitives, representation::points, mesh.primitive});
     assets.meshes.push_back(std::move(mesh));
     return id;
 }
-
-}  // namespace
 
 mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, std::uint32_t index_count,
                             material_kind material) {
@@ -65,7 +71,7 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
 
         mesh_data triangles = extract_triangles(model.triangles, part.first_index, 3 * part.triangle_count, part.material);
         scale_vertices(triangles.vertices, scale);
-        e.mesh_triangles = add_mesh(assets, std::move(triangles), part.triangle_count);
+        e.mesh_triangles = add_sample_mesh(assets, std::move(triangles), part.triangle_count);
 
         std::vector<vertex> vertices;
         if (part.primitive == lod_primitive::points) {
@@ -84,7 +90,7 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
         scale_vertices(vertices, scale);
         const primitive_kind kind =
             part.primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
-        e.mesh_primitives = add_mesh(assets, primitive_mesh(std::move(vertices), kind, part.material), e.primitive_count);
+        e.mesh_primitives = add_sample_mesh(assets, primitive_mesh(std::move(vertices), kind, part.material), e.primitive_count);
         assets.library.lod_parts.push_back(e);
     }
     return first;

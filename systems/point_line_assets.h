@@ -18,4 +18,11 @@ void add_point_line_parts(scene_assets& assets, species_entry& entry, const poin
 mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, std::uint32_t index_count,
                             material_kind material);
 
+// A mesh that lists `vertices` in order as points (one index each) or lines (two each).
+mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive, material_kind material);
+
+// Adds a point or line mesh drawn by prefix (drawn_as points, `primitives` of them) to the scene
+// and returns its id; throws when the scene would pass the 65,535 meshes a sort key can name.
+std::uint16_t add_sample_mesh(scene_assets& assets, mesh_data mesh, std::uint32_t primitives);
+
 }  // namespace sylva

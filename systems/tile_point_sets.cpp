@@ -10,6 +10,7 @@
 #include "components/tile.h"
 #include "components/transform.h"
 #include "models/random.h"
+#include "systems/point_line_assets.h"
 
 namespace sylva {
 namespace {
@@ -21,7 +22,6 @@ using set_key = std::tuple<std::uint32_t, material_kind, lod_primitive>;  // spe
 struct sample_set {
     std::vector<vertex> vertices;  // one per point, two per line
     double area = 0.0;
-    double line_length = 0.0;  // of the lines in `vertices`
     double full_length = 0.0;  // of every line the set stands for
     float line_error = 0.0f;
     std::uint32_t samples = 0;
@@ -37,12 +37,6 @@ void shuffle_samples(std::vector<vertex>& v, std::uint32_t per, rng& random) {
         const std::uint32_t j = random.below(i);
         for (std::uint32_t k = 0; k < per; ++k) std::swap(v[(i - 1) * per + k], v[j * per + k]);
     }
-}
-
-double line_length(const std::vector<vertex>& v) {
-    double l = 0.0;
-    for (std::size_t i = 0; i + 1 < v.size(); i += 2) l += double(glm::length(v[i + 1].position - v[i].position));
-    return l;
 }
 
 // Takes `share` (rounded) of `from`'s samples (a prefix: a random subset), moved by `offset`.
@@ -167,7 +161,6 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
             rng random(hash_combine(seed, std::uint64_t(i), std::uint64_t(stream++)), 0x711eULL);
             shuffle_samples(set.vertices, per, random);
             set.samples = std::uint32_t(set.vertices.size() / per);
-            set.line_length = per == 2 ? line_length(set.vertices) : 0.0;
         }
     }
 
@@ -189,15 +182,9 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
             part.line_error_m = set.line_error;
             part.count = set.samples;
             part.stands_for = std::uint32_t(std::min(set.stands_for, 4e9));
-            mesh_data mesh;
-            mesh.primitive = primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
-            mesh.indices.resize(set.vertices.size());
-            for (std::uint32_t v = 0; v < mesh.indices.size(); ++v) mesh.indices[v] = v;
-            mesh.vertices = std::move(set.vertices);
-            mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material});
-            part.mesh = std::uint16_t(assets.meshes.size());
-            assets.library.meshes.push_back({set.samples, representation::points, mesh.primitive});
-            assets.meshes.push_back(std::move(mesh));
+            const primitive_kind kind =
+                primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
+            part.mesh = add_sample_mesh(assets, primitive_mesh(std::move(set.vertices), kind, material), set.samples);
             out.parts.push_back(part);
         }
         sets[i].clear();

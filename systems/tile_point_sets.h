@@ -33,7 +33,7 @@ struct tile_point_part {
     float texture_layer = 0.0f;
     float area_m2 = 0.0f;  // A of Eq. 1 / Eq. 2: the plants' parts, scaled (a far tile needs coverage,
                            // not importance: no part of it is polygonal)
-    float line_length_m = 0.0f;  // l: the sampled lines' total length scaled up to the whole tile
+    float line_length_m = 0.0f;  // l: the total length of all the tile's plants' lines
     float line_error_m = 0.0f;   // ε_l: the largest of the plants'
     std::uint32_t count = 0;     // samples in the mesh
     std::uint32_t stands_for = 0;  // samples of all the tile's plants it is drawn from (n_l of Eq. 2)

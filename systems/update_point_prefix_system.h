@@ -2,7 +2,7 @@
 // Deussen 2002 §5: for every plant drawn with the point/line representation, how much of each
 // part to draw this frame: Eq. 1 and the §5.3 blend for point parts, Eq. 2 for line parts,
 // each with r the distance from the eye to the part's centre (so the parts of one plant, and
-// later the octree cells of a big one, §6.1, choose independently). §4.3 importance keeps
+// the octree cells of a big one, §6.1, choose independently). §4.3 importance keeps
 // important parts polygonal longer (point_line_lod.h: blend_points, select_lines).
 // The device's primitive costs (a resource, primitive_costs: measured where Sylva runs, the
 // paper's 1:3 point:triangle otherwise) set where parts turn polygonal. Writes the prefix
@@ -39,7 +39,7 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
 point_prefix compute_shadow_prefix(const species_library& library, part_range parts, float scale,
                                    double texel_world_m, double splat_factor, const primitive_costs& costs = {});
 
-// A part's centre in camera-relative world space (the yaw and scale of the instance applied).
+// A part's centre in world space (the instance's position, yaw and scale applied).
 glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& t);
 
 struct update_point_prefix_system {

@@ -57,7 +57,7 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     cam.aspect = float(r.settings().width) / float(r.settings().height);
     cam.viewport_height_px = float(r.settings().height);
     derive_camera_matrices(cam);
-    const float pixel_m = 2.0f * std::tan(0.5f * cam.fov_y) * k_distance_m / cam.viewport_height_px;
+    const auto pixel_m = float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_distance_m;
     const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_distance_m;
     const float half_width = half_height * cam.aspect;
 
