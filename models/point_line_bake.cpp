@@ -120,7 +120,8 @@ glm::vec3 mean_colour(const bake_context& ctx, std::span<const std::uint32_t> sl
     return area > 0.0 ? glm::vec3(sum / area) : glm::vec3{0.0f};
 }
 
-float plant_size(const bake_context& ctx) {
+// The box around every triangle's corners.
+std::pair<glm::vec3, glm::vec3> triangle_bounds(const bake_context& ctx) {
     glm::vec3 lo{std::numeric_limits<float>::max()};
     glm::vec3 hi{std::numeric_limits<float>::lowest()};
     for (const source_triangle& s : ctx.triangles)
@@ -128,6 +129,11 @@ float plant_size(const bake_context& ctx) {
             lo = glm::min(lo, v.position);
             hi = glm::max(hi, v.position);
         }
+    return {lo, hi};
+}
+
+float plant_size(const bake_context& ctx) {
+    const auto [lo, hi] = triangle_bounds(ctx);
     const glm::vec3 extent = hi - lo;
     return std::max({extent.x, extent.y, extent.z, 0.0f});
 }
@@ -207,13 +213,7 @@ void classify_elements(bake_context& ctx) {
 // cell's bounds are its triangles' (they may overlap a neighbour's).
 std::vector<lod_cell> assign_cells(bake_context& ctx) {
     const auto per_axis = std::uint32_t(1) << ctx.settings.octree_depth;
-    glm::vec3 lo{std::numeric_limits<float>::max()};
-    glm::vec3 hi{std::numeric_limits<float>::lowest()};
-    for (const source_triangle& s : ctx.triangles)
-        for (const vertex& v : corners_of(ctx.mesh, s.index).v) {
-            lo = glm::min(lo, v.position);
-            hi = glm::max(hi, v.position);
-        }
+    const auto [lo, hi] = triangle_bounds(ctx);
     const glm::vec3 extent = glm::max(hi - lo, glm::vec3{1e-20f});
     std::map<std::uint32_t, std::uint32_t> compact;  // grid cell -> cell index, in grid order
     std::vector<std::uint32_t> grid_cell(ctx.triangles.size());
@@ -299,12 +299,6 @@ std::vector<std::vector<part_plan>> plan_parts(const bake_context& ctx, std::siz
     return cells;
 }
 
-template <class T>
-void shuffle(std::vector<T>& values, rng& random) {
-    for (std::size_t i = values.size(); i > 1; --i)
-        std::swap(values[i - 1], values[random.below(std::uint32_t(i))]);
-}
-
 // Points in the reverse of the triangle order, grouped by triangle (point_line_model.h).
 void sample_points(const bake_context& ctx, std::span<const std::uint32_t> order,
                    std::uint32_t part_index, lod_part& part, point_line_model& out) {
@@ -360,7 +354,7 @@ void extract_lines(const bake_context& ctx, std::span<const std::uint32_t> slots
         begin = end;
     }
     rng random(hash_combine(ctx.settings.seed, k_line_order_stream, part_index));
-    shuffle(lines, random);
+    shuffle_groups(lines, 1, random);
     part.first_line = std::uint32_t(out.lines.size() / 2);
     part.line_count = std::uint32_t(lines.size());
     for (const std::array<vertex, 2>& line : lines)
@@ -384,7 +378,7 @@ glm::vec3 bake_part(const bake_context& ctx, part_plan plan, point_line_model& o
     part.kind = majority_kind(ctx, plan.slots);
     // Deussen 2002 §4.1: "the triangles and points are randomly reordered".
     rng random(hash_combine(ctx.settings.seed, k_triangle_order_stream, part_index));
-    shuffle(plan.slots, random);
+    shuffle_groups(plan.slots, 1, random);
 
     mesh_data& mesh = out.triangles;
     part.first_index = std::uint32_t(mesh.indices.size());

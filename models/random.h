@@ -4,6 +4,8 @@
 // is implementation-defined (libstdc++ and libc++ differ), which would break seeded content.
 #include <concepts>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace sylva {
 
@@ -77,5 +79,16 @@ private:
     std::uint64_t m_state = 0;
     std::uint64_t m_increment;
 };
+
+// Fisher–Yates shuffle of `values` in groups of `stride` consecutive elements (a line's two
+// vertices stay together), from the back, with rng::below: the same order on every platform.
+template <class T>
+void shuffle_groups(std::vector<T>& values, std::size_t stride, rng& random) {
+    const std::size_t groups = stride ? values.size() / stride : 0;
+    for (std::size_t i = groups; i > 1; --i) {
+        const std::size_t j = random.below(std::uint32_t(i));
+        for (std::size_t k = 0; k < stride; ++k) std::swap(values[(i - 1) * stride + k], values[j * stride + k]);
+    }
+}
 
 }  // namespace sylva

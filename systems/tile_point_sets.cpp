@@ -30,15 +30,6 @@ struct sample_set {
 
 std::uint32_t vertices_per(lod_primitive p) { return p == lod_primitive::lines ? 2u : 1u; }
 
-// Shuffles whole samples (a line's two vertices stay together).
-void shuffle_samples(std::vector<vertex>& v, std::uint32_t per, rng& random) {
-    const auto n = std::uint32_t(v.size() / per);
-    for (std::uint32_t i = n; i > 1; --i) {
-        const std::uint32_t j = random.below(i);
-        for (std::uint32_t k = 0; k < per; ++k) std::swap(v[(i - 1) * per + k], v[j * per + k]);
-    }
-}
-
 // Takes `share` (rounded) of `from`'s samples (a prefix: a random subset), moved by `offset`.
 void take(sample_set& into, const std::vector<vertex>& from, std::uint32_t per, double share, glm::vec3 offset,
           float yaw, float scale) {
@@ -159,7 +150,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
         for (auto& [key, set] : own) {
             const std::uint32_t per = vertices_per(std::get<2>(key));
             rng random(hash_combine(seed, std::uint64_t(i), std::uint64_t(stream++)), 0x711eULL);
-            shuffle_samples(set.vertices, per, random);
+            shuffle_groups(set.vertices, per, random);
             set.samples = std::uint32_t(set.vertices.size() / per);
         }
     }
