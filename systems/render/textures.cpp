@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace sylva::render {
 
@@ -22,6 +24,52 @@ image_rgba8 downsample(const image_rgba8& image) {
                 out.at(x, y)[c] = std::uint8_t((sum + 2) / 4);
             }
     return out;
+}
+
+image_rgba8 downsample_cut_out(const image_rgba8& image) {
+    image_rgba8 out;
+    out.width = std::max(1u, image.width / 2);
+    out.height = std::max(1u, image.height / 2);
+    out.texels.resize(std::size_t(out.width) * out.height * 4);
+    for (std::uint32_t y = 0; y < out.height; ++y)
+        for (std::uint32_t x = 0; x < out.width; ++x) {
+            unsigned weighted[3] = {0, 0, 0}, plain[3] = {0, 0, 0}, alpha = 0;
+            for (std::uint32_t dy = 0; dy < 2; ++dy)
+                for (std::uint32_t dx = 0; dx < 2; ++dx) {
+                    const std::uint8_t* t = image.at(std::min(2 * x + dx, image.width - 1),
+                                                     std::min(2 * y + dy, image.height - 1));
+                    for (int c = 0; c < 3; ++c) {
+                        weighted[c] += unsigned(t[c]) * t[3];
+                        plain[c] += t[c];
+                    }
+                    alpha += t[3];
+                }
+            std::uint8_t* o = out.at(x, y);
+            for (int c = 0; c < 3; ++c)
+                o[c] = std::uint8_t(alpha > 0 ? (weighted[c] + alpha / 2) / alpha : (plain[c] + 2) / 4);
+            o[3] = std::uint8_t((alpha + 2) / 4);
+        }
+    return out;
+}
+
+void bleed_colour(image_rgba8& image) {
+    // Push: alpha-weighted levels down to 1x1. Pull: from the coarsest level up, every fully
+    // transparent texel takes the colour of the texel covering it one level coarser (already
+    // filled), so level 0 ends with the nearest opaque colours spread into every hole.
+    std::vector<image_rgba8> levels{image};
+    while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(downsample_cut_out(levels.back()));
+    for (std::size_t l = levels.size() - 1; l-- > 0;) {
+        image_rgba8& fine = levels[l];
+        const image_rgba8& coarse = levels[l + 1];
+        for (std::uint32_t y = 0; y < fine.height; ++y)
+            for (std::uint32_t x = 0; x < fine.width; ++x) {
+                std::uint8_t* t = fine.at(x, y);
+                if (t[3] != 0) continue;
+                const std::uint8_t* parent = coarse.at(std::min(x / 2, coarse.width - 1), std::min(y / 2, coarse.height - 1));
+                std::copy(parent, parent + 3, t);
+            }
+    }
+    image = std::move(levels[0]);
 }
 
 float alpha_coverage(const image_rgba8& image, float scale) {
@@ -54,14 +102,21 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
     const int levels = std::bit_width(std::max(w, h));
     glTextureStorage3D(texture.id(), levels, GL_RGBA8, GLsizei(w), GLsizei(h), GLsizei(layers.size()));
     for (std::size_t i = 0; i < layers.size(); ++i) {
-        glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(i), GLsizei(w), GLsizei(h), 1, GL_RGBA,
-                            GL_UNSIGNED_BYTE, layers[i].texels.data());
-        if (!alpha_tested) continue;
-        // Mips built here, each from the previous one, with the alpha-test coverage kept.
+        if (!alpha_tested) {
+            glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(i), GLsizei(w), GLsizei(h), 1, GL_RGBA,
+                                GL_UNSIGNED_BYTE, layers[i].texels.data());
+            continue;
+        }
+        // Mips built here, each from the previous one: colour averaged over the opaque texels
+        // only, alpha-test coverage kept. Level 0 itself goes up with its holes' colour bled
+        // in, so bilinear taps at a leaf's outline do not mix in the cut-out's colour.
         const float coverage = alpha_coverage(layers[i]);
         image_rgba8 level = layers[i];
+        bleed_colour(level);
+        glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(i), GLsizei(w), GLsizei(h), 1, GL_RGBA,
+                            GL_UNSIGNED_BYTE, level.texels.data());
         for (int l = 1; l < levels; ++l) {
-            level = downsample(level);
+            level = downsample_cut_out(level);
             image_rgba8 kept = level;
             preserve_alpha_coverage(kept, coverage);
             glTextureSubImage3D(texture.id(), l, 0, 0, GLint(i), GLsizei(kept.width), GLsizei(kept.height),

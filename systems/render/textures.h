@@ -14,6 +14,14 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
 
 // The next mip level: a 2x2 box filter (sizes halve, never below 1).
 image_rgba8 downsample(const image_rgba8& image);
+// The next mip level of a cut-out (alpha-tested) image: colour averaged over the texels it
+// covers weighted by their alpha, alpha averaged plainly. A plain box filter mixes the colour
+// of transparent texels (black, in the generated textures) into every level, so distant
+// foliage sampled from small mips turns darker than the same leaves up close.
+image_rgba8 downsample_cut_out(const image_rgba8& image);
+// Fills the colour of every fully transparent texel with that of the nearest opaque ones
+// (push-pull over downsample_cut_out levels); alpha and opaque texels are left as they were.
+void bleed_colour(image_rgba8& image);
 // Fraction of texels whose alpha passes the test alpha >= 0.5 after scaling alpha by `scale`.
 float alpha_coverage(const image_rgba8& image, float scale = 1.0f);
 // Castaño 2010, "Computing alpha mipmaps": averaging alpha in smaller mips pushes cut-out

@@ -47,5 +47,37 @@ TEST(alpha_mipmaps, downsample_is_a_2x2_box_filter) {
     EXPECT_EQ(one.texels[0], (0 + 100 + 200 + 255 + 2) / 4);  // 139
 }
 
+TEST(alpha_mipmaps, cut_out_downsample_averages_colour_over_opaque_texels_only) {
+    // Two green texels (alpha 255 and 128) beside two transparent black ones. The plain filter
+    // gives (200 + 200 + 0 + 0 + 2) / 4 = 100 green; weighted by alpha the black texels count
+    // for nothing: (200·255 + 200·128 + 383/2) / 383 = 200.
+    image_rgba8 image{2, 2, {0, 200, 0, 255, 0, 200, 0, 128, 0, 0, 0, 0, 0, 0, 0, 0}};
+    EXPECT_EQ(render::downsample(image).texels[1], 100);
+    const image_rgba8 one = render::downsample_cut_out(image);
+    EXPECT_EQ(one.texels[1], 200);
+    EXPECT_EQ(one.texels[3], (255 + 128 + 2) / 4);  // alpha: the plain mean, 96
+    // Fully transparent blocks keep the plain mean of their colour.
+    image_rgba8 empty{2, 2, {40, 0, 0, 0, 80, 0, 0, 0, 40, 0, 0, 0, 80, 0, 0, 0}};
+    EXPECT_EQ(render::downsample_cut_out(empty).texels[0], 60);
+}
+
+TEST(alpha_mipmaps, bleeding_fills_holes_with_the_nearest_opaque_colour) {
+    // 4x4, black and transparent but for one red texel at (0, 0) and one blue at (3, 3).
+    image_rgba8 image{4, 4, std::vector<std::uint8_t>(64, 0)};
+    image.at(0, 0)[0] = 240, image.at(0, 0)[3] = 255;
+    image.at(3, 3)[2] = 160, image.at(3, 3)[3] = 255;
+    render::bleed_colour(image);
+    // The 2x2 block holding the red texel turns red, the one holding the blue one blue; the
+    // other two blocks take the 1x1 level's mean of the two, (120, 0, 80).
+    EXPECT_EQ(image.at(1, 1)[0], 240);
+    EXPECT_EQ(image.at(2, 2)[2], 160);
+    EXPECT_EQ(image.at(3, 0)[0], 120);
+    EXPECT_EQ(image.at(3, 0)[2], 80);
+    // Alpha and the opaque texels are untouched.
+    EXPECT_EQ(image.at(1, 1)[3], 0);
+    EXPECT_EQ(image.at(0, 0)[0], 240);
+    EXPECT_EQ(image.at(3, 3)[2], 160);
+}
+
 }  // namespace
 }  // namespace sylva
