@@ -247,6 +247,7 @@ std::vector<lod_state> cull_plants(std::span<const glm::dvec2> xz, const eco_til
     shadow_settings shadows;
     shadows.max_distance_m = 30.0f;
     world.set_resource(shadows);
+    world.set_resource(lod_policy{});
     ecs::executor executor(threads);
     ecs::schedule schedule;
     schedule.add<cull_system>();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <stdexcept>
@@ -55,6 +56,10 @@ struct cull_view {
     const std::vector<species_entry>* library;
     float shadow_distance;
     float max_species_distance;  // the largest max_distance_m of any species
+    // Points and lines draw every plant up to the far plane: Eq. 1 makes a plant's cost fall
+    // with the square of its distance and far eco tiles draw their aggregated sets (Deussen
+    // 2002 §6.2), so the species' draw distances (a mesh-level budget) do not apply.
+    bool unlimited_distance;
 };
 
 void cull_plants(const cull_view& view, const plant_query& plants, std::size_t begin,
@@ -69,7 +74,8 @@ void cull_plants(const cull_view& view, const plant_query& plants, std::size_t b
             const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
             const float distance = glm::length(center) - b.radius;
             const auto& species = (*view.library)[static_cast<std::size_t>(p.species)];
-            const float max_distance = species.max_distance_m * t.scale * cam.lod_scale;
+            const float max_distance = view.unlimited_distance ? std::numeric_limits<float>::infinity()
+                                                               : species.max_distance_m * t.scale * cam.lod_scale;
             const bool near_enough = distance < max_distance;
             lod.visible = near_enough && sphere_in_frustum(view.frustum, center, b.radius) ? 1 : 0;
             lod.in_shadow_range = near_enough && distance < view.shadow_distance ? 1 : 0;
@@ -98,7 +104,8 @@ tile_visibility classify_tile(const cull_view& view, const tile& t) {
         glm::dvec3(t.min.x + t.size + r, double(t.max_height) + r, t.min.y + t.size + r) -
         cam.position};
     const float distance = glm::length(glm::max(glm::max(lo, -hi), glm::vec3(0.0f)));
-    const bool near_enough = distance < view.max_species_distance * t.max_scale * cam.lod_scale;
+    const bool near_enough =
+        view.unlimited_distance || distance < view.max_species_distance * t.max_scale * cam.lod_scale;
     tile_visibility v;
     v.visible = near_enough && box_in_frustum(view.frustum, lo, hi) ? 1 : 0;
     v.in_shadow_range = near_enough && distance < view.shadow_distance ? 1 : 0;
@@ -185,7 +192,8 @@ void cull_system::run(ecs::system_context<cull_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     cull_view view{&cam, extract_frustum_planes(cam.projection * cam.view),
                    &ctx.resource<species_library>().species,
-                   ctx.resource<shadow_settings>().max_distance_m, 0.0f};
+                   ctx.resource<shadow_settings>().max_distance_m, 0.0f,
+                   ctx.resource<lod_policy>().mode == lod_policy::kind::points_lines};
     for (const auto& species : *view.library)
         view.max_species_distance = std::max(view.max_species_distance, species.max_distance_m);
     const plant_query plants =

@@ -1,7 +1,8 @@
 #pragma once
 // View-frustum and distance culling of plant instances, in parallel chunks: a plant is visible
 // when its bounding sphere touches the camera frustum and it is nearer than its species' draw
-// distance; it may cast shadows when it is within the shadow distance. Writes lod_state.
+// distance (under the point/line policy: at any distance); it may cast shadows when it is
+// within the shadow distance. Writes lod_state.
 //
 // With eco tiles (Deussen 2002 §6.2; systems/eco_tiles.h) the tiles are walked from the roots
 // first: a tile whose box (square and terrain height range grown by the plants' reach) is
@@ -23,6 +24,7 @@
 #include "components/transform.h"
 #include "ecs/system.h"
 #include "scenarios/scenario.h"
+#include "systems/lod_policy.h"
 #include "systems/scene_assets.h"
 
 namespace sylva {
@@ -44,7 +46,7 @@ struct cull_system {
     static constexpr std::string_view k_name = "cull";
     static constexpr ecs::phase k_phase = ecs::phase::cull;
     using reads = ecs::reads<camera, world_transform, bounds, plant_instance, tile, species_library,
-                             shadow_settings>;
+                             shadow_settings, lod_policy>;
     using writes = ecs::writes<lod_state, tile_visibility>;
     static void run(ecs::system_context<cull_system>& ctx);
 };

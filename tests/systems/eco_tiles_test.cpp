@@ -171,6 +171,7 @@ void fill(test_scene& s, bool with_tiles, bool in_tile_order = true,
     shadow_settings shadows;
     shadows.max_distance_m = 120.0f;
     s.world.set_resource(shadows);
+    s.world.set_resource(lod_policy{});
 }
 
 void run_cull(ecs::world& world, int threads) {
@@ -249,6 +250,40 @@ TEST(eco_tile_culling, equals_flat_culling_for_every_plant_and_culls_whole_tiles
     EXPECT_GT(visible_leaves, 5u);
     std::printf("[          ] %zu of %zu plants visible; %zu leaf tiles visible, %zu culled\n",
                 visible, got.size(), visible_leaves, culled_leaves);
+}
+
+TEST(eco_tile_culling, points_and_lines_draw_beyond_the_species_draw_distance) {
+    // The same scene under the point/line policy: every plant the mesh levels drew is drawn,
+    // plus the frustum's plants beyond 300 m / 150 m; still the same with and without tiles.
+    test_scene meshes;
+    fill(meshes, true);
+    run_cull(meshes.world, 2);
+    test_scene flat, tiled;
+    fill(flat, false);
+    fill(tiled, true);
+    lod_policy points;
+    points.mode = lod_policy::kind::points_lines;
+    flat.world.set_resource(points);
+    tiled.world.set_resource(points);
+    run_cull(flat.world, 2);
+    run_cull(tiled.world, 2);
+    const auto by_distance = lods(meshes.world);
+    const auto expected = lods(flat.world);
+    const auto got = lods(tiled.world);
+    std::size_t beyond = 0;
+    const camera& cam = flat.world.table<camera>().data()[0];
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        ASSERT_TRUE(got[i] == expected[i]) << "plant " << i;
+        ASSERT_GE(got[i].visible, by_distance[i].visible) << "plant " << i;
+        ASSERT_GE(got[i].in_shadow_range, by_distance[i].in_shadow_range) << "plant " << i;
+        if (got[i].visible == by_distance[i].visible) continue;
+        // Drawn now, culled before: only by distance, never outside the frustum.
+        const auto& t = flat.world.get<world_transform>(flat.plant_entities[i]);
+        const double r = glm::length(t.position - cam.position);
+        EXPECT_GT(r, 150.0 * 0.7) << "plant " << i;
+        ++beyond;
+    }
+    EXPECT_GT(beyond, 100u);
 }
 
 TEST(eco_tile_culling, tiles_outside_the_view_hide_their_plants) {
