@@ -57,6 +57,11 @@ void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
     }
 }
 
+bool same_sky(const sky_model& a, const sky_model& b) {
+    return a.sun_direction == b.sun_direction && a.turbidity == b.turbidity && a.sky_intensity == b.sky_intensity &&
+           a.ground_albedo == b.ground_albedo && a.sun_irradiance == b.sun_irradiance;
+}
+
 sky_model sky_of(const frame_view& view) {
     sky_model sky;
     sky.sun_direction = view.sun_light->direction;
@@ -127,15 +132,19 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
 }
 
 void renderer::update_sky_texture(const frame_view& view) {
-    if (m_sky_texture && m_sky_revision == view.sky->sky_revision) return;
+    // Keyed on the sky's inputs, not on environment::sky_revision: revisions count changes of
+    // one environment, and two environments drawn by one renderer (the primitive-cost
+    // calibration's and a scene's) can share a number while their skies differ.
+    const sky_model sky = sky_of(view);
+    if (m_sky_texture && m_sky_drawn && same_sky(*m_sky_drawn, sky)) return;
     std::vector<float>& grid = m_sky_grid;
-    fill_sky_radiance_grid(sky_of(view), grid);
+    fill_sky_radiance_grid(sky, grid);
     if (!m_sky_texture)
         m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
     else  // the sun moved: same texture, new texels (no GL allocation in the frame loop)
         glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB, GL_FLOAT,
                             grid.data());
-    m_sky_revision = view.sky->sky_revision;
+    m_sky_drawn = sky;
     m_frame_upload_bytes += grid.size() * sizeof(float);
 }
 

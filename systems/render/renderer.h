@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "components/camera.h"
@@ -15,6 +16,7 @@
 #include "systems/draw_list.h"
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
+#include "systems/lighting/sky_model.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
@@ -128,7 +130,7 @@ private:
     gl_texture m_billboard_normal;  // and model-space normals
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
-    std::uint64_t m_sky_revision = 0;
+    std::optional<sky_model> m_sky_drawn;  // what m_sky_texture holds
     struct terrain_tile {
         std::uint16_t mesh = 0;
         glm::vec3 center{0.0f};  // terrain-local

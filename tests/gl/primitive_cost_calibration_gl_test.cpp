@@ -7,7 +7,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "app/scenario_player.h"
 #include "gl_test_support.h"
+#include "models/bake_cache.h"
 #include "scenarios/scenario_loader.h"
 #include "systems/spawn_scenario.h"
 
@@ -48,6 +50,33 @@ TEST(primitive_cost_calibration, measures_positive_costs_for_triangles_points_an
     std::printf("calibration: %.1f ms per million triangles, %.1f points, %.1f lines -> costs 1 : %.3f : %.2f\n",
                 result.triangle_ms_per_million, result.point_ms_per_million, result.line_ms_per_million,
                 result.costs.point, result.costs.line);
+}
+
+TEST(primitive_cost_calibration, leaves_no_trace_in_the_frames_after_it) {
+    // The calibration draws with its own camera and sky through the scene's renderer; a frame
+    // after it must equal the same frame without it (it once left its own sky behind, because
+    // both environments carried revision 1).
+    SYLVA_REQUIRE_GL();
+    const scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "sylva_calibration_trace";
+    std::filesystem::remove_all(dir);
+    bake_cache cache(dir);
+    player_options options;
+    options.policy.mode = lod_policy::kind::points_lines;
+    options.policy.points = {2.0f, 1.3f};
+    options.measure_costs = true;
+    scenario_player calibrated(s, 2, testing::shared_gl_context(), &cache, options);
+    calibrated.step();
+    const image_rgba8 after = calibrated.capture();
+
+    options.measure_costs = false;
+    options.costs = calibrated.costs();
+    scenario_player plain(s, 2, testing::shared_gl_context(), nullptr, options);
+    plain.step();
+    const image_rgba8 without = plain.capture();
+    ASSERT_EQ(after.texels.size(), without.texels.size());
+    EXPECT_TRUE(after.texels == without.texels);
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace
