@@ -43,8 +43,9 @@
 //     importance         number     1            0.01 .. 100; Deussen 2002 §4.3: multiplies the
 //                                                importance of every part (above 1: kept
 //                                                detailed longer under points_lines)
-//     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it;
-//                                                must be >= far_distance_m
+//     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it as
+//                                                mesh levels (points_lines draws to the far
+//                                                plane); must be >= far_distance_m
 //   }
 //   populations    REQUIRED array of >= 1 {
 //     species        string REQUIRED  the name of a species
