@@ -16,7 +16,10 @@ constexpr std::size_t k_prefix_parts = 4;
 struct point_prefix {
     std::array<std::uint32_t, k_prefix_parts> triangles{};
     std::array<std::uint32_t, k_prefix_parts> primitives{};  // points or lines, by the part
+    // 1 when a line part draws `primitives` splats at its lines' ends instead of lines (its
+    // lines are shorter than d' on screen; systems/point_line_lod.h select_lines).
+    std::array<std::uint8_t, k_prefix_parts> splats{};
 };
-static_assert(sizeof(point_prefix) == 32);
+static_assert(sizeof(point_prefix) == 36);
 
 }  // namespace sylva

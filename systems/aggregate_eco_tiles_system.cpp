@@ -5,7 +5,7 @@
 namespace sylva {
 
 bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double distance_m, double sample_distance,
-                   double splat_factor, std::vector<std::uint32_t>& counts) {
+                   double splat_factor, std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& splats) {
     for (std::uint32_t i = sets.first_part[tile]; i < sets.first_part[tile + 1]; ++i) {
         const tile_point_part& part = sets.parts[i];
         if (part.primitive == lod_primitive::points) {
@@ -13,15 +13,19 @@ bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double dista
             const double p = required_points(part.area_m2, distance_m, sample_distance, splat_factor);
             if (!(p <= double(part.count))) return false;
             counts[i] = std::uint32_t(p);
+            splats[i] = 0;
         } else {
             // Eq. 2: q = A'_l / A'_sl with l the length of all the tile's lines; q·n_l of the
             // n_l lines the set stands for, which the set must hold.
             primitive_costs lines_always;  // a tile set has no triangles to fall back on
             lines_always.line = 0.0;
+            // Short lines become splats at their ends, two per line the set holds.
             const part_draw d = select_lines(part.area_m2, part.line_length_m, part.line_error_m, part.stands_for,
-                                             part.stands_for, distance_m, sample_distance, lines_always);
-            if (d.triangles > 0 || d.primitives > part.count) return false;
+                                             part.stands_for, distance_m, sample_distance, lines_always, 1.0,
+                                             splat_factor);
+            if (d.triangles > 0 || d.primitives > (d.splats ? 2 * part.count : part.count)) return false;
             counts[i] = d.primitives;
+            splats[i] = d.splats ? 1 : 0;
         }
     }
     return true;
@@ -31,6 +35,7 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
     tile_point_draws& draws = ctx.resource_mut<tile_point_draws>();
     const tile_point_sets& sets = ctx.resource<tile_point_sets>();
     draws.counts.assign(sets.parts.size(), 0);
+    draws.splats.assign(sets.parts.size(), 0);
     draws.tiles = draws.plants = 0;
     const lod_policy& policy = ctx.resource<lod_policy>();
     if (sets.parts.empty() || policy.mode != lod_policy::kind::points_lines || !policy.tile_sets) return;
@@ -51,7 +56,7 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
         const double radius = double(sets.radius[i]);
         const bool far = r >= k_aggregate_distance_factor * radius && r - radius > shadow_distance;
         if (!visibility.data()[i].visible || !far ||
-            !tile_prefixes(sets, std::uint32_t(i), r, d, policy.points.splat_factor, draws.counts)) {
+            !tile_prefixes(sets, std::uint32_t(i), r, d, policy.points.splat_factor, draws.counts, draws.splats)) {
             for (std::uint32_t p = sets.first_part[i]; p < sets.first_part[i + 1]; ++p) draws.counts[p] = 0;
             if (!visibility.data()[i].visible) i = next;  // culled with its subtree
             else ++i;                                      // try the children

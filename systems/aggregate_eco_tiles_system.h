@@ -23,6 +23,7 @@ inline constexpr double k_aggregate_distance_factor = 3.0;
 // This frame's prefix of every tile set (0: not drawn), a world resource.
 struct tile_point_draws {
     std::vector<std::uint32_t> counts;  // per tile_point_sets::parts
+    std::vector<std::uint8_t> splats;   // per part: 1 when a line set draws `counts` splats
     std::uint32_t tiles = 0;            // tiles drawn as their sets
     std::uint32_t plants = 0;           // plants they stand for
 };
@@ -31,7 +32,7 @@ struct tile_point_draws {
 // too few samples (or a line set would be polygons): then the tile is not drawn as a whole.
 // `sample_distance` is d' on the image plane. Pure, for tests.
 bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double distance_m, double sample_distance,
-                   double splat_factor, std::vector<std::uint32_t>& counts);
+                   double splat_factor, std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& splats);
 
 struct aggregate_eco_tiles_system {
     static constexpr std::string_view k_name = "aggregate_eco_tiles";

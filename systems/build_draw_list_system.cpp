@@ -110,7 +110,8 @@ private:
         for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
             const lod_part_entry& part = m_library.lod_parts[parts.first + i];
             if (prefix.triangles[i]) list[count++] = {part.mesh_triangles, prefix.triangles[i]};
-            if (prefix.primitives[i]) list[count++] = {part.mesh_primitives, prefix.primitives[i]};
+            if (prefix.primitives[i])
+                list[count++] = {prefix.splats[i] ? part.mesh_splats : part.mesh_primitives, prefix.primitives[i]};
         }
     }
 
@@ -222,6 +223,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     // Far eco tiles drawn as their point and line sets (Deussen 2002 §6.2) come last.
     const tile_point_sets& tile_sets = ctx.resource<tile_point_sets>();
     const std::vector<std::uint32_t>& tile_counts = ctx.resource<tile_point_draws>().counts;
+    const std::vector<std::uint8_t>& tile_splats = ctx.resource<tile_point_draws>().splats;
     std::size_t tile_items = 0;
     for (const std::uint32_t count : tile_counts) tile_items += count > 0;
     list.items.resize(offsets[chunks + cell_chunks] + tile_items);
@@ -246,7 +248,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         if (tile_counts[i] == 0) continue;
         const tile_point_part& part = tile_sets.parts[i];
         const auto depth = quantize_depth(float(glm::length(tile_sets.origin[part.tile] - cam.position)));
-        *tile_out++ = {make_sort_key({render_pass::opaque, part.mesh, depth}), k_tile_item_bit | std::uint32_t(i),
+        const std::uint16_t mesh = i < tile_splats.size() && tile_splats[i] ? part.mesh_splats : part.mesh;
+        *tile_out++ = {make_sort_key({render_pass::opaque, mesh, depth}), k_tile_item_bit | std::uint32_t(i),
                        tile_counts[i]};
     }
     radix_sort_draw_items(list.items, list.scratch);

@@ -88,6 +88,9 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
                             model.lines.begin() + 2 * (part.first_line + part.line_count));
         }
         scale_vertices(vertices, scale);
+        if (part.primitive == lod_primitive::lines)  // the same vertices, drawn as splats
+            e.mesh_splats = add_sample_mesh(assets, primitive_mesh(vertices, primitive_kind::points, part.material),
+                                            2 * e.primitive_count);
         const primitive_kind kind =
             part.primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
         e.mesh_primitives = add_sample_mesh(assets, primitive_mesh(std::move(vertices), kind, part.material), e.primitive_count);

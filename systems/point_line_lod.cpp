@@ -53,19 +53,29 @@ part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t>
 }
 
 part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
-                       double distance_m, double sample_distance, const primitive_costs& costs, double importance) {
+                       double distance_m, double sample_distance, const primitive_costs& costs, double importance,
+                       double splat_factor, double dither) {
     if (importance > 1.0) {
         // §4.3: polygons while m·q > 1; as lines, the q·n_l coverage asks for.
-        const part_draw d =
-            select_lines(area_m2 * importance, length_m, error_m, n_lines, k, distance_m, sample_distance, costs);
+        const part_draw d = select_lines(area_m2 * importance, length_m, error_m, n_lines, k, distance_m,
+                                         sample_distance, costs, 1.0, splat_factor, dither);
         if (d.triangles > 0) return d;
-        return select_lines(area_m2, length_m, error_m, n_lines, k, distance_m, sample_distance, costs);
+        return select_lines(area_m2, length_m, error_m, n_lines, k, distance_m, sample_distance, costs, 1.0,
+                            splat_factor, dither);
     }
     part_draw all_triangles{k, 0};
     if (n_lines == 0 || !(length_m > 0.0)) return all_triangles;
     if (!(distance_m > 0.0)) return distance_m == 0.0 ? all_triangles : part_draw{};
     // Deussen 2002 §5.2: ε_l / r >= d' → render the set by triangles.
     if (error_m / distance_m >= sample_distance) return all_triangles;
+    // Short lines (see the header): l' = l / (2r·n_l) < d' → Eq. 1 splats at the lines' ends.
+    if (length_m / (2.0 * distance_m * double(n_lines)) < sample_distance) {
+        const double p = required_points(area_m2, distance_m, sample_distance, splat_factor);
+        if (!(p <= 2.0 * double(n_lines))) return all_triangles;
+        const auto splats = std::uint32_t(std::floor(p + dither));
+        if (double(splats) * costs.point >= double(k) * costs.triangle) return all_triangles;
+        return {0, std::min(splats, 2 * n_lines), true};
+    }
     // Eq. 2: A'_sl = l'·d' = l·d' / (2r); q_l = A'_l / A'_sl.
     const double line_area = length_m * sample_distance / (2.0 * distance_m);
     const double q = projected_area(area_m2, distance_m) / line_area;
@@ -75,6 +85,15 @@ part_draw select_lines(double area_m2, double length_m, double error_m, std::uin
     // Never slower than the triangles they stand for, on this device.
     if (double(lines) * costs.line >= double(k) * costs.triangle) return all_triangles;
     return {0, lines};
+}
+
+double sample_dither(std::uint32_t seed, std::uint32_t part) {
+    // splitmix64's finaliser over (seed, part): well mixed, the same on every platform.
+    std::uint64_t z = (std::uint64_t(seed) << 8 | part) + 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return double(z >> 11) * 0x1.0p-53;
 }
 
 float splat_size_px(const point_line_quality& q) {

@@ -16,6 +16,9 @@ namespace sylva {
 struct point_line_quality {
     float sample_distance_px = 1.0f;  // d': mean distance between neighbouring samples on screen
     float splat_factor = 1.3f;        // c_p (§5.1: "values from 1.2 to 1.5 are usually sufficient")
+    // Round each plant's counts with its own offset (sample_dither) instead of down: a field of
+    // small plants then draws the samples Eq. 1 asks for in total, not fewer.
+    bool dither = true;
 };
 
 // d' in image-plane units (the image plane at distance one) from d' in pixels.
@@ -49,7 +52,10 @@ struct primitive_costs {
 // What a part draws this frame: a prefix of its triangles and a prefix of its points or lines.
 struct part_draw {
     std::uint32_t triangles = 0;
-    std::uint32_t primitives = 0;  // points or lines, by the part's primitive
+    std::uint32_t primitives = 0;  // points or lines, by the part's primitive; splats when `splats`
+    // A line part whose lines are shorter than d' on screen draws its lines' end points as
+    // splats instead (select_lines); `primitives` then counts splats, a prefix of those ends.
+    bool splats = false;
 
     friend bool operator==(const part_draw&, const part_draw&) = default;
 };
@@ -79,9 +85,24 @@ part_draw blend_points(double p, std::uint32_t k, std::span<const std::uint32_t>
 // first q·n_l lines (rounded to nearest, at least one), q > 1 draws every triangle. Lines that
 // would cost more on the device than the part's k triangles are drawn as the triangles.
 // Importance m (§4.3) turns the part polygonal at q > 1/m; as lines it draws q·n_l (see above).
+//
+// Short lines (our extension; the paper's lines are "about the same length" and long on
+// screen). A line drawn d' wide covers l'·d' only while its image l' = l / (2r·n_l) is at least
+// d' long; shorter, it still fills about one d'-sized footprint and costs a whole primitive, so
+// Eq. 2 would draw n_l·q lines that cover a fraction of A'_l (on llvmpipe a line under a pixel
+// long lights a pixel only when it leaves the pixel's diamond). Below l' = d' the part is drawn
+// as Eq. 1 splats at its lines' end points (two per line, so the first p ends are a prefix of
+// the line list): p = c_p·A'_l / d'², rounded down after adding `dither` in [0, 1) (0.5:
+// nearest; a per-plant value keeps the expected coverage of many small plants exact); every
+// triangle when p > 2·n_l or when the splats would cost more than the k triangles.
 part_draw select_lines(double area_m2, double length_m, double error_m, std::uint32_t n_lines, std::uint32_t k,
                        double distance_m, double sample_distance, const primitive_costs& costs = {},
-                       double importance = 1.0);
+                       double importance = 1.0, double splat_factor = 1.3, double dither = 0.5);
+
+// A plant's own rounding offset in [0, 1) for part `part` (a fixed hash of its seed): counts are
+// rounded down after adding it, so the expected count of many small plants is exact while each
+// plant's count still changes only where its distance crosses a threshold (no flicker).
+double sample_dither(std::uint32_t seed, std::uint32_t part);
 
 // Splat side in pixels: each splat covers c_p·d'² (the splat factor enlarges splats so the
 // random samples leave no holes, §5.1 and §5.4, Fig. 5c).

@@ -61,6 +61,7 @@ struct lod_part_entry {
     float line_error_m = 0.0f;   // ε_l
     std::uint16_t mesh_triangles = 0;   // the part's triangles in random order
     std::uint16_t mesh_primitives = 0;  // its points (reverse order) or lines
+    std::uint16_t mesh_splats = 0;      // line parts: the lines' end points as splats (short lines)
 };
 
 // What the per-frame systems need to know about a mesh id (for statistics).

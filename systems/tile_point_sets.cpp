@@ -175,6 +175,9 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
             part.stands_for = std::uint32_t(std::min(set.stands_for, 4e9));
             const primitive_kind kind =
                 primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
+            if (primitive == lod_primitive::lines)
+                part.mesh_splats = add_sample_mesh(
+                    assets, primitive_mesh(set.vertices, primitive_kind::points, material), 2 * set.samples);
             part.mesh = add_sample_mesh(assets, primitive_mesh(std::move(set.vertices), kind, material), set.samples);
             out.parts.push_back(part);
         }

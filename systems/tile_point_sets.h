@@ -29,6 +29,7 @@ inline constexpr std::uint32_t k_tile_item_bit = 0x80000000u;
 struct tile_point_part {
     std::uint32_t tile = 0;  // dense index in the tile table (= eco tile node index)
     std::uint16_t mesh = 0;  // points or lines relative to the tile's origin
+    std::uint16_t mesh_splats = 0;  // line sets: the lines' end points as splats (short lines)
     lod_primitive primitive = lod_primitive::points;
     float texture_layer = 0.0f;
     float area_m2 = 0.0f;  // A of Eq. 1 / Eq. 2: the plants' parts, scaled (a far tile needs coverage,

@@ -21,25 +21,29 @@ part_range parts_of(const lod_cell_entry& cell) { return {cell.first_lod_part, c
 
 point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
                                   const glm::dvec3& eye, double sample_distance, double splat_factor,
-                                  const primitive_costs& costs) {
+                                  const primitive_costs& costs, std::optional<std::uint32_t> dither_seed) {
     point_prefix prefix;
     const double scale = double(t.scale);
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
         const lod_part_entry& part = library.lod_parts[parts.first + i];
         const double r = glm::length(part_world_center(part, t) - eye);
         const double area = double(part.area_m2) * scale * scale;
+        const double dither = dither_seed ? sample_dither(*dither_seed, i) : -1.0;
         part_draw d;
         if (part.primitive == lod_primitive::points) {
-            const double p = required_points(area, r, sample_distance, splat_factor);
+            double p = required_points(area, r, sample_distance, splat_factor);
+            if (dither >= 0.0) p = std::floor(p + dither);
             d = blend_points(p, part.triangle_count,
                              std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs,
                              part.importance);
         } else {
             d = select_lines(area, double(part.line_length_m) * scale, double(part.line_error_m) * scale,
-                             part.primitive_count, part.triangle_count, r, sample_distance, costs, part.importance);
+                             part.primitive_count, part.triangle_count, r, sample_distance, costs, part.importance,
+                             splat_factor, dither >= 0.0 ? dither : 0.5);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;
+        prefix.splats[i] = d.splats ? 1 : 0;
     }
     return prefix;
 }
@@ -59,10 +63,11 @@ point_prefix compute_shadow_prefix(const species_library& library, part_range pa
                              part.importance);
         } else {
             d = select_lines(area, double(part.line_length_m) * s, double(part.line_error_m) * s, part.primitive_count,
-                             part.triangle_count, 1.0, texel_world_m, costs, part.importance);
+                             part.triangle_count, 1.0, texel_world_m, costs, part.importance, splat_factor);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;
+        prefix.splats[i] = d.splats ? 1 : 0;
     }
     return prefix;
 }
@@ -74,6 +79,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const species_library& library = ctx.resource<species_library>();
     const double d = image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px);
     const double c_p = policy.points.splat_factor;
+    const bool dither = policy.points.dither;
     const primitive_costs& costs = ctx.resource<primitive_costs>();
     auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
     ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -84,12 +90,14 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 return;
             }
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            prefix = compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs);
+            prefix = compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs,
+                                          dither ? std::optional(p.seed) : std::nullopt);
         });
     });
     // §6.1: each octree cell of a big plant chooses on its own, r measured to its parts.
     const auto transforms = ctx.read<world_transform>().data();
     const auto lods = ctx.read<lod_state>().data();
+    const auto instances = ctx.read<plant_instance>().data();
     auto cells = ctx.query<const octree_cell, cell_prefix>();
     ctx.parallel_for(cells.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
         cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, cell_prefix& out) {
@@ -98,7 +106,9 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 return;
             }
             out.prefix = compute_point_prefix(library, parts_of(library.cells[cell.cell]), transforms[cell.plant],
-                                              cam.position, d, c_p, costs);
+                                              cam.position, d, c_p, costs,
+                                              dither ? std::optional(instances[cell.plant].seed ^ cell.cell)
+                                                     : std::nullopt);
         });
     });
 }

@@ -8,6 +8,8 @@
 // paper's 1:3 point:triangle otherwise) set where parts turn polygonal. Writes the prefix
 // lengths (point_prefix; cell_prefix for the octree cells of big plants, §6.1) that
 // build_draw_list draws, in parallel chunks.
+#include <optional>
+
 #include "components/camera.h"
 #include "components/lod_state.h"
 #include "components/octree_cell.h"
@@ -29,9 +31,12 @@ part_range parts_of(const species_entry& species);
 part_range parts_of(const lod_cell_entry& cell);
 
 // The prefixes of a plant's (or cell's) parts: `sample_distance` is d' in image-plane units.
+// Point and splat counts are rounded down after adding sample_dither(dither_seed, part)
+// (nullopt: plain rounding down for points, to nearest for splats).
 point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
                                   const glm::dvec3& eye, double sample_distance, double splat_factor,
-                                  const primitive_costs& costs = {});
+                                  const primitive_costs& costs = {},
+                                  std::optional<std::uint32_t> dither_seed = std::nullopt);
 
 // The prefixes of one plant in a shadow cascade whose texel is `texel_world_m` wide: the
 // texel is the sample distance there (the shadow map sees every part at its own size, so

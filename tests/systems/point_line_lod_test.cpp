@@ -125,7 +125,38 @@ TEST(point_line_lod, eq2_draws_q_times_n_lines_while_q_is_at_most_one) {
     EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 25.0, 0.004), (part_draw{0, 4}));  // q = 0.36 → 3.6 → 4
     EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 40.0, 0.004), (part_draw{0, 2}));  // q = 0.225 → 2.25 → 2
     EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 50.0, 0.004), (part_draw{0, 2}));  // q = 0.18 → 1.8 → 2
-    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 5000.0, 0.004), (part_draw{0, 1}));  // at least one
+    // r = 60: a line's image l / (2r·n_l) = 0.0042 is still d' long; q = 0.15 → 1.5 → 2.
+    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 400, 60.0, 0.004), (part_draw{0, 2}));
+}
+
+TEST(point_line_lod, lines_shorter_than_d_prime_on_screen_become_splats_at_their_ends) {
+    // A_l = 1.8, l = 5 in n_l = 10 lines of 0.5 m, d' = 0.004, c_p = 1.3. At r = 100 a line's
+    // image is 5 / (2·100·10) = 0.0025 < d': Eq. 1 on the part, p = 1.3·(½·1.8 / 100²) / 0.004²
+    // = 1.3·9e-5 / 1.6e-5 = 7.3125 splats, of 2·n_l = 20 line ends.
+    EXPECT_EQ(select_lines(1.8, 5.0, 0.01, 10, 40, 100.0, 0.004), (part_draw{0, 7, true}));  // nearest
+    EXPECT_EQ(select_lines(1.8, 5.0, 0.01, 10, 40, 100.0, 0.004, {}, 1.0, 1.3, 0.75), (part_draw{0, 8, true}));
+    EXPECT_EQ(select_lines(1.8, 5.0, 0.01, 10, 40, 100.0, 0.004, {}, 1.0, 1.3, 0.0), (part_draw{0, 7, true}));
+    // Far away the dither decides whether a part's fraction of a splat is drawn: p = 2.925e-4.
+    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 5000.0, 0.004), (part_draw{0, 0, true}));
+    EXPECT_EQ(select_lines(0.18, 5.0, 0.01, 10, 40, 5000.0, 0.004, {}, 1.0, 1.3, 0.9999), (part_draw{0, 1, true}));
+    // More splats than line ends (A_l = 6: p = 24.4 > 20) → triangles; splats dearer than the
+    // k = 5 triangles (7 points at the paper's 1 against 5·3) are fine, against k = 2 they are not.
+    EXPECT_EQ(select_lines(6.0, 5.0, 0.01, 10, 40, 100.0, 0.004), (part_draw{40, 0}));
+    EXPECT_EQ(select_lines(1.8, 5.0, 0.01, 10, 5, 100.0, 0.004), (part_draw{0, 7, true}));
+    EXPECT_EQ(select_lines(1.8, 5.0, 0.01, 10, 2, 100.0, 0.004), (part_draw{2, 0}));
+}
+
+TEST(point_line_lod, sample_dither_is_a_fixed_spread_of_offsets_in_the_unit_interval) {
+    double sum = 0.0;
+    for (std::uint32_t seed = 0; seed < 4000; ++seed) {
+        const double u = sample_dither(seed, seed % 4);
+        ASSERT_GE(u, 0.0);
+        ASSERT_LT(u, 1.0);
+        sum += u;
+    }
+    EXPECT_NEAR(sum / 4000.0, 0.5, 0.02);  // the mean of U(0, 1); σ of the mean is 0.0046
+    EXPECT_EQ(sample_dither(7, 1), sample_dither(7, 1));
+    EXPECT_NE(sample_dither(7, 1), sample_dither(7, 2));
 }
 
 TEST(point_line_lod, splats_cover_cp_times_d_prime_squared) {

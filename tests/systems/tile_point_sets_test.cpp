@@ -100,10 +100,11 @@ TEST(tile_point_sets, a_tile_is_drawn_as_its_set_only_where_eq1_needs_no_more_sa
     part.count = 1000;
     sets.parts = {part};
     std::vector<std::uint32_t> counts(1, 0);
+    std::vector<std::uint8_t> splats(1, 0);
     // p = ½·100 / r² / d'², d' = 0.004: r = 1000 → 3.125 points; r = 50 → 1250 > 1000.
-    EXPECT_TRUE(tile_prefixes(sets, 0, 1000.0, 0.004, 1.0, counts));
+    EXPECT_TRUE(tile_prefixes(sets, 0, 1000.0, 0.004, 1.0, counts, splats));
     EXPECT_EQ(counts[0], 3u);
-    EXPECT_FALSE(tile_prefixes(sets, 0, 50.0, 0.004, 1.0, counts));
+    EXPECT_FALSE(tile_prefixes(sets, 0, 50.0, 0.004, 1.0, counts, splats));
 }
 
 TEST(tile_point_sets, a_line_set_draws_q_times_the_lines_its_tile_stands_for) {
@@ -118,11 +119,18 @@ TEST(tile_point_sets, a_line_set_draws_q_times_the_lines_its_tile_stands_for) {
     part.stands_for = 1000;
     sets.parts = {part};
     std::vector<std::uint32_t> counts(1, 0);
-    // q = A / (r·l·d') = 18 / (r · 500 · 0.004): r = 90 → 0.1 → 100 of the 1000 lines (the set
+    std::vector<std::uint8_t> splats(1, 0);
+    // q = A / (r·l·d') = 18 / (r · 500 · 0.004): r = 60 → 0.15 → 150 of the 1000 lines (the set
     // has them); r = 30 → 0.3 → 300 lines, more than the set holds: not drawn as a tile.
-    EXPECT_TRUE(tile_prefixes(sets, 0, 90.0, 0.004, 1.0, counts));
-    EXPECT_EQ(counts[0], 100u);
-    EXPECT_FALSE(tile_prefixes(sets, 0, 30.0, 0.004, 1.0, counts));
+    EXPECT_TRUE(tile_prefixes(sets, 0, 60.0, 0.004, 1.0, counts, splats));
+    EXPECT_EQ(counts[0], 150u);
+    EXPECT_EQ(splats[0], 0);
+    EXPECT_FALSE(tile_prefixes(sets, 0, 30.0, 0.004, 1.0, counts, splats));
+    // r = 90: a line's image is l / (2r·n_l) = 500 / 180,000 = 0.0028 < d', so the set draws
+    // splats at its lines' ends, Eq. 1's p = c_p·½·18 / 90² / 0.004² = 69.4 → 69 (nearest).
+    EXPECT_TRUE(tile_prefixes(sets, 0, 90.0, 0.004, 1.0, counts, splats));
+    EXPECT_EQ(counts[0], 69u);
+    EXPECT_EQ(splats[0], 1);
 }
 
 }  // namespace

@@ -26,7 +26,9 @@ struct prefix_scene {
     ecs::world world;
     ecs::schedule schedule;
 
-    explicit prefix_scene(std::vector<double> distances, float point_importance = 1.0f) {
+    // `dither` false: counts rounded down (points) or to nearest (splats), as the hand values.
+    explicit prefix_scene(std::vector<double> distances, float point_importance = 1.0f, bool dither = false,
+                          std::uint32_t first_seed = 0) {
         species_library library;
         species_entry plant;
         plant.bounding_radius = 0.5f;
@@ -61,7 +63,7 @@ struct prefix_scene {
             const ecs::entity e = world.create();
             world.emplace<world_transform>(e, {{0.0, 0.0, -z}, 0.7f, 1.0f});
             world.emplace<bounds>(e, {0.5f, 0.0f});
-            world.emplace<plant_instance>(e, {species_id{0}, 0, 0});
+            world.emplace<plant_instance>(e, {species_id{0}, 0, first_seed++});
             world.emplace<lod_state>(e);
             world.emplace<point_prefix>(e);
             world.emplace<fade_alpha>(e);
@@ -82,6 +84,7 @@ struct prefix_scene {
         lod_policy policy;
         policy.mode = lod_policy::kind::points_lines;
         policy.points = {1.0f, 1.0f};
+        policy.points.dither = dither;
         world.set_resource(policy);
         world.set_resource(primitive_costs{});  // the paper's: a triangle costs three points
         world.set_resource(tile_point_sets{});
@@ -123,6 +126,31 @@ TEST(update_point_prefix, prefixes_equal_eq1_eq2_and_the_blend_for_a_known_camer
     // r = 30: p = 2.78 → 2 points; q = 0.3 → 3 lines.
     EXPECT_EQ(scene.prefix(4).primitives[0], 2u);
     EXPECT_EQ(scene.prefix(4).primitives[1], 3u);
+}
+
+TEST(update_point_prefix, dithered_counts_add_up_to_what_eq1_asks_of_many_plants) {
+    // 1,000 plants at r = 30 (p = 2500/900 = 2.78 points each; q = 0.3 → 3 lines): rounded
+    // down, every plant draws 2 points, 2,000 in all where Eq. 1 asks for 2,778; dithered,
+    // each draws 2 or 3 and the total is within a few per cent of 2,778.
+    prefix_scene plain(std::vector<double>(1000, 30.0));
+    prefix_scene dithered(std::vector<double>(1000, 30.0), 1.0f, true, 12345);
+    ecs::executor executor(2);
+    plain.schedule.run(plain.world, executor);
+    dithered.schedule.run(dithered.world, executor);
+    std::uint32_t total_plain = 0, total_dithered = 0;
+    for (std::size_t i = 0; i < 1000; ++i) {
+        total_plain += plain.prefix(i).primitives[0];
+        const std::uint32_t n = dithered.prefix(i).primitives[0];
+        ASSERT_TRUE(n == 2u || n == 3u) << n;
+        total_dithered += n;
+        EXPECT_EQ(dithered.prefix(i).primitives[1], 3u);  // lines round to nearest either way
+    }
+    EXPECT_EQ(total_plain, 2000u);
+    EXPECT_NEAR(double(total_dithered), 2777.8, 0.03 * 2777.8);
+    // The same plant gets the same count every frame: nothing flickers.
+    const point_prefix first = dithered.prefix(17);
+    dithered.schedule.run(dithered.world, executor);
+    EXPECT_EQ(dithered.prefix(17).primitives[0], first.primitives[0]);
 }
 
 TEST(update_point_prefix, importance_keeps_a_part_polygonal_longer_without_painting_it_over) {
