@@ -37,34 +37,11 @@ layout(location = 1) out uint out_id;  // ID buffer: instance index + 1 (0 = not
 
 layout(binding = 0) uniform sampler2DArray u_albedo;
 #ifndef SHADOW_PASS
-layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
+#include "shading.glsl"
 layout(location = 0) out vec4 out_color;
 #endif
-
-#ifndef SHADOW_PASS
-// Cascade chosen by view depth; four hardware-PCF taps half a texel off centre, each a bilinear
-// 2x2 compare, together a smooth 3x3-texel footprint (a software rasteriser pays per tap). The
-// sample is pushed along the normal by about one texel to avoid acne on slopes.
-float sun_visibility(vec3 position, vec3 normal, float view_depth) {
-    if (u_sun_direction.w < 0.5) return 1.0;
-    int count = int(u_sun_radiance.w);
-    int cascade = count - 1;
-    for (int i = 0; i < count; ++i) {
-        if (view_depth < u_cascade_split_far[i]) { cascade = i; break; }
-    }
-    if (view_depth > u_cascade_split_far[count - 1]) return 1.0;
-    vec3 offset_position = position + normal * (1.5 * u_cascade_texel_world[cascade]);
-    vec4 light = u_cascade_view_projection[cascade] * vec4(offset_position, 1.0);
-    vec3 p = light.xyz / light.w * 0.5 + 0.5;
-    if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
-    float texel = u_params.y;
-    float bias = 0.0005;
-    float sum = 0.0;
-    for (int y = 0; y < 2; ++y)
-        for (int x = 0; x < 2; ++x)
-            sum += texture(u_shadow_map, vec4(p.xy + (vec2(x, y) - 0.5) * texel, float(cascade), p.z - bias));
-    return sum * 0.25;
-}
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+flat in vec3 v_color;  // shaded per point in surface.vert
 #endif
 
 #if defined(PRIMITIVE_POINTS) || defined(PRIMITIVE_LINES)
@@ -72,6 +49,13 @@ float sun_visibility(vec3 position, vec3 normal, float view_depth) {
 #endif
 
 void main() {
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+    out_color = vec4(v_color, 1.0);
+#ifdef WRITE_ID
+    out_id = v_instance + 1u;
+#endif
+    return;
+#endif
 #if defined(MATERIAL_GROUND)
     vec4 albedo = texture(u_albedo, vec3(v_uv * u_params.w, v_layer));
 #elif defined(PRIMITIVE_SAMPLES)
@@ -99,19 +83,11 @@ void main() {
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m);
     if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;
 #endif
-    vec3 l = u_sun_direction.xyz;
-    float view_depth = -(u_view * vec4(v_position, 1.0)).z;
-    float visibility = sun_visibility(v_position, n, view_depth);
-    float n_dot_l = dot(n, l);
-    vec3 sun = u_sun_radiance.rgb * visibility;
-    vec3 sky = sh_irradiance(n);
-    vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
 #if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
-    // Sunlight transmitted through the leaf blade when lit from behind.
-    radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
+    out_color = vec4(shade_surface(base, n, v_position, true), 1.0);
+#else
+    out_color = vec4(shade_surface(base, n, v_position, false), 1.0);
 #endif
-    vec3 color = apply_fog(radiance, length(v_position));
-    out_color = vec4(tone_map(color), 1.0);
 #ifdef WRITE_ID
     out_id = v_instance + 1u;
 #endif

@@ -20,6 +20,12 @@ layout(location = 4) in vec4 in_instance_scale_tint_fade_layer;
 #ifdef SHADOW_PASS
 uniform int u_cascade;
 #endif
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+// A splat is one sample: shaded here once (shading.glsl), flat across its pixels.
+#include "shading.glsl"
+layout(binding = 0) uniform sampler2DArray u_albedo;
+flat out vec3 v_color;
+#endif
 #ifdef PRIMITIVE_POINTS
 uniform float u_splat_px;     // splat side on screen, pixels
 uniform float u_splat_plane;  // the same on the image plane at distance one
@@ -64,6 +70,18 @@ void main() {
     gl_Position = u_view_projection * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
     gl_PointSize = u_splat_px;
+    // As surface.frag shades samples: the texture's colour where the point was baked (a
+    // slightly filtered level), the surface's side that faces the eye, lit as foliage when the
+    // material is a leaf.
+    vec4 albedo = textureLod(u_albedo, vec3(v_uv, v_layer), 1.0);
+    vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
+    vec3 n = normalize(v_normal);
+    if (dot(n, world) > 0.0) n = -n;
+#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
+    v_color = shade_surface(base, n, world, true);
+#else
+    v_color = shade_surface(base, n, world, false);
+#endif
 #endif
 #endif
 }

@@ -90,13 +90,14 @@ public:
         }
         d.prefixed = true;
         add_prefixes(parts, prefix, d, render_pass::opaque);
-        // A cascade samples the plant at its texel size, but never finer than the viewer sees
+        // A cascade samples the plant every k_shadow_sample_texels texels, but never finer than the viewer sees
         // the plant (d'·r): its shadow lands about as far away as the plant stands. Only the
         // cascades the plant casts into.
         const double seen_m = m_sample_distance * double(d.distance);
         for (int c = 0; c < m_cascade_count; ++c) {
             if (!(d.pass_mask & (1u << unsigned(shadow_pass(c))))) continue;
-            const double texel = std::max(double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
+            const double texel =
+                std::max(k_shadow_sample_texels * double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
             add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_splat_factor, m_costs), d,
                          shadow_pass(c));
         }

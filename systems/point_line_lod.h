@@ -104,6 +104,11 @@ part_draw select_lines(double area_m2, double length_m, double error_m, std::uin
 // plant's count still changes only where its distance crosses a threshold (no flicker).
 double sample_dither(std::uint32_t seed, std::uint32_t part);
 
+// Point and line samples cast shadows spaced this many shadow-map texels apart (at least): the
+// receiver filters the shadow over 3x3 texels (four bilinear PCF taps, shaders/shading.glsl),
+// so casters sampled every texel draw four times the splats for detail the filter removes.
+inline constexpr double k_shadow_sample_texels = 2.0;
+
 // Splat side in pixels: each splat covers c_p·d'² (the splat factor enlarges splats so the
 // random samples leave no holes, §5.1 and §5.4, Fig. 5c).
 float splat_size_px(const point_line_quality& q);

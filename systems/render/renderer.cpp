@@ -334,10 +334,10 @@ void renderer::draw_samples(const pass_commands& groups, int cascade) {
                 glEnable(GL_PROGRAM_POINT_SIZE);
                 glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
                 glUniform1f(glGetUniformLocation(program, "u_splat_plane"), m_splat_plane);
-                // compute_shadow_prefix counts splats of c_p texels' area where the texel is
-                // the sample distance: √c_p = splat / d'.
+                // compute_shadow_prefix counts splats of c_p·s² texels' area where s, the sample
+                // distance, is k_shadow_sample_texels texels: s·√c_p = s·splat / d'.
                 glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
-                            std::max(1.0f, m_splat_px / std::max(m_line_width_px, 1e-6f)));
+                            float(k_shadow_sample_texels) * std::max(1.0f, m_splat_px / std::max(m_line_width_px, 1e-6f)));
             } else if (!shadow && m_line_width_px > k_native_line_width_px) {
                 glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
                 glUniform2f(glGetUniformLocation(program, "u_viewport_px"), float(m_settings.width),

@@ -1,0 +1,48 @@
+// Sun and sky shading shared by surface.frag (per fragment) and surface.vert (per point: a
+// splat is one sample, so its colour is computed once, where the vertex is, and every fragment
+// of the splat takes it -- on llvmpipe, which shades fragments in 4x4 blocks, a one-pixel
+// splat's fragment shader costs as much as sixteen pixels').
+// Needs common.glsl first.
+
+layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
+
+// Cascade chosen by view depth; four hardware-PCF taps half a texel off centre, each a bilinear
+// 2x2 compare, together a smooth 3x3-texel footprint (a software rasteriser pays per tap). The
+// sample is pushed along the normal by about one texel to avoid acne on slopes.
+float sun_visibility(vec3 position, vec3 normal, float view_depth) {
+    if (u_sun_direction.w < 0.5) return 1.0;
+    int count = int(u_sun_radiance.w);
+    int cascade = count - 1;
+    for (int i = 0; i < count; ++i) {
+        if (view_depth < u_cascade_split_far[i]) { cascade = i; break; }
+    }
+    if (view_depth > u_cascade_split_far[count - 1]) return 1.0;
+    vec3 offset_position = position + normal * (1.5 * u_cascade_texel_world[cascade]);
+    vec4 light = u_cascade_view_projection[cascade] * vec4(offset_position, 1.0);
+    vec3 p = light.xyz / light.w * 0.5 + 0.5;
+    if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+    float texel = u_params.y;
+    float bias = 0.0005;
+    float sum = 0.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+            sum += texture(u_shadow_map, vec4(p.xy + (vec2(x, y) - 0.5) * texel, float(cascade), p.z - bias));
+    return sum * 0.25;
+}
+
+// Display colour of a surface point: albedo `base`, unit normal `n` (already facing the side
+// seen), camera-relative `position`. Sun with cascaded shadows plus SH sky light; `foliage`
+// adds sunlight transmitted through the blade when it is lit from behind. Then fog and tone
+// mapping.
+vec3 shade_surface(vec3 base, vec3 n, vec3 position, bool foliage) {
+    vec3 l = u_sun_direction.xyz;
+    float view_depth = -(u_view * vec4(position, 1.0)).z;
+    float visibility = sun_visibility(position, n, view_depth);
+    float n_dot_l = dot(n, l);
+    vec3 sun = u_sun_radiance.rgb * visibility;
+    vec3 sky = sh_irradiance(n);
+    vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
+    if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
+    vec3 color = apply_fog(radiance, length(position));
+    return tone_map(color);
+}
