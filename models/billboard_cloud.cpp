@@ -318,4 +318,35 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
     return cloud;
 }
 
+image_rgba8 tangent_space_normal_page(const billboard_cloud& cloud) {
+    const image_rgba8& model_space = cloud.page(cloud_atlas_page::normal);
+    image_rgba8 out = model_space;
+    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
+        out.texels[i] = 128, out.texels[i + 1] = 128, out.texels[i + 2] = 255;
+    }
+    auto convert = [&](const cloud_billboard& b, std::int64_t x, std::int64_t y) {
+        if (x < 0 || y < 0 || x >= std::int64_t(out.width) || y >= std::int64_t(out.height)) return;
+        const billboard_plane side = x >= std::int64_t(b.rect.x + b.rect.width / 2) ? back_side(b.plane) : b.plane;
+        const glm::vec3 t = glm::normalize(side.axis_u), bt = glm::normalize(side.axis_v), n = side.normal();
+        const std::uint8_t* m = model_space.at(std::uint32_t(x), std::uint32_t(y));
+        const glm::vec3 normal = glm::vec3(m[0], m[1], m[2]) / 127.5f - 1.0f;
+        const glm::vec3 local(glm::dot(normal, t), glm::dot(normal, bt), glm::dot(normal, n));
+        std::uint8_t* to = out.at(std::uint32_t(x), std::uint32_t(y));
+        for (int k = 0; k < 3; ++k) to[k] = std::uint8_t(std::lround(std::clamp(local[k] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+    };
+    // The one-texel frame extend_edges filled first, then every rectangle's own texels, so a
+    // frame never overwrites a neighbour however narrow the gutter.
+    for (const cloud_billboard& b : cloud.billboards) {
+        const auto x0 = std::int64_t(b.rect.x), y0 = std::int64_t(b.rect.y);
+        const auto x1 = x0 + std::int64_t(b.rect.width), y1 = y0 + std::int64_t(b.rect.height);
+        for (std::int64_t y = y0 - 1; y <= y1; ++y)
+            for (std::int64_t x = x0 - 1; x <= x1; ++x)
+                if (x < x0 || x >= x1 || y < y0 || y >= y1) convert(b, x, y);
+    }
+    for (const cloud_billboard& b : cloud.billboards)
+        for (std::uint32_t y = b.rect.y; y < b.rect.y + b.rect.height; ++y)
+            for (std::uint32_t x = b.rect.x; x < b.rect.x + b.rect.width; ++x) convert(b, x, y);
+    return out;
+}
+
 }  // namespace sylva

@@ -132,6 +132,12 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
 // std::runtime_error when even 2-texel billboards do not fit the atlas.
 billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings = {});
 
+// The normal page in the tangent space of each billboard side, for formats that want it (glTF):
+// x along the side's axis_u, y along its axis_v (the image's up), z its normal toward its viewer
+// (glTF's "+X right, +Y up, +Z toward the viewer"), encoded n * 0.5 + 0.5, alpha kept; texels of
+// no billboard are the flat (0, 0, 1).
+image_rgba8 tangent_space_normal_page(const billboard_cloud& cloud);
+
 // The plant's height (lods[0] vertices, y extent); 4 m and above counts as a tree below.
 float plant_height(const plant_model& model);
 

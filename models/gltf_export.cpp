@@ -89,35 +89,6 @@ void add_single_node_scene(tinygltf::Model& model, const std::string& name) {
     model.defaultScene = 0;
 }
 
-// The cloud's model-space normal page in the tangent space of each billboard side (x along the
-// side's axis_u, y along its axis_v, z its normal; glTF's "+X right, +Y up, +Z toward the
-// viewer"), including the gutter texels each side's edges were extended into; flat elsewhere.
-image_rgba8 tangent_space_normals(const billboard_cloud& cloud) {
-    const image_rgba8& model_space = cloud.page(cloud_atlas_page::normal);
-    image_rgba8 out = model_space;
-    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
-        out.texels[i] = 128, out.texels[i + 1] = 128, out.texels[i + 2] = 255;
-    }
-    for (const cloud_billboard& b : cloud.billboards) {
-        const std::uint32_t w = b.rect.width / 2;
-        const std::uint32_t ring = 1;
-        for (std::int64_t y = std::int64_t(b.rect.y) - ring; y < std::int64_t(b.rect.y + b.rect.height) + ring; ++y)
-            for (std::int64_t x = std::int64_t(b.rect.x) - ring; x < std::int64_t(b.rect.x + b.rect.width) + ring; ++x) {
-                if (x < 0 || y < 0 || x >= std::int64_t(out.width) || y >= std::int64_t(out.height)) continue;
-                const bool back = x >= std::int64_t(b.rect.x + w);
-                const billboard_plane side = back ? back_side(b.plane) : b.plane;
-                const glm::vec3 t = glm::normalize(side.axis_u), bt = glm::normalize(side.axis_v), n = side.normal();
-                const std::uint8_t* m = model_space.at(std::uint32_t(x), std::uint32_t(y));
-                const glm::vec3 normal = glm::vec3(m[0], m[1], m[2]) / 127.5f - 1.0f;
-                const glm::vec3 local(glm::dot(normal, t), glm::dot(normal, bt), glm::dot(normal, n));
-                std::uint8_t* to = out.at(std::uint32_t(x), std::uint32_t(y));
-                for (int k = 0; k < 3; ++k)
-                    to[k] = std::uint8_t(std::lround(std::clamp(local[k] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
-            }
-    }
-    return out;
-}
-
 }  // namespace
 
 void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesystem::path& file) {
@@ -234,7 +205,7 @@ void export_billboard_cloud_glb(const billboard_cloud& cloud, const std::string&
     m.pbrMetallicRoughness.baseColorTexture.index =
         add_texture(model, colour, "billboard_cloud_colour", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
     m.normalTexture.index =
-        add_texture(model, tangent_space_normals(cloud), "billboard_cloud_normal", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+        add_texture(model, tangent_space_normal_page(cloud), "billboard_cloud_normal", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = 1.0;
     m.alphaMode = "MASK";

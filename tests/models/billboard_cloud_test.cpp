@@ -100,6 +100,44 @@ TEST(billboard_cloud, a_flat_card_gets_one_billboard_in_its_own_plane) {
     EXPECT_GE(double(covered), 0.9 * double(r.width) * double(r.height));
 }
 
+// glTF's normal texture is in tangent space: x along the side's axis_u, y along axis_v, z toward
+// its viewer. A card whose vertex normals lean toward `right` must read (dot(n, u), dot(n, v),
+// dot(n, normal)) on the front half and the same with the back side's frame on the back half,
+// where the baker turned the normal toward that viewer.
+TEST(billboard_cloud, the_tangent_space_normal_page_uses_each_side_s_own_frame) {
+    plant_model plant;
+    const glm::vec3 right(1.0f, 0.0f, 0.0f), up(0.0f, 1.0f, 0.0f), facing(0.0f, 0.0f, 1.0f);
+    const glm::vec3 n = glm::normalize(facing + 0.5f * right);
+    const glm::vec3 at(2.0f, 0.0f, 3.0f);
+    plant.lods[0].vertices = {{at, n, {0, 1}}, {at + 2.0f * right, n, {1, 1}}, {at + 2.0f * right + up, n, {1, 0}},
+                              {at + up, n, {0, 0}}};
+    plant.lods[0].indices = {0, 1, 2, 0, 2, 3};
+    plant.lods[0].submeshes = {{0, 6, material_kind::leaf}};
+    plant.leaf_texture = solid(40, 160, 30);
+    plant.bark_texture = solid(120, 80, 40);
+    billboard_cloud_settings s;
+    s.clustering.target_clusters = 1;
+    s.atlas_width = 64;
+    s.atlas_height = 32;
+    const billboard_cloud cloud = bake_billboard_cloud(plant, s);
+    ASSERT_EQ(cloud.billboards.size(), 1u);
+    const image_rgba8 page = tangent_space_normal_page(cloud);
+    const cloud_billboard& b = cloud.billboards[0];
+    for (const bool back : {false, true}) {
+        const billboard_plane side = back ? back_side(b.plane) : b.plane;
+        // The baker turns the leaf's normal toward whichever side sees it.
+        const glm::vec3 seen = glm::dot(n, side.normal()) >= 0.0f ? n : -n;
+        const glm::vec3 expected(glm::dot(seen, glm::normalize(side.axis_u)), glm::dot(seen, glm::normalize(side.axis_v)),
+                                 glm::dot(seen, side.normal()));
+        const std::uint32_t x = b.rect.x + b.rect.width / 4 + (back ? b.rect.width / 2 : 0);
+        const std::uint8_t* texel = page.at(x, b.rect.y + b.rect.height / 2);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(texel[k], (expected[k] * 0.5f + 0.5f) * 255.0f, 2.0f) << "back " << back << " channel " << k;
+        EXPECT_GT(expected.z, 0.8f);
+        EXPECT_GT(std::abs(expected.x), 0.4f);  // the lean shows in x, not y
+    }
+    EXPECT_EQ(page.at(0, 0)[2], 255);  // outside every billboard: flat
+}
+
 constexpr std::uint32_t k_atlas_w = 512;
 constexpr std::uint32_t k_atlas_h = 256;
 
