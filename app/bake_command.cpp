@@ -1,7 +1,7 @@
 // `sylva bake SCENARIO.json|MODEL.glb`: builds every species model a scenario needs (or one
 // imported glTF model) and its representations (crossed billboard, Deussen 2002 points and
-// lines) into the bake cache, with a progress bar, so later plays and benches start at once.
-// Later representation bakes (billboard clouds, PRT) join the same loop.
+// lines, Behrendt 2005 billboard cloud) into the bake cache, with a progress bar, so later plays
+// and benches start at once. Later representation bakes (PRT) join the same loop.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -67,18 +67,23 @@ int bake(const bake_options& o) {
                 cache.path_of("billboards", species_billboard_key(species[i], species_seed));
             const std::filesystem::path point_lines =
                 cache.path_of("point_lines", species_point_line_key(species[i], species_seed));
+            const std::filesystem::path cloud =
+                cache.path_of("billboard_clouds", species_billboard_cloud_key(species[i], species_seed));
             if (o.force) {
                 std::filesystem::remove(cache.path_of("plants", key));
                 std::filesystem::remove(billboard);
                 std::filesystem::remove(point_lines);
+                std::filesystem::remove(cloud);
             }
             const bool cached = std::filesystem::exists(cache.path_of("plants", key)) &&
-                                std::filesystem::exists(billboard) && std::filesystem::exists(point_lines);
+                                std::filesystem::exists(billboard) && std::filesystem::exists(point_lines) &&
+                                std::filesystem::exists(cloud);
             progress(i, species.size(), species[i].name + (cached ? " (cached)" : " (baking)"));
             const auto start = std::chrono::steady_clock::now();
             const plant_model model = load_species_model(species[i], species_seed, &cache);
             load_species_billboard(species[i], species_seed, model, &cache);     // the crossed billboard
             load_species_point_lines(species[i], species_seed, model, &cache);  // points and lines
+            load_species_billboard_cloud(species[i], species_seed, model, &cache);
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             progress(i + 1, species.size(), species[i].name + (cached ? " (cached)" : " (baked, " + std::to_string(int(ms)) + " ms)"));
         }
@@ -87,7 +92,7 @@ int bake(const bake_options& o) {
         spdlog::error("{}", e.what());
         return k_exit_failure;
     }
-    spdlog::info("{} species (model, crossed billboard, points and lines each): {} cache entries reused, {} baked, "
+    spdlog::info("{} species (model, crossed billboard, points and lines, billboard cloud each): {} cache entries reused, {} baked, "
                  "in {}",
                  species.size(), cache.hits(), cache.misses(), cache.root().string());
     return k_exit_ok;

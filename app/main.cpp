@@ -18,6 +18,9 @@ int main(int argc, char** argv) {
     auto* plant = app.add_subcommand(
         "plant", "Generate a species preset and export it as binary glTF (.glb)");
     commands.emplace_back(plant, sylva::add_plant_command(*plant));
+    auto* export_cloud = app.add_subcommand(
+        "export-cloud", "Bake a plant's billboard cloud (Behrendt 2005) and export it as binary glTF (.glb)");
+    commands.emplace_back(export_cloud, sylva::add_export_cloud_command(*export_cloud));
     auto* inspect = app.add_subcommand(
         "inspect", "Print a glTF plant's triangles, leaves, branches, materials, bounds and units");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));

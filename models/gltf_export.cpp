@@ -2,7 +2,9 @@
 // in the binary chunk, so the writer never touches an image.
 #include "models/gltf_export.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/vec4.hpp>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <stdexcept>
@@ -67,6 +69,26 @@ image_rgba8 or_white(const image_rgba8& image) {
     return image.texels.empty() ? image_rgba8{1, 1, {255, 255, 255, 255}} : image;
 }
 
+void write_glb(tinygltf::Model& model, const std::filesystem::path& file) {
+    model.buffers[0].data.resize((model.buffers[0].data.size() + 3) / 4 * 4, 0);
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    tinygltf::TinyGLTF writer = make_gltf_loader();
+    if (!writer.WriteGltfSceneToFile(&model, file.string(), true, true, false, true))
+        throw std::runtime_error(file.string() + ": cannot be written");
+}
+
+void add_single_node_scene(tinygltf::Model& model, const std::string& name) {
+    tinygltf::Node node;
+    node.name = name;
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+}
+
 }  // namespace
 
 void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesystem::path& file) {
@@ -128,21 +150,81 @@ void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesy
         out_mesh.primitives.push_back(p);
     }
     model.meshes.push_back(out_mesh);
-    tinygltf::Node node;
-    node.name = plant.name;
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
-    model.buffers[0].data.resize((model.buffers[0].data.size() + 3) / 4 * 4, 0);
+    add_single_node_scene(model, plant.name);
+    write_glb(model, file);
+}
 
-    std::error_code ec;
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    tinygltf::TinyGLTF writer = make_gltf_loader();
-    if (!writer.WriteGltfSceneToFile(&model, file.string(), true, true, false, true))
-        throw std::runtime_error(file.string() + ": cannot be written");
+void export_billboard_cloud_glb(const billboard_cloud& cloud, const std::string& name,
+                                const std::filesystem::path& file) {
+    const mesh_data& mesh = cloud.mesh;
+    if (mesh.indices.empty()) throw std::invalid_argument(name + ": the billboard cloud has no billboards to export");
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "sylva billboard cloud (Behrendt 2005)";
+    model.buffers.emplace_back();
+
+    // Interleaved position, normal, uv, tangent: each quad is flat, its tangent its axis_u
+    // (the direction of growing s) and w = +1, so the bitangent cross(normal, tangent) is
+    // its axis_v (toward the top row, glTF's "up" in the normal texture).
+    struct cloud_vertex {
+        glm::vec3 position, normal;
+        glm::vec2 uv;
+        glm::vec4 tangent;
+    };
+    static_assert(sizeof(cloud_vertex) == 48);
+    std::vector<cloud_vertex> vertices(mesh.vertices.size());
+    glm::vec3 lo(mesh.vertices[0].position), hi(lo);
+    for (std::size_t q = 0; q + 3 < mesh.vertices.size(); q += 4) {
+        const glm::vec3 t = glm::normalize(mesh.vertices[q + 1].position - mesh.vertices[q].position);
+        for (std::size_t k = q; k < q + 4; ++k) {
+            const vertex& v = mesh.vertices[k];
+            vertices[k] = {v.position, glm::normalize(v.normal), v.uv, glm::vec4(t, 1.0f)};
+            lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+        }
+    }
+    const int vertex_view = add_view(model, vertices.data(), vertices.size() * sizeof(cloud_vertex),
+                                     TINYGLTF_TARGET_ARRAY_BUFFER, int(sizeof(cloud_vertex)));
+    const int position = add_accessor(model, vertex_view, offsetof(cloud_vertex, position), vertices.size(),
+                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    model.accessors[std::size_t(position)].minValues = {lo.x, lo.y, lo.z};
+    model.accessors[std::size_t(position)].maxValues = {hi.x, hi.y, hi.z};
+    const int normal = add_accessor(model, vertex_view, offsetof(cloud_vertex, normal), vertices.size(),
+                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    const int uv = add_accessor(model, vertex_view, offsetof(cloud_vertex, uv), vertices.size(),
+                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2);
+    const int tangent = add_accessor(model, vertex_view, offsetof(cloud_vertex, tangent), vertices.size(),
+                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4);
+    const int index_view = add_view(model, mesh.indices.data(), mesh.indices.size() * 4,
+                                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+
+    image_rgba8 colour = cloud.page(cloud_atlas_page::albedo);
+    const image_rgba8& coverage = cloud.page(cloud_atlas_page::normal);
+    for (std::size_t i = 3; i < colour.texels.size(); i += 4) colour.texels[i] = coverage.texels[i];
+    tinygltf::Material m;
+    m.name = "billboard_cloud";
+    m.pbrMetallicRoughness.baseColorTexture.index =
+        add_texture(model, colour, "billboard_cloud_colour", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+    m.normalTexture.index =
+        add_texture(model, tangent_space_normal_page(cloud), "billboard_cloud_normal", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.pbrMetallicRoughness.roughnessFactor = 1.0;
+    m.alphaMode = "MASK";
+    m.alphaCutoff = 0.5;
+    m.doubleSided = false;
+    model.materials.push_back(m);
+
+    tinygltf::Mesh out_mesh;
+    out_mesh.name = name + "_billboard_cloud";
+    tinygltf::Primitive p;
+    p.attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}, {"TANGENT", tangent}};
+    p.indices = add_accessor(model, index_view, 0, mesh.indices.size(), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                             TINYGLTF_TYPE_SCALAR);
+    p.material = 0;
+    p.mode = TINYGLTF_MODE_TRIANGLES;
+    out_mesh.primitives.push_back(p);
+    model.meshes.push_back(out_mesh);
+    add_single_node_scene(model, name);
+    write_glb(model, file);
 }
 
 }  // namespace sylva

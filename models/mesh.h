@@ -49,7 +49,9 @@ enum class part_kind : std::uint8_t {
 
 // Per triangle: `branch` is the stem index in the plant's skeleton (for foliage, the stem that
 // carries it), `level` its recursion level (trunk or ground stem 0; foliage one more than its
-// stem), `parent_branch` the stem it grows from (a stem from the ground names itself).
+// stem), `parent_branch` the stem that `branch` grows from (a stem from the ground names
+// itself). Foliage thus records its stem's parent too, which keeps a stem that has no bark
+// triangles (the finest twigs) linked into the hierarchy.
 struct triangle_part {
     std::uint32_t branch = 0;
     std::uint8_t level = 0;

@@ -10,7 +10,7 @@
 namespace sylva {
 
 // Bump whenever plant_model, mesh_data or a generator changes what it produces.
-constexpr std::uint32_t k_plant_model_format = 1;
+constexpr std::uint32_t k_plant_model_format = 2;  // 2: foliage parent_branch is its stem's parent
 
 std::vector<std::byte> serialize_plant_model(const plant_model& model);
 // Throws std::runtime_error on a malformed entry or another format version.

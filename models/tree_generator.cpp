@@ -89,7 +89,11 @@ void add_leaves(const tree_params& p, const tree_skeleton& tree, std::size_t ind
     const stem& s = tree.stems[index];
     const auto id = static_cast<std::uint32_t>(index);
     const part_kind kind = p.leaf == leaf_shape::needle_cluster ? part_kind::needle : part_kind::leaf;
-    const triangle_part part{id, static_cast<std::uint8_t>(s.level + 1), kind, id};
+    // parent_branch is the parent of the carrying stem, as on that stem's bark: the twigs of the
+    // last level often have no bark (bark_levels), and this is then their only link to the
+    // branch they grow on (hierarchy-aware billboard-cloud clustering walks it).
+    const auto stem_parent = s.parent >= 0 ? static_cast<std::uint32_t>(s.parent) : id;
+    const triangle_part part{id, static_cast<std::uint8_t>(s.level + 1), kind, stem_parent};
     const stem& parent = tree.stems[std::size_t(std::max(s.parent, 0))];
     const float position = s.parent >= 0 ? s.offset_in_parent / parent.length : 1.0f;
     const float full = float(p.leaves_per_stem) * shape_ratio(crown_shape::tapered_cylindrical, position);

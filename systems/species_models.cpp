@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/billboard_cloud_io.h"
 #include "models/billboard_io.h"
 #include "models/gltf_import.h"
 #include "models/plant_library.h"
@@ -68,6 +69,21 @@ crossed_billboard load_species_billboard(const species_settings& species, std::u
     return load_cached<crossed_billboard>(
         cache, "billboards", species_billboard_key(species, seed), bake,
         [](std::span<const std::byte> bytes) { return deserialize_crossed_billboard(bytes); });
+}
+
+std::uint64_t species_billboard_cloud_key(const species_settings& species, std::uint64_t seed) {
+    const std::uint64_t key = hash_string("billboard_cloud", species_model_key(species, seed));
+    return hash_string(std::to_string(k_billboard_cloud_format) + "/default", key);
+}
+
+billboard_cloud load_species_billboard_cloud(const species_settings& species, std::uint64_t seed,
+                                             const plant_model& model, bake_cache* cache) {
+    auto bake = [&] {
+        return serialize_billboard_cloud(bake_billboard_cloud(model, default_billboard_cloud_settings(model)));
+    };
+    return load_cached<billboard_cloud>(
+        cache, "billboard_clouds", species_billboard_cloud_key(species, seed), bake,
+        [](std::span<const std::byte> bytes) { return deserialize_billboard_cloud(bytes); });
 }
 
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "models/bake_cache.h"
+#include "models/billboard_cloud.h"
 #include "models/crossed_billboard.h"
 #include "models/plant_model.h"
 #include "models/point_line_model.h"
@@ -33,6 +34,16 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 // unscaled), through the cache ("billboards") when `cache` is not null.
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
                                          const plant_model& model, bake_cache* cache);
+
+// The cache key of a species' billboard cloud: its model's key and the cloud's format version
+// (the settings are default_billboard_cloud_settings of that model, fixed by the two).
+std::uint64_t species_billboard_cloud_key(const species_settings& species, std::uint64_t seed);
+
+// The billboard cloud (Behrendt 2005 §2) of `model` (unscaled), baked with
+// default_billboard_cloud_settings, through the cache ("billboard_clouds") when `cache` is not
+// null.
+billboard_cloud load_species_billboard_cloud(const species_settings& species, std::uint64_t seed,
+                                             const plant_model& model, bake_cache* cache);
 
 // The cache key of a species' point/line representation: its model's key and the bake's format.
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed);

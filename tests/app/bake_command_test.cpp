@@ -25,11 +25,11 @@ TEST(bake_command, bakes_once_then_serves_every_species_from_the_cache) {
     const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
     const auto first = run("bake " + scenario + " --cache " + cache.string());
     ASSERT_EQ(first.first, 0) << first.second;
-    EXPECT_NE(first.second.find("2 species (model, crossed billboard, points and lines each): 0 cache entries reused, 6 baked"), std::string::npos) << first.second;
+    EXPECT_NE(first.second.find("2 species (model, crossed billboard, points and lines, billboard cloud each): 0 cache entries reused, 8 baked"), std::string::npos) << first.second;
     const auto second = run("bake " + scenario + " --cache " + cache.string());
-    EXPECT_NE(second.second.find("2 species (model, crossed billboard, points and lines each): 6 cache entries reused, 0 baked"), std::string::npos) << second.second;
+    EXPECT_NE(second.second.find("2 species (model, crossed billboard, points and lines, billboard cloud each): 8 cache entries reused, 0 baked"), std::string::npos) << second.second;
     const auto forced = run("bake " + scenario + " --force --cache " + cache.string());
-    EXPECT_NE(forced.second.find("0 cache entries reused, 6 baked"), std::string::npos) << forced.second;
+    EXPECT_NE(forced.second.find("0 cache entries reused, 8 baked"), std::string::npos) << forced.second;
     fs::remove_all(cache);
 }
 

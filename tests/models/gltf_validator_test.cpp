@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "models/billboard_cloud.h"
 #include "models/gltf_export.h"
+#include "models/plant_library.h"
 #include "models/textures.h"
 #include "models/tree_generator.h"
 
@@ -68,6 +70,31 @@ TEST(gltf_validator, exported_plant_levels_have_no_errors) {
         EXPECT_EQ(report["info"]["materialCount"], 2);
     }
     fs::remove_all(dir);
+}
+
+// The billboard cloud export (`sylva export-cloud`): 0 errors, the quads' triangles, one
+// material, and both atlas pages embedded (colour and normal).
+TEST(gltf_validator, exported_billboard_cloud_has_no_errors) {
+    if (run("node --version > /dev/null 2>&1").exit_code != 0) GTEST_SKIP() << "node is not installed";
+    if (!fs::exists(k_tools / "node_modules" / "gltf-validator"))
+        GTEST_SKIP() << "gltf-validator is not installed: run `./sylva test` or `cd tests/tools && npm install`";
+    const plant_model plant = generate_plant_model("shrub", 2, 64);
+    billboard_cloud_settings settings = default_billboard_cloud_settings(plant);
+    settings.supersampling = 1;
+    const billboard_cloud cloud = bake_billboard_cloud(plant, settings);
+    const fs::path file = fs::temp_directory_path() / ("sylva_cloud_validator_" + std::to_string(::getpid()) + ".glb");
+    export_billboard_cloud_glb(cloud, "shrub", file);
+    const run_result r = run("node " + (k_tools / "validate_gltf.mjs").string() + " " + file.string() + " 2>&1");
+    fs::remove(file);
+    ASSERT_NE(r.exit_code, 2) << r.output;
+    const auto report = nlohmann::json::parse(r.output, nullptr, false);
+    ASSERT_FALSE(report.is_discarded()) << r.output;
+    EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"].dump(2);
+    EXPECT_EQ(report["issues"]["numWarnings"], 0) << report["issues"].dump(2);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_EQ(report["info"]["totalTriangleCount"], cloud.mesh.triangle_count());
+    EXPECT_EQ(report["info"]["materialCount"], 1);
+    EXPECT_EQ(report["info"]["resources"].size(), 3u) << report["info"]["resources"].dump(2);  // buffer, 2 PNGs
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -125,6 +126,33 @@ TEST_P(plant_library_test, every_triangle_has_a_part_and_every_foliage_element_a
             EXPECT_NEAR(glm::length(l.normal), 1.0f, 1e-3f);
             EXPECT_NE(l.kind, part_kind::bark);
         }
+    }
+}
+
+// Foliage names its stem (branch) and that stem's parent (parent_branch), as the stem's own bark
+// does; where the finest twigs have no bark, that is the only link from their leaves to the
+// branch they grow on, and it must name a stem with bark one level up.
+TEST_P(plant_library_test, foliage_records_its_stem_and_that_stem_s_parent) {
+    const plant_model m = generate_plant_model(GetParam(), 4, 4);
+    const mesh_data& full = m.lods[0];
+    std::map<std::uint32_t, std::pair<std::uint32_t, std::uint8_t>> bark;  // stem -> parent, level
+    for (const triangle_part& p : full.parts)
+        if (p.kind == part_kind::bark) bark[p.branch] = {p.parent_branch, p.level};
+    std::size_t linked_through_barkless_stems = 0;
+    for (const triangle_part& p : full.parts) {
+        if (p.kind == part_kind::bark) continue;
+        if (const auto stem = bark.find(p.branch); stem != bark.end()) {
+            EXPECT_EQ(p.parent_branch, stem->second.first) << "branch " << p.branch;
+        } else if (p.parent_branch != p.branch) {
+            const auto parent = bark.find(p.parent_branch);
+            ASSERT_NE(parent, bark.end()) << "foliage of stem " << p.branch << " names " << p.parent_branch;
+            EXPECT_EQ(parent->second.second + 2, p.level) << "branch " << p.branch;
+            ++linked_through_barkless_stems;
+        }
+    }
+    const std::string preset = GetParam();
+    if (preset == "broadleaf" || preset == "conifer" || preset == "shrub") {
+        EXPECT_GT(linked_through_barkless_stems, 0u) << "these presets carry their leaves on barkless twigs";
     }
 }
 
