@@ -54,12 +54,7 @@ oriented_box sorted_axes(const oriented_box& box) {
 
 cloud_cluster box_cluster(const mesh_data& mesh, const std::vector<std::uint32_t>& triangles,
                           const min_box_settings& box_settings) {
-    std::vector<std::uint32_t> vertices;
-    vertices.reserve(triangles.size() * 3);
-    for (std::uint32_t t : triangles)
-        for (int c = 0; c < 3; ++c) vertices.push_back(mesh.indices[std::size_t(t) * 3 + std::size_t(c)]);
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const std::vector<std::uint32_t> vertices = triangle_vertices(mesh, triangles);
     std::vector<glm::vec3> points(vertices.size());
     for (std::size_t i = 0; i < vertices.size(); ++i) points[i] = mesh.vertices[vertices[i]].position;
     cloud_cluster cluster;

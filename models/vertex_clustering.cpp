@@ -13,6 +13,16 @@
 #include "models/random.h"
 
 namespace sylva {
+std::vector<std::uint32_t> triangle_vertices(const mesh_data& mesh, std::span<const std::uint32_t> triangles) {
+    std::vector<std::uint32_t> vertices;
+    vertices.reserve(triangles.size() * 3);
+    for (std::uint32_t t : triangles)
+        for (int c = 0; c < 3; ++c) vertices.push_back(mesh.indices[std::size_t(t) * 3 + std::size_t(c)]);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
+
 namespace {
 
 // Points per task of the parallel assignment step; labels do not depend on it.
@@ -105,12 +115,7 @@ std::uint32_t kmeans_triangles(const mesh_data& mesh, std::span<const std::uint3
                                std::uint64_t seed, std::uint32_t max_iterations, std::uint32_t first_id,
                                std::vector<std::uint32_t>& cluster_of) {
     if (triangles.empty()) return 0;
-    std::vector<std::uint32_t> vertices;
-    vertices.reserve(triangles.size() * 3);
-    for (std::uint32_t t : triangles)
-        for (int c = 0; c < 3; ++c) vertices.push_back(mesh.indices[std::size_t(t) * 3 + std::size_t(c)]);
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const std::vector<std::uint32_t> vertices = triangle_vertices(mesh, triangles);
     std::vector<glm::vec3> points(vertices.size());
     for (std::size_t i = 0; i < vertices.size(); ++i) points[i] = mesh.vertices[vertices[i]].position;
     std::vector<std::uint32_t> labels = kmeans(points, std::max<std::uint32_t>(k, 1), seed, max_iterations);

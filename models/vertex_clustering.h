@@ -62,6 +62,9 @@ struct triangle_clusters {
     std::vector<std::vector<std::uint32_t>> triangles() const;
 };
 
+// The vertices `triangles` use (indices into mesh.vertices), sorted, each once.
+std::vector<std::uint32_t> triangle_vertices(const mesh_data& mesh, std::span<const std::uint32_t> triangles);
+
 // Plain k-means (Lloyd's iterations after k-means++ seeding) on points: a label in 0..k'-1 per
 // point, numbered in order of first appearance, k' <= k (fewer when there are fewer distinct
 // points). Ties go to the lower centre. Throws std::invalid_argument for k = 0 with points.

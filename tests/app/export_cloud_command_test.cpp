@@ -22,13 +22,6 @@ using result = test::command_result;
 
 result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 std::string bytes_of(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -46,7 +39,7 @@ std::optional<nlohmann::json> validate(const fs::path& file) {
 }
 
 TEST(export_cloud_command, exports_a_preset_and_reports_the_bake) {
-    const fs::path dir = temp_dir("export_cloud_preset");
+    const fs::path dir = test::fresh_temp_dir("export_cloud_preset");
     const fs::path out = dir / "shrub_cloud.glb";
     const result r = run("export-cloud shrub --seed 2 --texture-size 64 --clusters 12 --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -64,7 +57,7 @@ TEST(export_cloud_command, exports_a_preset_and_reports_the_bake) {
 }
 
 TEST(export_cloud_command, exports_an_imported_glb_with_the_geometric_clustering) {
-    const fs::path dir = temp_dir("export_cloud_import");
+    const fs::path dir = test::fresh_temp_dir("export_cloud_import");
     const fs::path plant = dir / "broadleaf.glb";
     ASSERT_EQ(run("plant broadleaf --texture-size 64 --out " + plant.string()).exit_code, 0);
     const fs::path out = dir / "cloud.glb";
@@ -78,7 +71,7 @@ TEST(export_cloud_command, exports_an_imported_glb_with_the_geometric_clustering
 }
 
 TEST(export_cloud_command, bad_models_and_options_exit_2_and_name_the_problem) {
-    const fs::path dir = temp_dir("export_cloud_bad");
+    const fs::path dir = test::fresh_temp_dir("export_cloud_bad");
     const std::string out = " --out " + (dir / "x.glb").string();
     result r = run("export-cloud oak" + out);
     EXPECT_EQ(r.exit_code, 2);

@@ -21,19 +21,12 @@ using result = test::command_result;
 
 result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
 TEST(inspect_command, prints_every_level_of_an_exported_plant) {
-    const fs::path dir = temp_dir("inspect");
+    const fs::path dir = test::fresh_temp_dir("inspect");
     const fs::path file = dir / "tree.glb";
     ASSERT_EQ(run("plant broadleaf --seed 2 --texture-size 64 --out " + file.string()).exit_code,
               0);
@@ -46,7 +39,7 @@ TEST(inspect_command, prints_every_level_of_an_exported_plant) {
 }
 
 TEST(inspect_command, missing_broken_and_foreign_files_exit_2_naming_the_file) {
-    const fs::path dir = temp_dir("inspect_bad");
+    const fs::path dir = test::fresh_temp_dir("inspect_bad");
     const result missing = run("inspect " + (dir / "absent.glb").string());
     EXPECT_EQ(missing.exit_code, 2);
     EXPECT_TRUE(has(missing.output, "absent.glb")) << missing.output;

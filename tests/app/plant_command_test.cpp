@@ -25,13 +25,6 @@ using test::run_command;
 
 result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 std::vector<std::string> presets() {
     std::vector<std::string> names;
     std::istringstream lines(run("plant --list").output);
@@ -49,7 +42,7 @@ TEST(plant_command, list_names_the_presets) {
 }
 
 TEST(plant_command, writes_a_glb_per_level_and_the_same_seed_gives_the_same_bytes) {
-    const fs::path dir = temp_dir("plant_levels");
+    const fs::path dir = test::fresh_temp_dir("plant_levels");
     std::uintmax_t previous = 0;
     for (const char* lod : {"far", "reduced", "full"}) {
         const fs::path out = dir / (std::string(lod) + ".glb");
@@ -88,7 +81,7 @@ TEST(plant_command, every_preset_exports_valid_gltf) {
     if (!fs::exists(tools / "node_modules" / "gltf-validator"))
         GTEST_SKIP() << "gltf-validator is not installed: run `./sylva test` or `cd tests/tools && "
                         "npm install`";
-    const fs::path dir = temp_dir("plant_valid");
+    const fs::path dir = test::fresh_temp_dir("plant_valid");
     for (const std::string& species : presets()) {
         SCOPED_TRACE(species);
         const fs::path out = dir / (species + ".glb");

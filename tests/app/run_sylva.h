@@ -2,9 +2,11 @@
 // Runs a shell command (or the sylva binary under test) and returns its exit code and merged
 // stdout/stderr, for tests of the command-line contract.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace sylva::test {
@@ -27,6 +29,16 @@ inline command_result run_command(const std::string& command) {
 // `arguments` after the binary built by this tree (SYLVA_BINARY, set by tests/CMakeLists.txt).
 inline command_result run_sylva(const std::string& arguments) {
     return run_command(std::string(SYLVA_BINARY) + " " + arguments);
+}
+
+// An empty folder of its own under the system's temporary directory (per process, so parallel
+// test runs do not meet), created afresh.
+inline std::filesystem::path fresh_temp_dir(const std::string& name) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("sylva_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
 }
 
 }  // namespace sylva::test
