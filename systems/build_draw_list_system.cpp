@@ -90,10 +90,10 @@ public:
         }
         d.prefixed = true;
         add_prefixes(parts, prefix, d, render_pass::opaque);
-        // A cascade samples the plant every k_shadow_sample_texels texels, but never finer than the viewer sees
-        // the plant (d'·r): its shadow lands about as far away as the plant stands. Only the
-        // cascades the plant casts into.
-        const double seen_m = m_sample_distance * double(d.distance);
+        // A cascade samples the plant every k_shadow_sample_texels texels, but never finer than
+        // k_shadow_sample_spacing times the viewer's sample distance there (d'·r): its shadow
+        // lands about as far away as the plant stands. Only the cascades the plant casts into.
+        const double seen_m = k_shadow_sample_spacing * m_sample_distance * double(d.distance);
         for (int c = 0; c < m_cascade_count; ++c) {
             if (!(d.pass_mask & (1u << unsigned(shadow_pass(c))))) continue;
             const double texel =

@@ -333,7 +333,8 @@ void renderer::draw_samples(const pass_commands& groups, int cascade) {
             if (primitive == primitive_kind::points) {
                 glEnable(GL_PROGRAM_POINT_SIZE);
                 glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
-                glUniform1f(glGetUniformLocation(program, "u_splat_plane"), m_splat_plane);
+                glUniform1f(glGetUniformLocation(program, "u_splat_plane"),
+                            shadow ? float(k_shadow_sample_spacing) * m_splat_plane : m_splat_plane);
                 // compute_shadow_prefix counts splats of c_p·s² texels' area where s, the sample
                 // distance, is k_shadow_sample_texels texels: s·√c_p = s·splat / d'.
                 glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
