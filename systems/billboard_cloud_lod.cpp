@@ -44,7 +44,9 @@ cloud_lod_choice choose_cloud_lod(const species_entry& species, float cloud_dist
 
 float cloud_alpha_threshold(float fade) {
     const float f = std::clamp(fade, 0.0f, 1.0f);
-    return k_cloud_threshold_gone + (k_cloud_threshold_shown - k_cloud_threshold_gone) * f;
+    if (f >= 0.75f) return 0.75f + (k_cloud_threshold_shown - 0.75f) * (f - 0.75f) / 0.25f;
+    if (f >= 0.5f) return 0.90f + (0.75f - 0.90f) * (f - 0.5f) / 0.25f;
+    return k_cloud_threshold_gone + (0.90f - k_cloud_threshold_gone) * f / 0.5f;
 }
 
 }  // namespace sylva

@@ -40,12 +40,20 @@ cloud_lod_choice choose_cloud_lod(const species_entry& species, float cloud_dist
 
 // Behrendt 2005 §2.3's modified alpha test: a cloud fragment is discarded when its colour page's
 // alpha (coverage x gaussian, models/billboard_cloud.h) is below this threshold, a piecewise-
-// linear function of the cloud's fade (so of distance): k_cloud_threshold_shown when drawn whole
-// (the least colour alpha a covered texel can have: coverage 0.5, the normal page's alpha test,
-// times the gaussian's e^-1 at a corner for σ = 1; so only coverage decides), rising
-// linearly to k_cloud_threshold_gone (above any alpha: nothing left) at fade 0. Billboards so
-// shrink toward their centres and vanish. Mirrored by cloud_alpha_threshold in
-// shaders/surface.frag; keep both in sync.
+// linear function of the cloud's fade, itself piecewise-linear in distance (choose_cloud_lod):
+//
+//   threshold  1.02 +.                        fade 0: above any alpha, nothing left
+//                   |   `--.__
+//              0.90 +         `--.__          the knots: coverage of broadleaf_hd's cloud at
+//              0.75 +               `.        30 m falls about linearly with fade (measured:
+//                   |                 `.      1, 0.82, 0.51, 0.25, 0 at fade 1, 3/4, 1/2,
+//              0.18 +                   `.    1/4, 0); billboards overlap, so their gaussian
+//                   +----+----+----+----+     edges go first without opening holes
+//                   0   1/4  1/2  3/4   1 fade
+//
+// At fade 1 the threshold is the least colour alpha a covered texel can have (coverage 0.5,
+// the normal page's alpha test, times the gaussian's e^-1 at a corner for σ = 1), so only
+// coverage decides. Mirrored in shaders/surface.frag; keep both in sync.
 inline constexpr float k_cloud_threshold_shown = 0.18f;
 inline constexpr float k_cloud_threshold_gone = 1.02f;
 float cloud_alpha_threshold(float fade);

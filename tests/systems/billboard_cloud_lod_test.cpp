@@ -91,13 +91,18 @@ TEST(billboard_cloud_lod, a_short_far_distance_pulls_the_cloud_band_in_so_bands_
                   representation::crossed_billboard, 2.0f * 0.1f / 9.0f);
 }
 
-TEST(billboard_cloud_lod, the_alpha_threshold_is_linear_in_the_fade_from_shown_to_gone) {
+TEST(billboard_cloud_lod, the_alpha_threshold_is_piecewise_linear_in_the_fade_from_shown_to_gone) {
+    // Knots (fade, threshold): (1, 0.18), (3/4, 0.75), (1/2, 0.90), (0, 1.02); halfway between.
     EXPECT_FLOAT_EQ(cloud_alpha_threshold(1.0f), 0.18f);
+    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.875f), 0.465f);
+    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.75f), 0.75f);
+    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.625f), 0.825f);
+    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.5f), 0.90f);
+    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.25f), 0.96f);
     EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.0f), 1.02f);
-    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.5f), 0.6f);
-    EXPECT_FLOAT_EQ(cloud_alpha_threshold(0.25f), 0.81f);
     EXPECT_FLOAT_EQ(cloud_alpha_threshold(2.0f), 0.18f);
     EXPECT_FLOAT_EQ(cloud_alpha_threshold(-1.0f), 1.02f);
+    for (float f = 0.0f; f < 1.0f; f += 0.01f) EXPECT_GE(cloud_alpha_threshold(f), cloud_alpha_threshold(f + 0.01f));
 }
 
 // The bake's colour alpha is coverage x gaussian: every texel the coverage test keeps
