@@ -2,9 +2,10 @@
 // Cross-fade between two representations during a transition (Behrendt 2005 §2.3: between the
 // billboard cloud and the polygonal plant near the viewer, and between the cloud and the two
 // crossed billboards far away). Sort-free: the primary representation (lod_state::current) is
-// drawn at `value`, the partner at `partner_value`; neither is blended. A billboard cloud fades
-// by raising its alpha threshold, every other representation by a stable screen-door dissolve
-// (shaders/surface.frag). Outside a transition band `partner` is none and `value` is 1.
+// drawn whole, the partner at `value`; neither is blended (the two overlap across a band, see
+// systems/billboard_cloud_lod.h, so the primary never needs to be partial). A billboard cloud
+// fades by raising its alpha threshold, every other representation by a stable screen-door
+// dissolve (shaders/surface.frag). Outside a transition band `partner` is none.
 // Writer: select_representation; read by build_draw_list.
 #include <cstdint>
 
@@ -13,10 +14,9 @@
 namespace sylva {
 
 struct fade_alpha {
-    float value = 1.0f;          // how much of the primary is drawn, 0 (nothing) .. 1 (all)
-    float partner_value = 0.0f;  // the same for the partner
+    float value = 0.0f;  // how much of the partner is drawn, 0 (nothing) .. 1 (all)
     representation partner = representation::none;  // drawn besides current during a band
 };
-static_assert(sizeof(fade_alpha) == 12);
+static_assert(sizeof(fade_alpha) == 8);
 
 }  // namespace sylva

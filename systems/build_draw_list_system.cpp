@@ -92,7 +92,7 @@ public:
                     mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
             // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
             // only names one for a visible plant).
-            if (lod.visible && fade.partner != representation::none && fade.partner_value > 0.0f) {
+            if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
                 d.partnered = true;
                 d.partner_mesh = mesh_of(species, fade.partner);
             }
@@ -143,7 +143,7 @@ instance_gpu make_instance(const camera& cam, const world_transform& t, const pl
     g.yaw = t.yaw;
     g.scale = t.scale;
     g.tint = float(p.tint) / 65535.0f * 2.0f - 1.0f;
-    g.fade = partner ? fade.partner_value : fade.value;
+    g.fade = partner ? fade.value : 1.0f;  // the primary is drawn whole
     g.texture_layer = library.species[static_cast<std::size_t>(p.species)].texture_layer;
     return g;
 }

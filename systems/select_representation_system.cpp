@@ -58,7 +58,7 @@ void select_representation_system::run(ecs::system_context<select_representation
             // The partner is only seen, never casts (only the primary does): a plant merely in
             // shadow range has none.
             if (lod.visible && choice.partner != representation::none && choice.partner_fade > 0.0f)
-                fade = {1.0f, choice.partner_fade, choice.partner};
+                fade = {choice.partner_fade, choice.partner};
         });
     });
 }

@@ -303,12 +303,14 @@ void renderer::draw_shadow_cascades() {
             draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)], billboard, false);
         }
         if (groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)].count) {
-            // Both sides of a billboard share its plane: either casts the same shadow, so no culling.
+            // Both sides of a billboard share its plane and its silhouette (the back image is
+            // the front's mirror): culling the side turned away from the sun leaves one quad
+            // per billboard and the same shadow, at half the alpha-tested fragments.
             const GLuint cloud = surface_program(material_kind::billboard_cloud, true);
             glUseProgram(cloud);
             glUniform1i(glGetUniformLocation(cloud, "u_cascade"), c);
             glBindTextureUnit(2, m_cloud_normal.id());
-            draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)], cloud, false);
+            draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)], cloud, true);
         }
         draw_samples(groups, c);
     }
