@@ -281,6 +281,20 @@ bench_configuration_spec points_lines(float sample_distance_px) {
     return c;
 }
 
+// Behrendt 2005 §2.3: meshes near, billboard clouds from 30 m x plant scale, crossed billboards
+// beyond the species' far distance, each switch cross-faded without sorting.
+bench_configuration_spec billboard_clouds(bool pre_lit) {
+    bench_configuration_spec c;
+    c.name = pre_lit ? "billboard_clouds_pre_lit" : "billboard_clouds";
+    c.family = "billboard_clouds";
+    c.description = std::string("billboard clouds (Behrendt 2005), ") + (pre_lit ? "pre-lit" : "normal-mapped") +
+                    ": full mesh nearer than 30 m x plant scale, cloud beyond, crossed billboard beyond "
+                    "the far distance, sort-free fades";
+    c.options.policy.mode = lod_policy::kind::billboard_clouds;
+    c.options.policy.cloud_pre_lit = pre_lit;
+    return c;
+}
+
 }  // namespace
 
 std::vector<bench_configuration_spec> default_bench_configurations() {
@@ -304,9 +318,12 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(single(representation::mesh_reduced, "every plant as its reduced mesh"));
     list.push_back(single(representation::mesh_far, "every plant as its far mesh"));
     list.push_back(single(representation::crossed_billboard, "every plant as one crossed-quad billboard"));
+    list.push_back(single(representation::billboard_cloud, "every plant as its billboard cloud (Behrendt 2005)"));
     list.push_back(baseline(50.0f, true));
     list.push_back(baseline(25.0f, false));
     list.push_back(baseline(100.0f, false));
+    list.push_back(billboard_clouds(false));
+    list.push_back(billboard_clouds(true));
     for (float d : {1.0f, 0.5f, 2.0f, 4.0f}) list.push_back(points_lines(d));
     // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
     // with about 1 M primitives).

@@ -25,8 +25,10 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
     command
         .add_option("--representation", options.representation,
                     "How plants are drawn (overrides lod.representation): mesh_levels (full, reduced and "
-                    "far meshes by distance) or points_lines (Deussen 2002 points and lines)")
-        ->check(CLI::IsMember({"mesh_levels", "points_lines"}));
+                    "far meshes by distance), points_lines (Deussen 2002 points and lines) or "
+                    "billboard_clouds (Behrendt 2005: meshes near, billboard clouds beyond "
+                    "lod.cloud_distance_m, crossed billboards far)")
+        ->check(CLI::IsMember({"mesh_levels", "points_lines", "billboard_clouds"}));
     command
         .add_option("--sample-distance", options.sample_distance_px,
                     "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "

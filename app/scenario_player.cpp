@@ -71,6 +71,12 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         policy.mode = lod_policy::kind::points_lines;
         policy.points = {s.lod.sample_distance_px, s.lod.splat_factor};
     }
+    if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels &&
+        s.lod.representation == "billboard_clouds") {
+        policy.mode = lod_policy::kind::billboard_clouds;
+        policy.cloud_distance_m = s.lod.cloud_distance_m;
+        policy.cloud_pre_lit = s.lod.cloud_lighting == "pre_lit";
+    }
     return policy;
 }
 
@@ -113,7 +119,7 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
     const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
-    m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines()});
+    m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines(), policy.uses_billboard_clouds()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
     // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines).
     const bool tile_sets = policy.mode == lod_policy::kind::points_lines && policy.tile_sets;
@@ -140,6 +146,8 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     if (context) {
         render::renderer_settings settings = renderer_settings_of(m_scenario);
         settings.id_buffer = options.id_buffer;
+        settings.fade_dissolve = policy.mode == lod_policy::kind::billboard_clouds;
+        settings.cloud_pre_lit = policy.cloud_pre_lit;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
         // Measured once per device and setting, then read from the cache: without a cache the
@@ -218,7 +226,7 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
     const tile_point_sets& tile_sets = m_world.resource<tile_point_sets>();
     const auto& tiles = m_world.table<tile>();
     auto plant_of = [&](std::uint32_t instance) {
-        if (!(instance & k_tile_item_bit)) return instance;
+        if (!(instance & k_tile_item_bit)) return instance & ~k_partner_item_bit;
         return tiles.data()[tile_sets.parts[instance & ~k_tile_item_bit].tile].first_plant;
     };
     const std::size_t width = m_scenario.width / samples;

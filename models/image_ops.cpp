@@ -25,4 +25,16 @@ image_rgba8 box_downsample(const image_rgba8& image, std::uint32_t factor) {
     return out;
 }
 
+image_rgba8 replicate_upsample(const image_rgba8& image, std::uint32_t factor) {
+    if (factor == 0) throw std::invalid_argument("replicate_upsample: factor must be at least 1");
+    image_rgba8 out;
+    out.width = image.width * factor;
+    out.height = image.height * factor;
+    out.texels.resize(std::size_t(out.width) * out.height * 4);
+    for (std::uint32_t y = 0; y < out.height; ++y)
+        for (std::uint32_t x = 0; x < out.width; ++x)
+            for (int c = 0; c < 4; ++c) out.at(x, y)[c] = image.at(x / factor, y / factor)[c];
+    return out;
+}
+
 }  // namespace sylva

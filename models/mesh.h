@@ -24,6 +24,11 @@ enum class material_kind : std::uint8_t {
     // A baked billboard (models/crossed_billboard.h): alpha-tested (discard below 0.5),
     // double-sided, normal-mapped; shaded like leaves with the normal from its normal map.
     billboard,
+    // A billboard-cloud quad (models/billboard_cloud.h, Behrendt 2005 §2.3): one-sided (drawn
+    // with back faces culled; each side of a billboard is its own quad), coverage alpha-tested
+    // from the normal page and faded by a distance threshold on the gaussian colour alpha.
+    // Appended last so serialized meshes keep the values above.
+    billboard_cloud,
 };
 
 // How a mesh's indices are read: triangle lists for every model mesh; point and line lists for

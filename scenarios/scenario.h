@@ -106,9 +106,14 @@
 //   }
 //   lod {         how plants are drawn at a distance
 //     representation     string  "mesh_levels"  "mesh_levels" (the species' full, reduced and
-//                                               far meshes by distance) or "points_lines"
+//                                               far meshes by distance), "points_lines"
 //                                               (Deussen 2002: prefixes of random-order
-//                                               triangles, points and lines, §5)
+//                                               triangles, points and lines, §5) or
+//                                               "billboard_clouds" (Behrendt 2005 §2.3: mesh
+//                                               levels near, the billboard cloud beyond
+//                                               cloud_distance_m, two crossed billboards beyond
+//                                               the species' far_distance_m, each switch
+//                                               cross-faded without sorting over ±15 %)
 //     sample_distance_px number  1      0.05 .. 64; d', the screen distance between samples
 //     splat_factor       number  1.3    1 .. 4; c_p of Eq. 1 (the paper: 1.2 .. 1.5)
 //     primitive_budget   number  0      0 .. 1e9; with points_lines, d' is adapted every frame
@@ -118,6 +123,13 @@
 //     target_frame_ms    number  0      0 .. 100000; the same for a GPU frame time (not
 //                                       deterministic: for walkthroughs); not with
 //                                       primitive_budget
+//     cloud_distance_m   number  30     0.1 .. 100000; billboard_clouds: nearer than this (times
+//                                       plant scale and lod_scale) plants are polygonal (the
+//                                       paper's "about 30 m"); capped per species at 0.74 x
+//                                       far_distance_m so the two fade bands never overlap
+//     cloud_lighting     string  "normal_mapped"  billboard_clouds: "normal_mapped" (the
+//                                       atlas's normal page) or "pre_lit" (each billboard lit
+//                                       with its plane's normal: the bake stores unlit colour)
 //   }
 #include <array>
 #include <cstdint>
@@ -247,7 +259,10 @@ struct eco_tile_settings {
 };
 
 // The representations `lod.representation` may name.
-inline constexpr std::array<std::string_view, 2> k_lod_representations{"mesh_levels", "points_lines"};
+inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_levels", "points_lines",
+                                                                        "billboard_clouds"};
+// The lighting variants `lod.cloud_lighting` may name (Behrendt 2005 §2.3; SH comes with §4).
+inline constexpr std::array<std::string_view, 2> k_cloud_lightings{"normal_mapped", "pre_lit"};
 
 struct lod_settings {
     std::string representation = "mesh_levels";
@@ -255,6 +270,8 @@ struct lod_settings {
     float splat_factor = 1.3f;
     double primitive_budget = 0.0;
     double target_frame_ms = 0.0;
+    float cloud_distance_m = 30.0f;
+    std::string cloud_lighting = "normal_mapped";
     bool operator==(const lod_settings&) const = default;
 };
 

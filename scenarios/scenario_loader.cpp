@@ -317,6 +317,8 @@ const field_table<lod_settings>& lod_fields() {
                                   .number("splat_factor", &t::splat_factor, {1.0, 4.0})
                                   .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
                                   .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
+                                  .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})
+                                  .choice("cloud_lighting", &t::cloud_lighting, k_cloud_lightings)
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

@@ -4,6 +4,11 @@
 // pass, so they cast leaf-shaped shadows); billboards take their normal from a normal map baked
 // from the plant (models/crossed_billboard.h) and are shaded like leaves with it.
 // WRITE_ID also writes which instance covers the pixel (measure/: coverage, lighting jumps).
+// MATERIAL_BILLBOARD_CLOUD draws billboard-cloud quads (models/billboard_cloud.h, Behrendt 2005
+// §2.3): alpha-tested on the normal page's coverage, faded by the modified alpha test on the
+// colour page's coverage x gaussian alpha (cloud_alpha_threshold), survivors opaque; lit with
+// the normal page (normal-mapped) or, with CLOUD_PRE_LIT, with the billboard's own plane.
+// FADE_DISSOLVE: the partner of a transition fades by a stable screen-door dissolve.
 // PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
 // each sample takes the texture's colour where it was baked (a slightly filtered level: a
 // splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
@@ -26,9 +31,38 @@ in vec3 v_normal;
 in vec2 v_uv;
 in float v_tint;
 flat in float v_layer;
-#ifdef MATERIAL_BILLBOARD
+#if defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
 flat in vec2 v_yaw_cos_sin;
-layout(binding = 2) uniform sampler2DArray u_normal_map;  // model-space normals * 0.5 + 0.5
+// Model-space normals * 0.5 + 0.5; for clouds, alpha is the coverage.
+layout(binding = 2) uniform sampler2DArray u_normal_map;
+#endif
+#if defined(FADE_DISSOLVE) || defined(MATERIAL_BILLBOARD_CLOUD)
+flat in float v_fade;
+#endif
+
+#ifdef MATERIAL_BILLBOARD_CLOUD
+// Behrendt 2005 §2.3: "a fragment is discarded, if its alpha value is below a threshold that is
+// calculated by a simple piecewise linear function of the fragments distance to the viewer".
+// The fade is piecewise-linear in distance (systems/billboard_cloud_lod.h); this maps it
+// through three linear pieces from the least alpha a covered texel has (drawn whole) to above
+// any alpha (gone). Mirrors cloud_alpha_threshold in systems/billboard_cloud_lod.cpp.
+float cloud_alpha_threshold(float fade) {
+    float f = clamp(fade, 0.0, 1.0);
+    if (f >= 0.75) return mix(0.75, 0.18, (f - 0.75) / 0.25);
+    if (f >= 0.5) return mix(0.90, 0.75, (f - 0.5) / 0.25);
+    return mix(1.02, 0.90, f / 0.5);
+}
+#endif
+
+#ifdef FADE_DISSOLVE
+// A stable hash in [0, 1) (Jarzynski & Olano 2020's PCG-style mix, for a screen-door pattern
+// that stays on the surface as the camera moves).
+float dissolve_hash(uint a, uint b) {
+    uint h = a * 747796405u + b * 2891336453u + 1u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float(h >> 8u) * (1.0 / 16777216.0);
+}
 #endif
 #ifdef WRITE_ID
 flat in uint v_instance;
@@ -49,6 +83,16 @@ flat in vec3 v_color;  // shaded per point in surface.vert
 #endif
 
 void main() {
+#ifdef FADE_DISSOLVE
+    // Whole triangles of a mesh, or texel-sized cells of a crossed billboard's quad, drop out in
+    // an order fixed per plant (the tint is the plant's random number): no sorting, no blending.
+#ifdef MATERIAL_BILLBOARD
+    uint cell = uint(floor(v_uv.x * 512.0)) + 512u * uint(floor(v_uv.y * 256.0));
+#else
+    uint cell = uint(gl_PrimitiveID);
+#endif
+    if (dissolve_hash(cell, floatBitsToUint(v_tint)) >= v_fade) discard;
+#endif
 #if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
     out_color = vec4(v_color, 1.0);
 #ifdef WRITE_ID
@@ -63,7 +107,13 @@ void main() {
 #else
     vec4 albedo = texture(u_albedo, vec3(v_uv, v_layer));
 #endif
-#if (defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)) && !defined(PRIMITIVE_SAMPLES)
+#if defined(MATERIAL_BILLBOARD_CLOUD)
+    vec4 normal_texel = texture(u_normal_map, vec3(v_uv, v_layer));
+    if (normal_texel.a < 0.5) discard;  // coverage, as the crossed billboard's test
+#ifndef SHADOW_PASS
+    if (albedo.a < cloud_alpha_threshold(v_fade)) discard;
+#endif
+#elif (defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)) && !defined(PRIMITIVE_SAMPLES)
     if (albedo.a < 0.5) discard;
 #endif
 #ifndef SHADOW_PASS
@@ -83,7 +133,14 @@ void main() {
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m);
     if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;
 #endif
-#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
+#if defined(MATERIAL_BILLBOARD_CLOUD) && !defined(CLOUD_PRE_LIT)
+    // Normal-mapped (Behrendt 2005 §2.3): the bake stored each side's normals toward its own
+    // viewer, and back faces are culled, so the rotated normal is the one seen.
+    float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
+    n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0));
+#endif
+    // CLOUD_PRE_LIT keeps n, the quad's plane normal toward its viewer.
+#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
     out_color = vec4(shade_surface(base, n, v_position, true), 1.0);
 #else
     out_color = vec4(shade_surface(base, n, v_position, false), 1.0);

@@ -40,8 +40,11 @@ flat out float v_layer;
 #ifdef WRITE_ID
 flat out uint v_instance;  // index into the frame's instance records (baseInstance + instance)
 #endif
-#ifdef MATERIAL_BILLBOARD
+#if defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
 flat out vec2 v_yaw_cos_sin;  // rotates the normal map's model-space normals into the world
+#endif
+#if defined(FADE_DISSOLVE) || defined(MATERIAL_BILLBOARD_CLOUD)
+flat out float v_fade;  // instance_gpu::fade: how much of this representation is drawn
 #endif
 
 void main() {
@@ -55,8 +58,11 @@ void main() {
     v_uv = in_uv;
     v_tint = in_instance_scale_tint_fade_layer.y;
     v_layer = in_instance_scale_tint_fade_layer.w;
-#ifdef MATERIAL_BILLBOARD
+#if defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
     v_yaw_cos_sin = vec2(c, s);
+#endif
+#if defined(FADE_DISSOLVE) || defined(MATERIAL_BILLBOARD_CLOUD)
+    v_fade = in_instance_scale_tint_fade_layer.z;
 #endif
 #ifdef WRITE_ID
     v_instance = uint(gl_BaseInstanceARB + gl_InstanceID);

@@ -27,12 +27,14 @@ struct plant_draws {
     std::array<std::array<prefix_draw, 2 * k_prefix_parts>, k_passes> prefixes{};
     std::array<std::uint32_t, k_passes> prefix_count{};
     bool prefixed = false;       // drawn as prefixes (`prefixes`), else one whole mesh per pass
+    bool partnered = false;      // the opaque pass also draws `partner_mesh` (fade_alpha)
+    std::uint16_t partner_mesh = 0;
     std::uint32_t pass_mask = 0;  // bit i: render_pass i
     float distance = 0.0f;
 
     std::uint32_t items_in(std::size_t pass) const { return prefixed ? prefix_count[pass] : 1u; }
     std::uint32_t items() const {
-        std::uint32_t n = 0;
+        std::uint32_t n = partnered ? 1u : 0u;
         for (std::uint32_t mask = pass_mask; mask; mask &= mask - 1) n += items_in(std::size_t(__builtin_ctz(mask)));
         return n;
     }
@@ -43,6 +45,7 @@ std::uint16_t mesh_of(const species_entry& species, representation r) {
         case representation::mesh_full: return species.mesh_full;
         case representation::mesh_reduced: return species.mesh_reduced;
         case representation::crossed_billboard: return species.mesh_billboard;
+        case representation::billboard_cloud: return species.mesh_cloud;
         default: return species.mesh_far;
     }
 }
@@ -69,7 +72,8 @@ public:
     // `parts` are the plant's point/line parts, or one octree cell's (§6.1), whose prefixes
     // `prefix` holds; a split plant itself has none (its cells are classified one by one).
     plant_draws classify(const world_transform& t, const bounds& b, const plant_instance& p,
-                         const lod_state& lod, const point_prefix& prefix, part_range parts) const {
+                         const lod_state& lod, const fade_alpha& fade, const point_prefix& prefix,
+                         part_range parts) const {
         plant_draws d;
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
@@ -86,6 +90,12 @@ public:
             for (int c = 0; c < m_cascade_count; ++c)
                 d.mesh[std::size_t(shadow_pass(c))] =
                     mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
+            // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
+            // only names one for a visible plant).
+            if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
+                d.partnered = true;
+                d.partner_mesh = mesh_of(species, fade.partner);
+            }
             return d;
         }
         d.prefixed = true;
@@ -127,13 +137,13 @@ private:
 };
 
 instance_gpu make_instance(const camera& cam, const world_transform& t, const plant_instance& p,
-                           const fade_alpha& fade, const species_library& library) {
+                           const fade_alpha& fade, bool partner, const species_library& library) {
     instance_gpu g;
     g.position = glm::vec3(t.position - cam.position);
     g.yaw = t.yaw;
     g.scale = t.scale;
     g.tint = float(p.tint) / 65535.0f * 2.0f - 1.0f;
-    g.fade = fade.value;
+    g.fade = partner ? fade.value : 1.0f;  // the primary is drawn whole
     g.texture_layer = library.species[static_cast<std::size_t>(p.species)].texture_layer;
     return g;
 }
@@ -159,6 +169,8 @@ bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, fl
 // Writes the items of one classified plant (or cell) for every pass it is drawn in.
 draw_item* write_items(const plant_draws& d, std::uint32_t plant, draw_item* out) {
     const std::uint32_t depth = quantize_depth(d.distance);
+    if (d.partnered)
+        *out++ = {make_sort_key({render_pass::opaque, d.partner_mesh, depth}), plant | k_partner_item_bit, 0};
     for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
         const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
         if (!d.prefixed) {
@@ -177,8 +189,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     const auto& library = ctx.resource<species_library>();
     const draw_builder builder(cam, library, ctx.resource<cascade_set>(), ctx.resource<lod_policy>(),
                                ctx.resource<primitive_costs>());
-    auto plants =
-        ctx.query<const world_transform, const bounds, const plant_instance, const lod_state, const point_prefix>();
+    auto plants = ctx.query<const world_transform, const bounds, const plant_instance, const lod_state,
+                            const fade_alpha, const point_prefix>();
     auto cells = ctx.query<const octree_cell, const cell_prefix>();
     const std::size_t n = plants.size();
     const std::size_t chunk = ecs::k_default_chunk;
@@ -193,7 +205,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         const std::size_t k = cell.plant;
         // A plant drawn any other way than as points is drawn whole, by the plant's own items.
         if (lods[k].current != representation::points) return plant_draws{};
-        return builder.classify(transforms[k], bounds_of[k], instances[k], lods[k], prefix.prefix,
+        return builder.classify(transforms[k], bounds_of[k], instances[k], lods[k], fade_alpha{}, prefix.prefix,
                                 parts_of(library.cells[cell.cell]));
     };
 
@@ -206,9 +218,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
+                                          const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
+                                          const point_prefix& prefix) {
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            count += builder.classify(t, b, p, lod, prefix, parts_of(species)).items();
+            count += builder.classify(t, b, p, lod, fade, prefix, parts_of(species)).items();
             if (lod.current == representation::points && lod.visible) ++point_plants[c];
         });
         offsets[c + 1] = count;
@@ -232,9 +245,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         draw_item* out = list.items.data() + offsets[c];
         std::uint32_t index = std::uint32_t(begin);
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod, const point_prefix& prefix) {
+                                          const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
+                                          const point_prefix& prefix) {
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            out = write_items(builder.classify(t, b, p, lod, prefix, parts_of(species)), index, out);
+            out = write_items(builder.classify(t, b, p, lod, fade, prefix, parts_of(species)), index, out);
             ++index;
         });
     });
@@ -269,7 +283,9 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
                 list.instances[i] = g;
                 continue;
             }
-            list.instances[i] = make_instance(cam, transforms[k], instances[k], fades[k], library);
+            const bool partner = (k & k_partner_item_bit) != 0;
+            const std::uint32_t plant = k & ~k_partner_item_bit;
+            list.instances[i] = make_instance(cam, transforms[plant], instances[plant], fades[plant], partner, library);
         }
     });
     build_batches(list, library);

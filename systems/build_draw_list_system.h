@@ -6,6 +6,9 @@
 // (compute_shadow_prefix), each item carrying its prefix length; the octree cells of big plants
 // (Deussen 2002 §6.1) add their own items, drawn with their plant's instance record; far eco
 // tiles drawn as their point sets (§6.2) add one item per set, marked with k_tile_item_bit.
+// During a billboard-cloud transition band (Behrendt 2005 §2.3, fade_alpha) a visible plant
+// adds one more opaque item for its partner representation, marked with k_partner_item_bit,
+// whose instance record carries the partner's fade; only the primary casts shadows.
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.

@@ -12,6 +12,10 @@
 
 namespace sylva {
 
+// draw_item::instance of a plant's partner representation during a transition (fade_alpha): the
+// plant's dense index with this bit set. Tile items use the bit above (k_tile_item_bit).
+inline constexpr std::uint32_t k_partner_item_bit = 0x40000000u;
+
 struct draw_item {
     std::uint64_t key = 0;
     std::uint32_t instance = 0;  // dense index of the plant in its component tables

@@ -16,6 +16,10 @@ struct lod_policy {
         single,           // every drawn plant as `near`
         hard_switch,      // `near` closer than switch_distance_m times the plant's scale, else `far`
         points_lines,     // every plant as prefixes of its triangles, points and lines (§5)
+        // Behrendt 2005 §2.3: the mesh levels near, the billboard cloud beyond cloud_distance_m,
+        // the crossed billboard beyond the species' far distance, cross-faded over bands
+        // (systems/billboard_cloud_lod.h).
+        billboard_clouds,
     };
     kind mode = kind::distance_levels;
     representation near = representation::mesh_full;
@@ -26,12 +30,25 @@ struct lod_policy {
     point_line_quality points{};
     // Deussen 2002 §6.2: far eco tiles drawn as their aggregated sets (points_lines only).
     bool tile_sets = true;
+    // Behrendt 2005 §2.3, "we have to blend to the complex representation, if a typical tree is
+    // closer than 30 meters" (billboard_clouds only; times plant scale and lod_scale).
+    float cloud_distance_m = 30.0f;
+    // The clouds' lighting variant (§2.3): normal-mapped from the normal page, or pre-lit. The
+    // bake stores unlit colour, so "pre-lit" here shades each billboard with its plane's normal
+    // toward the eye: the lighting of a pre-lit atlas without its baked shadows.
+    bool cloud_pre_lit = false;
 
     // True when select_representation can choose the point/line representation: the scene then
     // bakes and uploads it (and does not otherwise).
     bool uses_point_lines() const {
         return mode == kind::points_lines ||
                (mode != kind::distance_levels && (near == representation::points || far == representation::points));
+    }
+    // The same for billboard clouds: the scene then bakes them and uploads their atlases.
+    bool uses_billboard_clouds() const {
+        return mode == kind::billboard_clouds ||
+               ((mode == kind::single || mode == kind::hard_switch) &&
+                (near == representation::billboard_cloud || far == representation::billboard_cloud));
     }
 };
 

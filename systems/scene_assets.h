@@ -21,10 +21,14 @@ struct species_entry {
     std::uint16_t mesh_reduced = 0;
     std::uint16_t mesh_far = 0;
     std::uint16_t mesh_billboard = 0;  // the crossed billboard's two quads (material billboard)
+    // The billboard cloud (Behrendt 2005 §2, material billboard_cloud), when the scene's LOD
+    // policy can select it; 0 triangles otherwise.
+    std::uint16_t mesh_cloud = 0;
     std::uint32_t triangles_full = 0;
     std::uint32_t triangles_reduced = 0;
     std::uint32_t triangles_far = 0;
     std::uint32_t triangles_billboard = 0;
+    std::uint32_t triangles_cloud = 0;
     float reduced_distance_m = 60.0f;  // beyond this (times scale and lod_scale): reduced mesh
     float far_distance_m = 200.0f;     // beyond this: far mesh
     float max_distance_m = 1500.0f;    // beyond this: not drawn
@@ -88,6 +92,12 @@ struct scene_assets {
     // order of leaf_textures, all the same size; the normal atlas holds model-space normals.
     std::vector<image_rgba8> billboard_albedo;
     std::vector<image_rgba8> billboard_normal;
+    // The billboard clouds' atlas pages (models/billboard_cloud.h: colour with coverage x
+    // gaussian alpha, model-space normals with coverage alpha), one layer per species in the same
+    // order, all the size of the largest (smaller atlases replicated by an integer factor); empty
+    // when the scene draws no clouds. SH pages (Behrendt 2005 §4) will join as further arrays.
+    std::vector<image_rgba8> cloud_albedo;
+    std::vector<image_rgba8> cloud_normal;
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
+#include "systems/billboard_cloud_lod.h"
 
 namespace sylva {
 
@@ -21,6 +22,8 @@ representation choose_representation(const lod_policy& policy, const species_ent
         // The point/line representation covers every distance: its prefixes shrink with the
         // projected size (update_point_prefix), down to polygons near and a few points far.
         case lod_policy::kind::points_lines: return representation::points;
+        case lod_policy::kind::billboard_clouds:
+            return choose_cloud_lod(species, policy.cloud_distance_m, distance_m, scale, lod_scale).primary;
         case lod_policy::kind::hard_switch:
             // A NaN distance compares false and so takes the far side, like the distance levels.
             return distance_m < policy.switch_distance_m * scale * lod_scale ? policy.near : policy.far;
@@ -33,18 +36,29 @@ void select_representation_system::run(ecs::system_context<select_representation
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
     const lod_policy& policy = ctx.resource<lod_policy>();
-    auto plants = ctx.query<const world_transform, const plant_instance, lod_state>();
+    auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
     ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
-                                          lod_state& lod) {
+                                          lod_state& lod, fade_alpha& fade) {
             lod.previous = lod.current;
+            fade = {};
             if (!lod.visible && !lod.in_shadow_range) {
                 lod.current = representation::none;
                 return;
             }
             const float distance = float(glm::length(t.position - cam.position));
-            lod.current = choose_representation(policy, library[static_cast<std::size_t>(p.species)], distance,
-                                                t.scale, cam.lod_scale);
+            const species_entry& species = library[static_cast<std::size_t>(p.species)];
+            if (policy.mode != lod_policy::kind::billboard_clouds) {
+                lod.current = choose_representation(policy, species, distance, t.scale, cam.lod_scale);
+                return;
+            }
+            const cloud_lod_choice choice =
+                choose_cloud_lod(species, policy.cloud_distance_m, distance, t.scale, cam.lod_scale);
+            lod.current = choice.primary;
+            // The partner is only seen, never casts (only the primary does): a plant merely in
+            // shadow range has none.
+            if (lod.visible && choice.partner != representation::none && choice.partner_fade > 0.0f)
+                fade = {choice.partner_fade, choice.partner};
         });
     });
 }

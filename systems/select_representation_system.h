@@ -1,9 +1,12 @@
 #pragma once
 // Chooses each visible plant's representation from its distance to the camera (scaled by the
 // plant's size and the camera's lod_scale): the full mesh near, the reduced mesh beyond the
-// species' reduced distance, the far mesh beyond its far distance. The point/line, billboard-cloud and LoDF work add their own choices
-// here. Records the previous choice so transitions can fade between them.
+// species' reduced distance, the far mesh beyond its far distance. Under other policies: points
+// and lines (Deussen 2002), or billboard clouds with their transition bands (Behrendt 2005 §2.3,
+// systems/billboard_cloud_lod.h), whose partner and fades it writes into fade_alpha. Records
+// the previous choice so measurements can count switches.
 #include "components/camera.h"
+#include "components/fade_alpha.h"
 #include "components/lod_state.h"
 #include "components/plant_instance.h"
 #include "components/transform.h"
@@ -24,7 +27,7 @@ struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";
     static constexpr ecs::phase k_phase = ecs::phase::select;
     using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy>;
-    using writes = ecs::writes<lod_state>;
+    using writes = ecs::writes<lod_state, fade_alpha>;
     static void run(ecs::system_context<select_representation_system>& ctx);
 };
 

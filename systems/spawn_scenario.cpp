@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
+#include <stdexcept>
+#include <string>
 
 #include "components/bounds.h"
 #include "components/camera.h"
@@ -15,6 +17,7 @@
 #include "components/sun.h"
 #include "components/transform.h"
 #include "models/density.h"
+#include "models/image_ops.h"
 #include "models/placement.h"
 #include "models/random.h"
 #include "models/textures.h"
@@ -70,6 +73,25 @@ void add_mesh(scene_assets& assets, mesh_data mesh, representation drawn_as, std
     assets.meshes.push_back(std::move(mesh));
 }
 
+// Texture array layers must share a size: small plants' atlases (512 x 256) are replicated to
+// the trees' (1024 x 512). The bake sizes them all 2:1 by powers of two, so the factor is an
+// integer; anything else is a bake this runtime does not know.
+void match_cloud_atlas_sizes(std::vector<image_rgba8>& pages) {
+    std::uint32_t width = 0, height = 0;
+    for (const auto& page : pages) {
+        width = std::max(width, page.width);
+        height = std::max(height, page.height);
+    }
+    for (auto& page : pages) {
+        const std::uint32_t factor = page.width ? width / page.width : 0;
+        if (factor == 0 || page.width * factor != width || page.height * factor != height)
+            throw std::runtime_error("billboard cloud atlas " + std::to_string(page.width) + "x" +
+                                     std::to_string(page.height) + " is not an integer scale of the largest (" +
+                                     std::to_string(width) + "x" + std::to_string(height) + ")");
+        if (factor > 1) page = replicate_upsample(page, factor);
+    }
+}
+
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
                  const scene_needs& needs) {
     const species_settings& settings = s.species[index];
@@ -79,12 +101,18 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     crossed_billboard billboard = load_species_billboard(settings, seed, model, cache);
     point_line_model point_lines;
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
+    billboard_cloud cloud;
+    if (needs.billboard_clouds) cloud = load_species_billboard_cloud(settings, seed, model, cache);
     // Every species is scaled to the scenario's height_m, generated or imported alike; the
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
     const float scale = settings.height_m / std::max(natural_height, 1e-3f);
     for (auto& lod : model.lods) scale_mesh(lod, scale);
     scale_mesh(billboard.mesh, scale);
+    scale_mesh(cloud.mesh, scale);
+    // The bake labels cloud quads like crossed billboards; the renderer draws them apart
+    // (one-sided, distance-threshold fade).
+    for (auto& sub : cloud.mesh.submeshes) sub.material = material_kind::billboard_cloud;
 
     species_entry entry;
     entry.name = settings.name;
@@ -100,6 +128,12 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     add_mesh(assets, std::move(billboard.mesh), representation::crossed_billboard, entry.mesh_billboard,
              entry.triangles_billboard);
     if (needs.point_lines) add_point_line_parts(assets, entry, point_lines, scale, settings.importance);
+    if (needs.billboard_clouds) {
+        add_mesh(assets, std::move(cloud.mesh), representation::billboard_cloud, entry.mesh_cloud,
+                 entry.triangles_cloud);
+        assets.cloud_albedo.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::albedo)]));
+        assets.cloud_normal.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::normal)]));
+    }
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
@@ -123,6 +157,8 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     }
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
     for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
+    match_cloud_atlas_sizes(assets.cloud_albedo);
+    match_cloud_atlas_sizes(assets.cloud_normal);
     return assets;
 }
 

@@ -13,6 +13,7 @@ namespace sylva {
 // can select (DESIGN §2, "skip what a scene doesn't need").
 struct scene_needs {
     bool point_lines = false;  // Deussen 2002 points and lines (systems/point_line_assets.h)
+    bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/billboard_cloud.h)
 };
 
 // `cache` may be null: species models are then generated or imported every time.

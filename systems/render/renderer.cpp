@@ -30,7 +30,10 @@ constexpr std::uint32_t vertices_per(primitive_kind p) {
 constexpr GLenum gl_mode(primitive_kind p) {
     return p == primitive_kind::triangles ? GL_TRIANGLES : (p == primitive_kind::lines ? GL_LINES : GL_POINTS);
 }
-constexpr bool alpha_tested(material_kind m) { return m == material_kind::leaf || m == material_kind::billboard; }
+constexpr bool alpha_tested(material_kind m) {
+    return m == material_kind::leaf || m == material_kind::billboard || m == material_kind::billboard_cloud;
+}
+static_assert(std::size_t(material_kind::billboard_cloud) == 4, "renderer k_materials counts material_kind");
 
 void setup_instance_attributes(GLuint vao) {
     // instance_gpu (systems/draw_list.h): two vec4 attributes, advanced once per instance.
@@ -93,11 +96,17 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         m_billboard_albedo = make_texture_array(assets.billboard_albedo, false, true);
         m_billboard_normal = make_texture_array(assets.billboard_normal, false);
     }
+    if (!assets.cloud_albedo.empty()) {
+        // The colour page's alpha is filtered plainly: the fade threshold reads the gaussian
+        // in it. The normal page's alpha is the coverage the alpha test reads, kept per mip.
+        m_cloud_albedo = make_texture_array(assets.cloud_albedo, false);
+        m_cloud_normal = make_texture_array(assets.cloud_normal, false, true);
+    }
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
     for (const auto* images : {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
-                               &assets.billboard_normal})
+                               &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal})
         for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
     m_static_upload_bytes += assets.ground_texture.texels.size();
     glEnable(GL_DEPTH_TEST);
@@ -121,6 +130,14 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
     if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
     if (material == material_kind::billboard) source.defines.push_back("MATERIAL_BILLBOARD");
+    if (material == material_kind::billboard_cloud) {
+        source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
+        if (m_settings.cloud_pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
+    }
+    // Partners of a transition are drawn in the view only, and only as whole meshes.
+    if (!shadow && m_settings.fade_dissolve && primitive == primitive_kind::triangles &&
+        material != material_kind::ground && material != material_kind::billboard_cloud)
+        source.defines.push_back("FADE_DISSOLVE");
     if (!shadow && m_settings.id_buffer) source.defines.push_back("WRITE_ID");
     if (shadow) {
         source.defines.push_back("SHADOW_PASS");
@@ -285,6 +302,16 @@ void renderer::draw_shadow_cascades() {
             glBindTextureUnit(0, m_billboard_albedo.id());
             draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)], billboard, false);
         }
+        if (groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)].count) {
+            // Both sides of a billboard share its plane and its silhouette (the back image is
+            // the front's mirror): culling the side turned away from the sun leaves one quad
+            // per billboard and the same shadow, at half the alpha-tested fragments.
+            const GLuint cloud = surface_program(material_kind::billboard_cloud, true);
+            glUseProgram(cloud);
+            glUniform1i(glGetUniformLocation(cloud, "u_cascade"), c);
+            glBindTextureUnit(2, m_cloud_normal.id());
+            draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)], cloud, true);
+        }
         draw_samples(groups, c);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -314,6 +341,14 @@ void renderer::draw_opaque() {
         glBindTextureUnit(2, m_billboard_normal.id());
         draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)],
                    surface_program(material_kind::billboard, false), false);
+    }
+    if (groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)].count) {
+        // One-sided quads (models/billboard_cloud.h): each side of a billboard shows only to
+        // its own viewer.
+        glBindTextureUnit(0, m_cloud_albedo.id());
+        glBindTextureUnit(2, m_cloud_normal.id());
+        draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)],
+                   surface_program(material_kind::billboard_cloud, false), true);
     }
     draw_samples(groups, -1);
     m_timer.end();

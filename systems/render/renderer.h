@@ -37,6 +37,12 @@ struct renderer_settings {
     // Measurement: also write which instance covers each pixel (read_ids). Costs one more
     // 32-bit write per shaded fragment, so only the bench asks for it.
     bool id_buffer = false;
+    // Billboard-cloud transitions (Behrendt 2005 §2.3): surfaces other than clouds take the
+    // screen-door dissolve by their instance's fade. Only scenes whose LOD policy fades ask for
+    // it: a discard in the bark shader costs early depth rejection on a software rasteriser.
+    bool fade_dissolve = false;
+    // The clouds' pre-lit variant (lod_policy::cloud_pre_lit), else normal-mapped.
+    bool cloud_pre_lit = false;
 };
 
 // What one frame draws, gathered by the submit system from the ECS.
@@ -86,7 +92,8 @@ private:
         std::uint32_t count = 0;
     };
     // Indirect command groups per pass (shadow cascades and opaque), material and primitive.
-    static constexpr std::size_t k_materials = 4;   // material_kind: bark, leaf, ground, billboard
+    // material_kind: bark, leaf, ground, billboard, billboard_cloud
+    static constexpr std::size_t k_materials = 5;
     static constexpr std::size_t k_primitives = 3;  // primitive_kind: triangles, points, lines
     static constexpr std::size_t k_groups_per_pass = k_materials * k_primitives;
     using pass_commands = std::array<command_range, k_groups_per_pass>;
@@ -128,6 +135,8 @@ private:
     gl_texture m_ground_texture;
     gl_texture m_billboard_albedo;  // crossed billboards: colour with coverage alpha
     gl_texture m_billboard_normal;  // and model-space normals
+    gl_texture m_cloud_albedo;      // billboard clouds: colour with coverage x gaussian alpha
+    gl_texture m_cloud_normal;      // and model-space normals with coverage alpha
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::optional<sky_model> m_sky_drawn;  // what m_sky_texture holds

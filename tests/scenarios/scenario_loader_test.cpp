@@ -319,7 +319,8 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/sun/keyframes/0/time", "t, elevation_deg, azimuth_deg"},
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
-        {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms"},
+        {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
+                   "cloud_distance_m, cloud_lighting"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -700,9 +701,27 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
     EXPECT_EQ(load(minimal()).lod.representation, "mesh_levels");
 }
 
+TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {
+    json j = minimal();
+    j["lod"] = {{"representation", "billboard_clouds"}, {"cloud_distance_m", 45}, {"cloud_lighting", "pre_lit"}};
+    const scenario s = load(j);
+    EXPECT_EQ(s.lod.representation, "billboard_clouds");
+    EXPECT_EQ(s.lod.cloud_distance_m, 45.0f);
+    EXPECT_EQ(s.lod.cloud_lighting, "pre_lit");
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    const scenario d = load(minimal());
+    EXPECT_EQ(d.lod.cloud_distance_m, 30.0f);  // Behrendt 2005 §2.3: "closer than 30 meters"
+    EXPECT_EQ(d.lod.cloud_lighting, "normal_mapped");
+}
+
 TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/representation", "voxels"),
-                 {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines", "\"voxels\""});
+                 {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines, billboard_clouds",
+                  "\"voxels\""});
+    expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
+                 {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});
+    expect_error(set(minimal(), "/lod/cloud_lighting", "sh"),
+                 {"/lod/cloud_lighting", "unknown value; expected one of: normal_mapped, pre_lit", "\"sh\""});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),
                  {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
     expect_error(set(minimal(), "/lod/splat_factor", 0.5),

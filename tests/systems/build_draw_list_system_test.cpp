@@ -20,12 +20,14 @@ struct three_plants {
     ecs::world world;
     ecs::schedule schedule;
 
-    three_plants() {
+    explicit three_plants(std::vector<double> zs = {-10.0, -100.0, -300.0}, double camera_y = 5.0) {
         species_library library;
         species_entry oak;
         oak.mesh_full = 1;
         oak.mesh_reduced = 2;
         oak.mesh_far = 3;
+        oak.mesh_billboard = 4;
+        oak.mesh_cloud = 5;
         oak.reduced_distance_m = 50.0f;
         oak.far_distance_m = 200.0f;
         oak.bounding_radius = 5.0f;
@@ -33,8 +35,9 @@ struct three_plants {
         oak.texture_layer = 0.0f;
         library.species = {oak};
         library.meshes = {{100, representation::none}, {6000, representation::mesh_full},
-                          {800, representation::mesh_reduced}, {150, representation::mesh_far}};
-        for (double z : {-10.0, -100.0, -300.0}) {
+                          {800, representation::mesh_reduced}, {150, representation::mesh_far},
+                          {4, representation::crossed_billboard}, {400, representation::billboard_cloud}};
+        for (double z : zs) {
             const ecs::entity e = world.create();
             world.emplace<world_transform>(e, {{0.0, 0.0, z}, 0.0f, 1.0f});
             world.emplace<bounds>(e, {5.0f, 5.0f});
@@ -45,7 +48,7 @@ struct three_plants {
         }
         world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
         camera cam;
-        cam.position = {0.0, 5.0, 0.0};
+        cam.position = {0.0, camera_y, 0.0};
         cam.far_plane = 1000.0f;
         derive_camera_matrices(cam);
         world.emplace<camera>(world.create(), cam);
@@ -113,6 +116,37 @@ TEST(build_draw_list, plants_behind_the_camera_are_not_drawn_but_may_cast_shadow
     const draw_list& list = scene.world.resource<draw_list>();
     EXPECT_TRUE(meshes_in(list, render_pass::opaque).empty());
     EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_0).size(), 3u);
+}
+
+// Behrendt 2005 §2.3 under the billboard-cloud policy: during a band the visible plant adds its
+// partner in the opaque pass only (marked, with the partner's fade in its instance record);
+// shadows come from the primaries alone.
+TEST(build_draw_list, billboard_cloud_bands_add_faded_partners_to_the_view_only) {
+    // At 10 m polygons; 33 m the cloud with the full mesh fading out (1/3); 100 m the cloud;
+    // 176 m the cloud with the crossed billboard fading in (0.2); 300 m the crossed billboard.
+    three_plants scene({-10.0, -33.0, -100.0, -176.0, -300.0}, 0.0);
+    lod_policy policy;
+    policy.mode = lod_policy::kind::billboard_clouds;
+    scene.world.set_resource(policy);
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    EXPECT_EQ(meshes_in(list, render_pass::opaque), (std::vector<std::uint16_t>{1, 1, 4, 4, 5, 5, 5}));
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_0), (std::vector<std::uint16_t>{1, 4, 5, 5, 5}));
+    std::vector<std::pair<std::uint16_t, float>> partners;
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const bool partner = (list.items[i].instance & k_partner_item_bit) != 0;
+        if (partner) partners.emplace_back(decode_sort_key(list.items[i].key).mesh, list.instances[i].fade);
+        else EXPECT_EQ(list.instances[i].fade, 1.0f);
+    }
+    ASSERT_EQ(partners.size(), 2u);
+    EXPECT_EQ(partners[0].first, 1);
+    EXPECT_NEAR(partners[0].second, 1.0f / 3.0f, 1e-4f);
+    EXPECT_EQ(partners[1].first, 4);
+    EXPECT_NEAR(partners[1].second, 0.2f, 1e-4f);
+    const auto& lod = scene.world.table<lod_state>();
+    EXPECT_EQ(lod.data()[1].current, representation::billboard_cloud);
+    EXPECT_EQ(lod.data()[4].current, representation::crossed_billboard);
 }
 
 }  // namespace
