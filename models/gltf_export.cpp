@@ -89,6 +89,28 @@ void add_single_node_scene(tinygltf::Model& model, const std::string& name) {
     model.defaultScene = 0;
 }
 
+// The interleaved vertex buffer of a mesh (any vertex type with position, normal and uv
+// members), its view and the position, normal and uv accessors (positions bounded by lo, hi).
+struct vertex_accessors {
+    int view = -1, position = -1, normal = -1, uv = -1;
+};
+template <typename Vertex>
+vertex_accessors add_vertex_accessors(tinygltf::Model& model, const std::vector<Vertex>& vertices, glm::vec3 lo,
+                                      glm::vec3 hi) {
+    vertex_accessors a;
+    a.view = add_view(model, vertices.data(), vertices.size() * sizeof(Vertex), TINYGLTF_TARGET_ARRAY_BUFFER,
+                      int(sizeof(Vertex)));
+    a.position = add_accessor(model, a.view, offsetof(Vertex, position), vertices.size(),
+                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    model.accessors[std::size_t(a.position)].minValues = {lo.x, lo.y, lo.z};
+    model.accessors[std::size_t(a.position)].maxValues = {hi.x, hi.y, hi.z};
+    a.normal = add_accessor(model, a.view, offsetof(Vertex, normal), vertices.size(), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                            TINYGLTF_TYPE_VEC3);
+    a.uv = add_accessor(model, a.view, offsetof(Vertex, uv), vertices.size(), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                        TINYGLTF_TYPE_VEC2);
+    return a;
+}
+
 }  // namespace
 
 void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesystem::path& file) {
@@ -108,16 +130,7 @@ void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesy
         v.normal = std::isfinite(len) && len > 1e-6f ? v.normal / len : glm::vec3(0, 1, 0);
         lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
     }
-    const int vertex_view = add_view(model, vertices.data(), vertices.size() * sizeof(vertex),
-                                     TINYGLTF_TARGET_ARRAY_BUFFER, int(sizeof(vertex)));
-    const int position = add_accessor(model, vertex_view, 0, vertices.size(),
-                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
-    model.accessors[std::size_t(position)].minValues = {lo.x, lo.y, lo.z};
-    model.accessors[std::size_t(position)].maxValues = {hi.x, hi.y, hi.z};
-    const int normal = add_accessor(model, vertex_view, offsetof(vertex, normal), vertices.size(),
-                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
-    const int uv = add_accessor(model, vertex_view, offsetof(vertex, uv), vertices.size(),
-                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2);
+    const auto [vertex_view, position, normal, uv] = add_vertex_accessors(model, vertices, lo, hi);
     const int index_view = add_view(model, mesh.indices.data(), mesh.indices.size() * 4,
                                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
 
@@ -182,16 +195,7 @@ void export_billboard_cloud_glb(const billboard_cloud& cloud, const std::string&
             lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
         }
     }
-    const int vertex_view = add_view(model, vertices.data(), vertices.size() * sizeof(cloud_vertex),
-                                     TINYGLTF_TARGET_ARRAY_BUFFER, int(sizeof(cloud_vertex)));
-    const int position = add_accessor(model, vertex_view, offsetof(cloud_vertex, position), vertices.size(),
-                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
-    model.accessors[std::size_t(position)].minValues = {lo.x, lo.y, lo.z};
-    model.accessors[std::size_t(position)].maxValues = {hi.x, hi.y, hi.z};
-    const int normal = add_accessor(model, vertex_view, offsetof(cloud_vertex, normal), vertices.size(),
-                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
-    const int uv = add_accessor(model, vertex_view, offsetof(cloud_vertex, uv), vertices.size(),
-                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2);
+    const auto [vertex_view, position, normal, uv] = add_vertex_accessors(model, vertices, lo, hi);
     const int tangent = add_accessor(model, vertex_view, offsetof(cloud_vertex, tangent), vertices.size(),
                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4);
     const int index_view = add_view(model, mesh.indices.data(), mesh.indices.size() * 4,

@@ -61,16 +61,12 @@ image_rgba8 solid(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
     return {2, 2, std::vector<std::uint8_t>{r, g, b, 255, r, g, b, 255, r, g, b, 255, r, g, b, 255}};
 }
 
-// One opaque 2 m x 1 m card in a tilted plane, as a one-leaf plant: one cluster with a flat box,
-// so one billboard exactly over the card, facing the way the card does (or away).
-TEST(billboard_cloud, a_flat_card_gets_one_billboard_in_its_own_plane) {
+// A one-leaf plant: an opaque 2 m x 1 m card from `at` along `right` (2 m) and `up` (1 m), every
+// vertex normal `n`, baked as one cluster into a 64 x 32 atlas.
+billboard_cloud bake_one_card(glm::vec3 at, glm::vec3 right, glm::vec3 up, glm::vec3 n) {
     plant_model plant;
     plant.name = "card";
-    const glm::vec3 right = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));
-    const glm::vec3 up = glm::normalize(glm::vec3(0.0f, 1.0f, 0.3f) - right * glm::dot(glm::vec3(0.0f, 1.0f, 0.3f), right));
-    const glm::vec3 at(3.0f, 1.0f, 0.0f);
     mesh_data& mesh = plant.lods[0];
-    const glm::vec3 n = glm::cross(right, up);
     mesh.vertices = {{at, n, {0, 1}}, {at + 2.0f * right, n, {1, 1}}, {at + 2.0f * right + up, n, {1, 0}}, {at + up, n, {0, 0}}};
     mesh.indices = {0, 1, 2, 0, 2, 3};
     mesh.submeshes = {{0, 6, material_kind::leaf}};
@@ -80,7 +76,17 @@ TEST(billboard_cloud, a_flat_card_gets_one_billboard_in_its_own_plane) {
     s.clustering.target_clusters = 1;
     s.atlas_width = 64;
     s.atlas_height = 32;
-    const billboard_cloud cloud = bake_billboard_cloud(plant, s);
+    return bake_billboard_cloud(plant, s);
+}
+
+// One opaque 2 m x 1 m card in a tilted plane, as a one-leaf plant: one cluster with a flat box,
+// so one billboard exactly over the card, facing the way the card does (or away).
+TEST(billboard_cloud, a_flat_card_gets_one_billboard_in_its_own_plane) {
+    const glm::vec3 right = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));
+    const glm::vec3 up = glm::normalize(glm::vec3(0.0f, 1.0f, 0.3f) - right * glm::dot(glm::vec3(0.0f, 1.0f, 0.3f), right));
+    const glm::vec3 at(3.0f, 1.0f, 0.0f);
+    const glm::vec3 n = glm::cross(right, up);
+    const billboard_cloud cloud = bake_one_card(at, right, up, n);
     ASSERT_EQ(cloud.clusters.size(), 1u);
     ASSERT_EQ(cloud.billboards.size(), 1u);
     const billboard_plane& p = cloud.billboards[0].plane;
@@ -105,21 +111,10 @@ TEST(billboard_cloud, a_flat_card_gets_one_billboard_in_its_own_plane) {
 // dot(n, normal)) on the front half and the same with the back side's frame on the back half,
 // where the baker turned the normal toward that viewer.
 TEST(billboard_cloud, the_tangent_space_normal_page_uses_each_side_s_own_frame) {
-    plant_model plant;
     const glm::vec3 right(1.0f, 0.0f, 0.0f), up(0.0f, 1.0f, 0.0f), facing(0.0f, 0.0f, 1.0f);
     const glm::vec3 n = glm::normalize(facing + 0.5f * right);
     const glm::vec3 at(2.0f, 0.0f, 3.0f);
-    plant.lods[0].vertices = {{at, n, {0, 1}}, {at + 2.0f * right, n, {1, 1}}, {at + 2.0f * right + up, n, {1, 0}},
-                              {at + up, n, {0, 0}}};
-    plant.lods[0].indices = {0, 1, 2, 0, 2, 3};
-    plant.lods[0].submeshes = {{0, 6, material_kind::leaf}};
-    plant.leaf_texture = solid(40, 160, 30);
-    plant.bark_texture = solid(120, 80, 40);
-    billboard_cloud_settings s;
-    s.clustering.target_clusters = 1;
-    s.atlas_width = 64;
-    s.atlas_height = 32;
-    const billboard_cloud cloud = bake_billboard_cloud(plant, s);
+    const billboard_cloud cloud = bake_one_card(at, right, up, n);
     ASSERT_EQ(cloud.billboards.size(), 1u);
     const image_rgba8 page = tangent_space_normal_page(cloud);
     const cloud_billboard& b = cloud.billboards[0];
