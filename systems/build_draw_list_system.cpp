@@ -16,15 +16,18 @@ namespace {
 //
 // A plant drawn as points and lines (Deussen 2002 §5.3) is instead up to two prefixes per part,
 // its first triangles and its first points or lines, the same in every pass it is drawn in.
+// No member initialisers: plant_draws leaves its prefix slots uninitialised (only the first
+// prefix_count of each pass are written and read), because zeroing 320 bytes twice per plant
+// was most of build_draw_list's time with a million plants.
 struct prefix_draw {
-    std::uint16_t mesh = 0;
-    std::uint32_t count = 0;
+    std::uint16_t mesh;
+    std::uint32_t count;
 };
 // In a shadow cascade the prefixes are the cascade's own: its texel is the sample distance there.
 constexpr std::size_t k_passes = std::size_t(render_pass::count);
 struct plant_draws {
     std::array<std::uint16_t, k_passes> mesh{};
-    std::array<std::array<prefix_draw, 2 * k_prefix_parts>, k_passes> prefixes{};
+    std::array<std::array<prefix_draw, 2 * k_prefix_parts>, k_passes> prefixes;  // [0, prefix_count) set
     std::array<std::uint32_t, k_passes> prefix_count{};
     bool prefixed = false;       // drawn as prefixes (`prefixes`), else one whole mesh per pass
     bool partnered = false;      // the opaque pass also draws `partner_mesh` (fade_alpha)
@@ -220,6 +223,9 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
                                           const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
                                           const point_prefix& prefix) {
+            // Most of a big scene is culled: skip those plants before touching their other
+            // components (reading plant_instance for the species cost a cache line per plant).
+            if (lod.current == representation::none) return;
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
             count += builder.classify(t, b, p, lod, fade, prefix, parts_of(species)).items();
             if (lod.current == representation::points && lod.visible) ++point_plants[c];
@@ -247,9 +253,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
                                           const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
                                           const point_prefix& prefix) {
+            const std::uint32_t plant = index++;
+            if (lod.current == representation::none) return;
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            out = write_items(builder.classify(t, b, p, lod, fade, prefix, parts_of(species)), index, out);
-            ++index;
+            out = write_items(builder.classify(t, b, p, lod, fade, prefix, parts_of(species)), plant, out);
         });
     });
     ctx.parallel_for(cells.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
