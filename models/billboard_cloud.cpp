@@ -145,6 +145,76 @@ void apply_gaussian(image_rgba8& albedo, float sigma) {
         }
 }
 
+// The plant seen from the pre-lit page's light: a square plane through the middle of its bounds,
+// facing the light, holding every triangle's nearest depth toward the light.
+struct light_depth_map {
+    billboard_plane plane;
+    glm::vec3 u{0.0f}, v{0.0f}, l{0.0f};  // unit axes and the direction toward the light
+    float side_m = 0.0f;
+    billboard_image image;
+
+    // Share of the light reaching model-space point p: 3x3 texels around its spot, each lit
+    // unless a surface lies more than `bias_m` nearer the light there.
+    float visibility(glm::vec3 p, float bias_m) const {
+        const glm::vec3 rel = p - plane.origin;
+        const float size = float(image.albedo.width);
+        const int cx = int(std::floor(glm::dot(rel, u) / side_m * size));
+        const int cy = int(std::floor((1.0f - glm::dot(rel, v) / side_m) * size));
+        const float depth = glm::dot(rel, l);
+        float lit = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int x = cx + dx, y = cy + dy;
+                const bool inside = x >= 0 && y >= 0 && x < int(size) && y < int(size);
+                const std::size_t i = inside ? std::size_t(y) * std::size_t(size) + std::size_t(x) : 0;
+                lit += !inside || image.covered[i] == 0 || image.depth[i] <= depth + bias_m ? 1.0f : 0.0f;
+            }
+        return lit / 9.0f;
+    }
+};
+
+light_depth_map bake_light_depth(const plant_model& model, const billboard_cloud_settings& settings) {
+    const mesh_data& mesh = model.lods[0];
+    glm::vec3 lo(mesh.vertices[0].position), hi(lo);
+    for (const vertex& vx : mesh.vertices) lo = glm::min(lo, vx.position), hi = glm::max(hi, vx.position);
+    light_depth_map map;
+    map.l = glm::normalize(settings.pre_light_direction);
+    const glm::vec3 helper = std::abs(map.l.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    map.u = glm::normalize(glm::cross(helper, map.l));
+    map.v = glm::cross(map.l, map.u);  // cross(u, v) = l: the plane faces the light
+    map.side_m = std::max(glm::length(hi - lo), 1e-3f);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    map.plane = {centre - 0.5f * map.side_m * (map.u + map.v), map.side_m * map.u, map.side_m * map.v};
+    billboard_bake_settings bake;
+    bake.width = bake.height = settings.pre_light_map_size;
+    bake.supersampling = 1;
+    bake.dilation_texels = 0;
+    map.image = bake_billboard({&mesh, &model.leaf_texture, &model.bark_texture, {}}, map.plane, bake);
+    return map;
+}
+
+// Behrendt 2005 §2.3, pre-lighting: one side of one billboard lit by the map's light, with the
+// plant's own shadows; alpha copied from the albedo (coverage x gaussian).
+image_rgba8 pre_light(const billboard_image& image, const billboard_plane& side, const light_depth_map& light,
+                      float ambient) {
+    image_rgba8 out = image.albedo;
+    const float bias = 2.0f * light.side_m / float(light.image.albedo.width);
+    const glm::vec3 normal = side.normal();
+    for (std::uint32_t y = 0; y < out.height; ++y)
+        for (std::uint32_t x = 0; x < out.width; ++x) {
+            const std::size_t i = std::size_t(y) * out.width + x;
+            const std::uint8_t* nt = image.normal.at(x, y);
+            const glm::vec3 n = glm::normalize(glm::vec3(nt[0], nt[1], nt[2]) / 127.5f - 1.0f);
+            const glm::vec3 p = side.origin + (float(x) + 0.5f) / float(out.width) * side.axis_u +
+                                (1.0f - (float(y) + 0.5f) / float(out.height)) * side.axis_v + image.depth[i] * normal;
+            const float visible = image.covered[i] ? light.visibility(p, bias) : 1.0f;
+            const float f = light_factor(n, light.l, visible, ambient);
+            std::uint8_t* t = out.at(x, y);
+            for (int c = 0; c < 3; ++c) t[c] = std::uint8_t(std::lround(std::min(255.0f, float(t[c]) * f)));
+        }
+    return out;
+}
+
 void blit(image_rgba8& dst, const image_rgba8& src, std::uint32_t x0, std::uint32_t y0) {
     for (std::uint32_t y = 0; y < src.height; ++y)
         std::memcpy(dst.at(x0, y0 + y), src.at(0, y), std::size_t(src.width) * 4);
@@ -216,6 +286,11 @@ std::size_t billboard_cloud::atlas_bytes() const {
     return bytes;
 }
 
+float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient) {
+    const float n_dot_l = glm::dot(n, l);
+    return ambient + (1.0f - ambient) * visible * (std::max(n_dot_l, 0.0f) + 0.35f * std::max(-n_dot_l, 0.0f));
+}
+
 float plant_height(const plant_model& model) {
     const std::vector<vertex>& vertices = model.lods[0].vertices;
     if (vertices.empty()) return 0.0f;
@@ -282,6 +357,7 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
 
     const std::vector<std::vector<std::uint32_t>> members = layout.clustering.triangles();
     const mesh_data& mesh = model.lods[0];
+    const light_depth_map light = bake_light_depth(model, settings);
     tbb::parallel_for(std::size_t(0), cloud.billboards.size(), [&](std::size_t i) {
         const cloud_billboard& b = cloud.billboards[i];
         billboard_bake_settings bake;
@@ -290,12 +366,15 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         bake.supersampling = settings.supersampling;
         const billboard_source source{&mesh, &model.leaf_texture, &model.bark_texture, members[b.cluster]};
         for (const bool back : {false, true}) {
-            billboard_image image = bake_billboard(source, back ? back_side(b.plane) : b.plane, bake);
+            const billboard_plane side = back ? back_side(b.plane) : b.plane;
+            billboard_image image = bake_billboard(source, side, bake);
             apply_gaussian(image.albedo, settings.gaussian_sigma);
             // Each billboard writes only its own rectangle: no two tasks touch the same texels.
             const std::uint32_t x = b.rect.x + (back ? bake.width : 0);
             blit(cloud.pages[std::size_t(cloud_atlas_page::albedo)], image.albedo, x, b.rect.y);
             blit(cloud.pages[std::size_t(cloud_atlas_page::normal)], image.normal, x, b.rect.y);
+            blit(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)],
+                 pre_light(image, side, light, settings.pre_light_ambient), x, b.rect.y);
         }
     });
     for (const cloud_billboard& b : cloud.billboards) {

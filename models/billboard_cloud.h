@@ -25,7 +25,9 @@
 //
 //   page 0  albedo: rgb the mean texture colour (unlit), a = coverage x gaussian (see below)
 //   page 1  normal: rgb model-space normal n * 0.5 + 0.5, a = coverage alone
-//   page 2+ reserved for the spherical-harmonics coefficients of Behrendt 2005 §4: they share
+//   page 2  pre-lit: rgb the albedo lit once at bake time by one light including the plant's
+//           own shadows (Behrendt 2005 §2.3's first variant; light_factor()), a as page 0's
+//   page 3+ reserved for the spherical-harmonics coefficients of Behrendt 2005 §4: they share
 //           this layout, so they join as further pages without moving a rectangle.
 //
 // Sort-free fading (Behrendt 2005 §2.3): "We multiply the alpha channel of the billboard texture
@@ -51,7 +53,7 @@ namespace sylva {
 
 // Bump whenever the clustering, the boxes, the billboard rule, the bake or the layout change
 // what a bake produces.
-constexpr std::uint32_t k_billboard_cloud_format = 1;
+constexpr std::uint32_t k_billboard_cloud_format = 2;  // 2: the pre-lit page
 
 // Behrendt 2005 §2.2: "We found that f = 0.5 produces visibly pleasing results."
 constexpr float k_billboard_shape_factor = 0.5f;
@@ -72,8 +74,8 @@ enum class box_face : std::uint8_t {
 // and non-negative; throws std::invalid_argument naming them otherwise.
 std::vector<box_face> billboard_faces(glm::vec3 sides, float f = k_billboard_shape_factor);
 
-enum class cloud_atlas_page : std::uint32_t { albedo = 0, normal = 1 };
-constexpr std::uint32_t k_cloud_atlas_pages = 2;
+enum class cloud_atlas_page : std::uint32_t { albedo = 0, normal = 1, pre_lit = 2 };
+constexpr std::uint32_t k_cloud_atlas_pages = 3;
 
 struct billboard_cloud_settings {
     // target_clusters 0 (the default here): default_cluster_target(model).
@@ -85,6 +87,12 @@ struct billboard_cloud_settings {
     std::uint32_t supersampling = 3;   // s x s subsamples per texel
     std::uint32_t max_side_texels = 256;  // per billboard side
     float gaussian_sigma = 1.0f;       // see the header comment
+    // The pre-lit page's light (Behrendt 2005 §2.3: "created for a single light-position
+    // including all shadows"): direction toward it in model space, and the share of the light
+    // that reaches shadowed and turned-away surfaces (sky light) -- see light_factor().
+    glm::vec3 pre_light_direction{0.35f, 0.8f, 0.45f};  // normalised when used
+    float pre_light_ambient = 0.3f;
+    std::uint32_t pre_light_map_size = 512;  // the plant's depth seen from the light, texels a side
     min_box_settings box;
 };
 
@@ -139,6 +147,12 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
 // (glTF's "+X right, +Y up, +Z toward the viewer"), encoded n * 0.5 + 0.5, alpha kept; texels of
 // no billboard are the flat (0, 0, 1).
 image_rgba8 tangent_space_normal_page(const billboard_cloud& cloud);
+
+// The pre-lit page's light factor for a surface of unit normal n (turned toward its viewer)
+// lit from unit direction l, `visible` the share of the light the plant's own parts do not
+// block (0..1): ambient + (1 - ambient)·visible·(max(n·l, 0) + 0.35·max(-n·l, 0)), the second
+// term the light a leaf transmits when lit from behind, as the leaf shader has it.
+float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient);
 
 // The plant's height (lods[0] vertices, y extent); 4 m and above counts as a tree below.
 float plant_height(const plant_model& model);

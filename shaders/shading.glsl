@@ -46,3 +46,12 @@ vec3 shade_surface(vec3 base, vec3 n, vec3 position, bool foliage) {
     vec3 color = apply_fog(radiance, length(position));
     return tone_map(color);
 }
+
+// A colour already lit at bake time (a light factor of 1 where it faced the bake's light
+// unshadowed) under this scene's light level: the sky's irradiance on an upward surface plus
+// the sun's, then fog and tone mapping.
+vec3 shade_pre_lit(vec3 lit, vec3 position) {
+    vec3 irradiance = sh_irradiance(vec3(0.0, 1.0, 0.0)) + u_sun_radiance.rgb;
+    vec3 color = apply_fog(lit / 3.14159265 * irradiance, length(position));
+    return tone_map(color);
+}

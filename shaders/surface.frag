@@ -139,8 +139,12 @@ void main() {
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0));
 #endif
-    // CLOUD_PRE_LIT keeps n, the quad's plane normal toward its viewer.
-#if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
+#if defined(MATERIAL_BILLBOARD_CLOUD) && defined(CLOUD_PRE_LIT)
+    // Pre-lit (Behrendt 2005 §2.3): the colour page was lit at bake time by one light with the
+    // plant's own shadows (models/billboard_cloud.h light_factor); only the scene's light
+    // level, fog and tone mapping are applied here.
+    out_color = vec4(shade_pre_lit(base, v_position), 1.0);
+#elif defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)
     out_color = vec4(shade_surface(base, n, v_position, true), 1.0);
 #else
     out_color = vec4(shade_surface(base, n, v_position, false), 1.0);

@@ -98,6 +98,7 @@ struct scene_assets {
     // when the scene draws no clouds. SH pages (Behrendt 2005 §4) will join as further arrays.
     std::vector<image_rgba8> cloud_albedo;
     std::vector<image_rgba8> cloud_normal;
+    std::vector<image_rgba8> cloud_pre_lit;  // colour lit at bake time, alpha as cloud_albedo's
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;

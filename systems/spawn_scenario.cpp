@@ -133,6 +133,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
                  entry.triangles_cloud);
         assets.cloud_albedo.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::albedo)]));
         assets.cloud_normal.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::normal)]));
+        assets.cloud_pre_lit.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)]));
     }
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
@@ -159,6 +160,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
     match_cloud_atlas_sizes(assets.cloud_albedo);
     match_cloud_atlas_sizes(assets.cloud_normal);
+    match_cloud_atlas_sizes(assets.cloud_pre_lit);
     return assets;
 }
 

@@ -99,7 +99,11 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     if (!assets.cloud_albedo.empty()) {
         // The colour page's alpha is filtered plainly: the fade threshold reads the gaussian
         // in it. The normal page's alpha is the coverage the alpha test reads, kept per mip.
-        m_cloud_albedo = make_texture_array(assets.cloud_albedo, false);
+        // Pre-lit clouds read the page lit at bake time in its place (same layout and alpha).
+        m_cloud_albedo = make_texture_array(settings.cloud_pre_lit && !assets.cloud_pre_lit.empty()
+                                                ? assets.cloud_pre_lit
+                                                : assets.cloud_albedo,
+                                            false);
         m_cloud_normal = make_texture_array(assets.cloud_normal, false, true);
     }
     if (settings.shadows)

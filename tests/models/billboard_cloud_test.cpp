@@ -348,5 +348,61 @@ TEST(billboard_cloud, bad_settings_are_named) {
     }
 }
 
+TEST(billboard_cloud, light_factor_is_ambient_plus_the_lit_and_transmitted_share) {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    EXPECT_FLOAT_EQ(light_factor(up, up, 1.0f, 0.3f), 1.0f);                 // 0.3 + 0.7·1
+    EXPECT_FLOAT_EQ(light_factor(up, up, 0.0f, 0.3f), 0.3f);                 // in shadow: ambient
+    EXPECT_FLOAT_EQ(light_factor(-up, up, 1.0f, 0.3f), 0.3f + 0.7f * 0.35f);  // lit from behind: 0.545
+    const glm::vec3 l = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+    EXPECT_NEAR(light_factor(up, l, 0.5f, 0.3f), 0.3f + 0.7f * 0.5f * 0.70710678f, 1e-6f);  // 0.5475
+}
+
+// Behrendt 2005 §2.3, pre-lighting "for a single light-position including all shadows": two
+// horizontal 1 m x 0.5 m cards, one 2 m above the other, lit straight from above. The upper card
+// is lit fully (factor 1: the pre-lit colour is the albedo), the lower one lies in its shadow
+// (factor = ambient 0.3: 160 green becomes 48).
+TEST(billboard_cloud, the_pre_lit_page_holds_the_plant_s_own_shadows) {
+    plant_model plant;
+    plant.name = "two cards";
+    mesh_data& mesh = plant.lods[0];
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    for (const float y : {0.0f, 2.0f}) {
+        const auto base = std::uint32_t(mesh.vertices.size());
+        mesh.vertices.push_back({{0.0f, y, 0.0f}, n, {0, 1}});
+        mesh.vertices.push_back({{1.0f, y, 0.0f}, n, {1, 1}});
+        mesh.vertices.push_back({{1.0f, y, -0.5f}, n, {1, 0}});
+        mesh.vertices.push_back({{0.0f, y, -0.5f}, n, {0, 0}});
+        for (const std::uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + k);
+    }
+    mesh.submeshes = {{0, 12, material_kind::leaf}};
+    plant.leaf_texture = solid(40, 160, 30);
+    plant.bark_texture = solid(120, 80, 40);
+    billboard_cloud_settings s;
+    s.clustering.method = clustering_method::kmeans;
+    s.clustering.target_clusters = 2;
+    s.atlas_width = 128;
+    s.atlas_height = 64;
+    s.pre_light_direction = n;
+    s.pre_light_ambient = 0.3f;
+    const billboard_cloud cloud = bake_billboard_cloud(plant, s);
+    ASSERT_EQ(cloud.clusters.size(), 2u);
+    const image_rgba8& albedo = cloud.page(cloud_atlas_page::albedo);
+    const image_rgba8& pre_lit = cloud.page(cloud_atlas_page::pre_lit);
+    // Per billboard, the centre texel of the side seen from above (its plane normal up).
+    std::vector<std::pair<float, int>> greens;  // (height, pre-lit green)
+    for (const cloud_billboard& b : cloud.billboards) {
+        const bool front_up = b.plane.normal().y > 0.5f;
+        const std::uint32_t half = b.rect.width / 2;
+        const std::uint32_t x = b.rect.x + (front_up ? 0 : half) + half / 2, y = b.rect.y + b.rect.height / 2;
+        ASSERT_EQ(albedo.at(x, y)[1], 160);
+        EXPECT_EQ(pre_lit.at(x, y)[3], albedo.at(x, y)[3]);  // alpha as the colour page's
+        greens.emplace_back(b.plane.origin.y, pre_lit.at(x, y)[1]);
+    }
+    ASSERT_EQ(greens.size(), 2u);
+    std::sort(greens.begin(), greens.end());
+    EXPECT_EQ(greens[0].second, 48);   // the lower card: 160 · 0.3
+    EXPECT_EQ(greens[1].second, 160);  // the upper card: 160 · 1
+}
+
 }  // namespace
 }  // namespace sylva
