@@ -1,6 +1,7 @@
 #include "systems/render/textures.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <stdexcept>
 #include <utility>
@@ -8,48 +9,53 @@
 
 namespace sylva::render {
 
-image_rgba8 downsample(const image_rgba8& image) {
-    image_rgba8 out;
-    out.width = std::max(1u, image.width / 2);
-    out.height = std::max(1u, image.height / 2);
-    out.texels.resize(std::size_t(out.width) * out.height * 4);
-    for (std::uint32_t y = 0; y < out.height; ++y)
-        for (std::uint32_t x = 0; x < out.width; ++x)
-            for (int c = 0; c < 4; ++c) {
-                unsigned sum = 0;
-                for (std::uint32_t dy = 0; dy < 2; ++dy)
-                    for (std::uint32_t dx = 0; dx < 2; ++dx)
-                        sum += image.at(std::min(2 * x + dx, image.width - 1),
-                                        std::min(2 * y + dy, image.height - 1))[c];
-                out.at(x, y)[c] = std::uint8_t((sum + 2) / 4);
-            }
-    return out;
-}
+namespace {
 
-image_rgba8 downsample_cut_out(const image_rgba8& image) {
+// The next level's size, and for each of its texels `resolve(block, out)` with the four source
+// texels it covers (edges clamped, so odd sizes repeat their last row or column).
+template <typename Resolve>
+image_rgba8 reduce_2x2(const image_rgba8& image, Resolve resolve) {
     image_rgba8 out;
     out.width = std::max(1u, image.width / 2);
     out.height = std::max(1u, image.height / 2);
     out.texels.resize(std::size_t(out.width) * out.height * 4);
     for (std::uint32_t y = 0; y < out.height; ++y)
         for (std::uint32_t x = 0; x < out.width; ++x) {
-            unsigned weighted[3] = {0, 0, 0}, plain[3] = {0, 0, 0}, alpha = 0;
-            for (std::uint32_t dy = 0; dy < 2; ++dy)
-                for (std::uint32_t dx = 0; dx < 2; ++dx) {
-                    const std::uint8_t* t = image.at(std::min(2 * x + dx, image.width - 1),
-                                                     std::min(2 * y + dy, image.height - 1));
-                    for (int c = 0; c < 3; ++c) {
-                        weighted[c] += unsigned(t[c]) * t[3];
-                        plain[c] += t[c];
-                    }
-                    alpha += t[3];
-                }
-            std::uint8_t* o = out.at(x, y);
-            for (int c = 0; c < 3; ++c)
-                o[c] = std::uint8_t(alpha > 0 ? (weighted[c] + alpha / 2) / alpha : (plain[c] + 2) / 4);
-            o[3] = std::uint8_t((alpha + 2) / 4);
+            std::array<const std::uint8_t*, 4> block;
+            for (std::uint32_t k = 0; k < 4; ++k)
+                block[k] = image.at(std::min(2 * x + (k & 1), image.width - 1),
+                                    std::min(2 * y + (k >> 1), image.height - 1));
+            resolve(block, out.at(x, y));
         }
     return out;
+}
+
+}  // namespace
+
+image_rgba8 downsample(const image_rgba8& image) {
+    return reduce_2x2(image, [](const std::array<const std::uint8_t*, 4>& block, std::uint8_t* o) {
+        for (int c = 0; c < 4; ++c) {
+            unsigned sum = 0;
+            for (const std::uint8_t* t : block) sum += t[c];
+            o[c] = std::uint8_t((sum + 2) / 4);
+        }
+    });
+}
+
+image_rgba8 downsample_cut_out(const image_rgba8& image) {
+    return reduce_2x2(image, [](const std::array<const std::uint8_t*, 4>& block, std::uint8_t* o) {
+        unsigned weighted[3] = {0, 0, 0}, plain[3] = {0, 0, 0}, alpha = 0;
+        for (const std::uint8_t* t : block) {
+            for (int c = 0; c < 3; ++c) {
+                weighted[c] += unsigned(t[c]) * t[3];
+                plain[c] += t[c];
+            }
+            alpha += t[3];
+        }
+        for (int c = 0; c < 3; ++c)
+            o[c] = std::uint8_t(alpha > 0 ? (weighted[c] + alpha / 2) / alpha : (plain[c] + 2) / 4);
+        o[3] = std::uint8_t((alpha + 2) / 4);
+    });
 }
 
 void bleed_colour(image_rgba8& image) {
