@@ -74,6 +74,15 @@ struct leaf_record {
     part_kind kind = part_kind::leaf;
 };
 
+// A vertex's precomputed radiance transfer (Behrendt 2005 §4, models/radiance_transfer.h) as the
+// renderer streams it: 9 SH coefficients for light on the side the normal faces, then 9 for the
+// other side, as IEEE half floats (2 bands: coefficients 4..8 are zero), 2 halves of padding.
+// Mirrored by the transfer attributes in shaders/surface.vert (locations 5..9).
+struct vertex_transfer {
+    std::uint16_t half[20] = {};
+};
+static_assert(sizeof(vertex_transfer) == 40);
+
 struct mesh_data {
     std::vector<vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangle list
@@ -84,6 +93,9 @@ struct mesh_data {
     std::vector<leaf_record> leaves;   // one per foliage element, empty when unknown
     // Not serialised (models/mesh_io.h): every cached mesh is a triangle list.
     primitive_kind primitive = primitive_kind::triangles;
+    // Not serialised either (the transfer bake has its own cache entry): one per vertex when the
+    // mesh is lit by precomputed radiance transfer, else empty.
+    std::vector<vertex_transfer> transfer;
 
     std::size_t triangle_count() const { return indices.size() / 3; }
 };
