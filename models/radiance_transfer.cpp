@@ -11,7 +11,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <limits>
+#include <mutex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -51,6 +53,28 @@ struct filter_data {
     std::vector<std::uint32_t> indices;  // 3 per triangle, into the full mesh's vertices
     const std::vector<vertex>* vertices = nullptr;
     const image_rgba8* texture = nullptr;  // for alpha_tested
+    float albedo = k_default_albedo;       // for the interreflection bounce
+};
+
+// Mean colour (the mean of r, g and b, 0..1) of the texels the renderer keeps: a material's
+// scalar albedo for the bounce. Cut-out texels (alpha below the test) are not its colour.
+float mean_albedo(const image_rgba8& texture, bool alpha_tested) {
+    double sum = 0.0;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i + 3 < texture.texels.size(); i += 4) {
+        if (alpha_tested && texture.texels[i + 3] < k_alpha_cutoff) continue;
+        sum += (texture.texels[i] + texture.texels[i + 1] + texture.texels[i + 2]) / (3.0 * 255.0);
+        ++kept;
+    }
+    return kept ? float(sum / double(kept)) : k_default_albedo;
+}
+
+// Where a ray stopped: the hit geometry's data and Embree's barycentrics.
+struct ray_hit {
+    const filter_data* data = nullptr;
+    unsigned prim = 0;
+    float u = 0.0f;
+    float v = 0.0f;
 };
 
 glm::vec3 interpolate_normal(const filter_data& d, unsigned prim, float u, float v) {
@@ -129,7 +153,14 @@ struct transfer_occluders::scene {
     image_rgba8 leaf_texture;
     filter_data opaque;
     filter_data leaf;
+    std::array<const filter_data*, 2> by_geometry_id{};
     float offset = 0.0f;  // ray origin offset, metres
+    // The occluder's own shadowed transfer, the light its surfaces reflect in the bounce; baked
+    // on the first interreflected bake and kept for later ones with the same rays.
+    // Shared so a bake keeps its source alive while another replaces it.
+    std::mutex bounce_mutex;
+    std::optional<transfer_settings> bounce_settings;
+    std::shared_ptr<const radiance_transfer> bounce_source;
 
     ~scene() {
         if (rtc) rtcReleaseScene(rtc);
@@ -155,7 +186,7 @@ struct transfer_occluders::scene {
             rtcSetGeometryIntersectFilterFunction(g, filter_hits);
         }
         rtcCommitGeometry(g);
-        rtcAttachGeometry(rtc, g);
+        by_geometry_id.at(rtcAttachGeometry(rtc, g)) = &data;
         rtcReleaseGeometry(g);
     }
 
@@ -167,9 +198,23 @@ struct transfer_occluders::scene {
         rtcOccluded1(rtc, &context, &ray);
         return ray.tfar < 0.0f;  // Embree sets tfar to -inf on an occlusion
     }
+
+    // The nearest hit the filters accept, for the bounce; nothing when the ray escapes.
+    std::optional<ray_hit> nearest(glm::vec3 origin, glm::vec3 dir) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        rh.ray = RTCRay{origin.x, origin.y, origin.z, 0.0f, dir.x, dir.y, dir.z, 0.0f,
+                        std::numeric_limits<float>::infinity(), ~0u, 0u, 0u};
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(rtc, &context, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+        return ray_hit{by_geometry_id.at(rh.hit.geomID), rh.hit.primID, rh.hit.u, rh.hit.v};
+    }
 };
 
-transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8& leaf_texture)
+transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8& leaf_texture,
+                                       const image_rgba8& bark_texture)
     : m_scene(std::make_unique<scene>()) {
     scene& s = *m_scene;
     s.vertices = full.vertices;
@@ -180,6 +225,8 @@ transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8&
     // Without a texture a leaf cannot be cut out, so it is opaque (but still double-sided).
     s.leaf.kind = s.leaf_texture.texels.empty() ? surface::double_sided : surface::alpha_tested;
     s.leaf.texture = &s.leaf_texture;
+    s.leaf.albedo = mean_albedo(leaf_texture, true);
+    s.opaque.albedo = mean_albedo(bark_texture, false);
     for (const submesh& sm : full.submeshes) {
         std::vector<std::uint32_t>& dst = sm.material == material_kind::leaf ? s.leaf.indices : s.opaque.indices;
         const auto first = full.indices.begin() + sm.first_index;
@@ -197,12 +244,36 @@ transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8&
 
 transfer_occluders::~transfer_occluders() = default;
 
-radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, const transfer_settings& settings) const {
-    if (settings.bands != 2 && settings.bands != 3)
-        throw std::invalid_argument("radiance transfer: bands must be 2 or 3, not " + std::to_string(settings.bands));
-    if (settings.rays_per_receiver == 0) throw std::invalid_argument("radiance transfer: zero rays per receiver");
-    if (settings.interreflection)
-        throw std::invalid_argument("radiance transfer: interreflection is not implemented yet");
+namespace {
+
+// Sums of one side of one receiver, in double and in ray order (deterministic).
+struct side_sums {
+    std::array<double, 9> occluded{};  // integral (1 - V) max(+-n.w, 0) Y dw
+    std::array<double, 9> bounce{};    // integral (1 - V) max(+-n.w, 0) albedo/pi T(hit) dw
+};
+
+// The bounce source's transfer at a hit, interpolated over the hit triangle, on the side the
+// ray meets (the front when it travels against the interpolated normal).
+void add_bounce(const ray_hit& hit, glm::vec3 dir, const radiance_transfer& source, std::size_t count,
+                double weight, std::array<double, 9>& sum) {
+    const std::uint32_t* t = &hit.data->indices[std::size_t(hit.prim) * 3];
+    const bool front = glm::dot(dir, interpolate_normal(*hit.data, hit.prim, hit.u, hit.v)) < 0.0f;
+    const std::vector<float>& side = front ? source.front : source.back;
+    const std::array<double, 3> bary = {1.0 - hit.u - hit.v, hit.u, hit.v};
+    // Sloan, Kautz & Snyder 2002, §5 (interreflected transfer), one bounce: the light a hit
+    // surface reflects toward the receiver is albedo/pi times its own shadowed transfer.
+    const double scale = weight * hit.data->albedo / k_pi;
+    for (std::size_t k = 0; k < count; ++k) {
+        double tq = 0.0;
+        for (std::size_t c = 0; c < 3; ++c) tq += bary[c] * side[t[c] * count + k];
+        sum[k] += scale * tq;
+    }
+}
+
+}  // namespace
+
+radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receivers, const transfer_settings& settings,
+                                                const radiance_transfer* bounce_source) const {
     const std::size_t count = std::size_t(settings.bands) * settings.bands;
     radiance_transfer out;
     out.bands = settings.bands;
@@ -217,24 +288,30 @@ radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, co
         const glm::vec3 n = unit_normal(receiver);
         rng random(hash_combine(settings.seed, std::uint64_t(r)));
         const glm::mat3 rotation = uniform_rotation(random);
-        // The occluded part of each side's integral, in double and in ray order (deterministic).
-        std::array<double, 9> front_occluded{}, back_occluded{};
+        side_sums front, back;
         for (const glm::vec3& l : lattice) {
             const glm::vec3 w = rotation * l;
             const float c = glm::dot(n, w);
             if (c == 0.0f) continue;  // zero weight on both sides
             const glm::vec3 origin = receiver.position + (c > 0.0f ? s.offset : -s.offset) * n;
-            if (!s.occluded(origin, w)) continue;
-            const sh9 y = sh_basis(w);
-            std::array<double, 9>& sum = c > 0.0f ? front_occluded : back_occluded;
+            std::optional<ray_hit> hit;
+            if (bounce_source) {
+                hit = s.nearest(origin, w);
+                if (!hit) continue;
+            } else if (!s.occluded(origin, w)) {
+                continue;
+            }
+            side_sums& side = c > 0.0f ? front : back;
             const double weight = ray_weight * std::abs(double(c));
-            for (std::size_t k = 0; k < count; ++k) sum[k] += weight * y[k];
+            const sh9 y = sh_basis(w);
+            for (std::size_t k = 0; k < count; ++k) side.occluded[k] += weight * y[k];
+            if (hit) add_bounce(*hit, w, *bounce_source, count, weight, side.bounce);
         }
         const sh9 y_front = sh_basis(n);
         const sh9 y_back = sh_basis(-n);
         for (std::size_t k = 0; k < count; ++k) {
-            out.front[r * count + k] = float(k_clamped_cosine[k] * y_front[k] - front_occluded[k]);
-            out.back[r * count + k] = float(k_clamped_cosine[k] * y_back[k] - back_occluded[k]);
+            out.front[r * count + k] = float(k_clamped_cosine[k] * y_front[k] - front.occluded[k] + front.bounce[k]);
+            out.back[r * count + k] = float(k_clamped_cosine[k] * y_back[k] - back.occluded[k] + back.bounce[k]);
         }
     };
     tbb::parallel_for(
@@ -244,6 +321,29 @@ radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, co
         },
         tbb::simple_partitioner());
     return out;
+}
+
+radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, const transfer_settings& settings) const {
+    if (settings.bands != 2 && settings.bands != 3)
+        throw std::invalid_argument("radiance transfer: bands must be 2 or 3, not " + std::to_string(settings.bands));
+    if (settings.rays_per_receiver == 0) throw std::invalid_argument("radiance transfer: zero rays per receiver");
+    if (!settings.interreflection) return bake_pass(receivers, settings, nullptr);
+    scene& s = *m_scene;
+    transfer_settings direct = settings;
+    direct.interreflection = false;
+    std::shared_ptr<const radiance_transfer> source;
+    {
+        const std::lock_guard lock(s.bounce_mutex);
+        const auto same = [&](const transfer_settings& b) {
+            return b.bands == direct.bands && b.rays_per_receiver == direct.rays_per_receiver && b.seed == direct.seed;
+        };
+        if (!s.bounce_settings || !same(*s.bounce_settings)) {
+            s.bounce_source = std::make_shared<const radiance_transfer>(bake_pass(s.vertices, direct, nullptr));
+            s.bounce_settings = direct;
+        }
+        source = s.bounce_source;
+    }
+    return bake_pass(receivers, settings, source.get());
 }
 
 }  // namespace sylva

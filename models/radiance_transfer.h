@@ -35,6 +35,10 @@ struct transfer_settings {
     std::uint64_t seed = 1;
 };
 
+// Albedo of a material without a texture in the interreflection bounce: a mid grey, an
+// assumption, since nothing says what colour the renderer would give it.
+constexpr float k_default_albedo = 0.5f;
+
 // Transfer vectors per receiver (a vertex, a point sample or a line vertex), bands^2 floats
 // each, in the coefficient order of systems/lighting/spherical_harmonics.h.
 // front: T_i = integral V(w) max(n.w, 0) Y_i(w) dw   (light arriving on the side n faces)
@@ -53,19 +57,29 @@ struct radiance_transfer {
 // levels, its point samples, its line vertices). Leaf triangles are alpha-tested against
 // `leaf_texture` in an occlusion filter, so light passes through cut-out texels exactly where
 // the renderer discards them; every other material is opaque and one-sided (see the .cpp).
+// The textures' mean colours are the materials' albedos for the interreflection bounce
+// (`bark_texture` serves every non-leaf material); a missing texture counts as k_default_albedo.
 class transfer_occluders {
 public:
-    transfer_occluders(const mesh_data& full, const image_rgba8& leaf_texture);
+    transfer_occluders(const mesh_data& full, const image_rgba8& leaf_texture,
+                       const image_rgba8& bark_texture = image_rgba8{});
     ~transfer_occluders();
     transfer_occluders(const transfer_occluders&) = delete;
     transfer_occluders& operator=(const transfer_occluders&) = delete;
 
-    // Throws std::invalid_argument on bands other than 2 or 3, or zero rays.
+    // Throws std::invalid_argument on bands other than 2 or 3, or zero rays. With
+    // settings.interreflection, first bakes the occluder's own vertices (shadowed only; kept
+    // for later bakes with the same bands, rays and seed) for the bounce.
     radiance_transfer bake(std::span<const vertex> receivers, const transfer_settings& settings) const;
 
     struct scene;  // the Embree device, scene and the filters' data (radiance_transfer.cpp)
 
 private:
+    // One pass over `receivers`; with `bounce_source` (the occluder's own vertices' shadowed
+    // transfer) each hit also adds the light the hit surface reflects.
+    radiance_transfer bake_pass(std::span<const vertex> receivers, const transfer_settings& settings,
+                                const radiance_transfer* bounce_source) const;
+
     std::unique_ptr<scene> m_scene;
 };
 

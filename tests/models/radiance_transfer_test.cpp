@@ -157,17 +157,38 @@ TEST(radiance_transfer, two_bands_are_the_first_four_coefficients_of_three) {
     EXPECT_TRUE(any_shadowed);
 }
 
-TEST(radiance_transfer, one_and_two_threads_give_identical_bits) {
+TEST(radiance_transfer, one_and_two_threads_give_identical_bits_with_and_without_the_bounce) {
     const scattered_scene scene;
-    const transfer_occluders occluders(scene.mesh, flat_texture(255));
-    auto bake_with = [&](std::size_t threads) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        return occluders.bake(scene.receivers, rays(64));
-    };
-    const radiance_transfer one = bake_with(1);
-    const radiance_transfer two = bake_with(2);
-    EXPECT_EQ(one.front, two.front);
-    EXPECT_EQ(one.back, two.back);
+    for (const bool bounce : {false, true}) {
+        auto bake_with = [&](std::size_t threads) {
+            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+            // Fresh occluders: the bounce source is baked under the same thread limit.
+            const transfer_occluders occluders(scene.mesh, flat_texture(255), flat_texture(255));
+            transfer_settings s = rays(64);
+            s.interreflection = bounce;
+            return occluders.bake(scene.receivers, s);
+        };
+        const radiance_transfer one = bake_with(1);
+        const radiance_transfer two = bake_with(2);
+        EXPECT_EQ(one.front, two.front) << bounce;
+        EXPECT_EQ(one.back, two.back) << bounce;
+    }
+}
+
+TEST(radiance_transfer, interreflection_adds_the_light_the_occluder_reflects) {
+    // The quad above faces the receiver; its own vertices see nothing, so their transfer is the
+    // exact T_0 = 0.886228, and the bark's albedo is its texture's mean, 200/255 = 0.784314.
+    // Bounce T_0 = albedo/pi * 0.886228 * (projected solid angle 1.740840) = 0.385162 on top of
+    // the shadowed 0.886228 - 0.491082 = 0.395146: 0.780308.
+    const transfer_occluders occluders(quad(1.0f, 1.0f, -1.0f, material_kind::bark), image_rgba8{},
+                                       flat_texture(255));
+    transfer_settings s = rays(4096);
+    s.interreflection = true;
+    const radiance_transfer t = occluders.bake(std::span(&k_up, 1), s);
+    EXPECT_NEAR(t.front[0], 0.780308f, 0.01f);
+    EXPECT_NEAR(t.back[0], k_t0, 1e-5);
+    // Nothing to bounce from: still the exact projection.
+    expect_unoccluded_front(transfer_occluders(mesh_data{}, image_rgba8{}).bake(std::span(&k_up, 1), s));
 }
 
 TEST(radiance_transfer, rejects_bands_other_than_two_or_three_and_zero_rays) {
