@@ -156,8 +156,8 @@ struct transfer_occluders::scene {
     std::array<const filter_data*, 2> by_geometry_id{};
     float offset = 0.0f;  // ray origin offset, metres
     // The occluder's own shadowed transfer, the light its surfaces reflect in the bounce; baked
-    // on the first interreflected bake and kept for later ones with the same rays.
-    // Shared so a bake keeps its source alive while another replaces it.
+    // on the first interreflected bake and kept for later ones with the same rays. Shared, so a
+    // bake keeps its source alive while a bake with other settings replaces it.
     std::mutex bounce_mutex;
     std::optional<transfer_settings> bounce_settings;
     std::shared_ptr<const radiance_transfer> bounce_source;
