@@ -11,6 +11,7 @@
 #include "models/plant_model_io.h"
 #include "models/point_line_bake.h"
 #include "models/point_line_io.h"
+#include "models/radiance_transfer_io.h"
 #include "models/random.h"
 
 namespace sylva {
@@ -29,6 +30,25 @@ T load_cached(bake_cache* cache, std::string_view kind, std::uint64_t key, const
         cache->store(kind, key, bytes);
         return read(bytes);
     }
+}
+
+std::string transfer_settings_text(const transfer_settings& s) {
+    return std::to_string(k_radiance_transfer_format) + "/" + std::to_string(s.bands) + "/" +
+           std::to_string(s.rays_per_receiver) + "/" + std::to_string(s.interreflection ? 1 : 0) + "/" +
+           std::to_string(s.seed);
+}
+
+// An entry must hold one transfer per expected receiver set, each of the right size and bands;
+// anything else (a hash collision, a hand-edited file) is a damaged entry and is re-baked.
+std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes, std::span<const std::size_t> receivers,
+                                              std::uint32_t bands) {
+    std::vector<radiance_transfer> transfers = deserialize_radiance_transfers(bytes);
+    if (transfers.size() != receivers.size())
+        throw std::runtime_error("bake cache entry: radiance transfer count does not match");
+    for (std::size_t i = 0; i < transfers.size(); ++i)
+        if (transfers[i].bands != bands || transfers[i].receiver_count() != receivers[i])
+            throw std::runtime_error("bake cache entry: radiance transfer does not match its receivers");
+    return transfers;
 }
 
 }  // namespace
@@ -104,6 +124,56 @@ point_line_model load_species_point_lines(const species_settings& species, std::
     return load_cached<point_line_model>(
         cache, "point_lines", species_point_line_key(species, seed), bake,
         [](std::span<const std::byte> bytes) { return deserialize_point_line_model(bytes); });
+}
+
+std::uint64_t species_transfer_key(const species_settings& species, std::uint64_t seed,
+                                   const transfer_settings& settings) {
+    const std::uint64_t key = hash_string("radiance_transfer", species_model_key(species, seed));
+    return hash_string(transfer_settings_text(settings), key);
+}
+
+std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species, std::uint64_t seed,
+                                                       const plant_model& model,
+                                                       const transfer_settings& settings, bake_cache* cache) {
+    auto bake = [&] {
+        const transfer_occluders occluders(model.lods[0], model.leaf_texture, model.bark_texture);
+        std::array<radiance_transfer, 3> levels;
+        for (std::size_t i = 0; i < 3; ++i) levels[i] = occluders.bake(model.lods[i].vertices, settings);
+        return serialize_radiance_transfers(levels);
+    };
+    const std::array<std::size_t, 3> receivers = {model.lods[0].vertices.size(), model.lods[1].vertices.size(),
+                                                  model.lods[2].vertices.size()};
+    auto read = [&](std::span<const std::byte> bytes) {
+        std::vector<radiance_transfer> t = read_transfers(bytes, receivers, settings.bands);
+        return std::array<radiance_transfer, 3>{std::move(t[0]), std::move(t[1]), std::move(t[2])};
+    };
+    return load_cached<std::array<radiance_transfer, 3>>(cache, "radiance_transfer",
+                                                         species_transfer_key(species, seed, settings), bake, read);
+}
+
+std::uint64_t species_point_line_transfer_key(const species_settings& species, std::uint64_t seed,
+                                              const transfer_settings& settings) {
+    const std::uint64_t key = hash_string("point_line_transfer", species_point_line_key(species, seed));
+    return hash_string(transfer_settings_text(settings), key);
+}
+
+point_line_transfer load_species_point_line_transfer(const species_settings& species, std::uint64_t seed,
+                                                     const plant_model& model,
+                                                     const point_line_model& point_lines,
+                                                     const transfer_settings& settings, bake_cache* cache) {
+    auto bake = [&] {
+        const transfer_occluders occluders(model.lods[0], model.leaf_texture, model.bark_texture);
+        const std::array<radiance_transfer, 2> parts = {occluders.bake(point_lines.points, settings),
+                                                        occluders.bake(point_lines.lines, settings)};
+        return serialize_radiance_transfers(parts);
+    };
+    const std::array<std::size_t, 2> receivers = {point_lines.points.size(), point_lines.lines.size()};
+    auto read = [&](std::span<const std::byte> bytes) {
+        std::vector<radiance_transfer> t = read_transfers(bytes, receivers, settings.bands);
+        return point_line_transfer{std::move(t[0]), std::move(t[1])};
+    };
+    return load_cached<point_line_transfer>(cache, "radiance_transfer",
+                                            species_point_line_transfer_key(species, seed, settings), bake, read);
 }
 
 }  // namespace sylva

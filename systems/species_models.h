@@ -1,6 +1,7 @@
 #pragma once
 // A scenario species as a plant_model: generated from its preset or imported from its glTF
 // file, through the bake cache (keyed by everything that determines the result).
+#include <array>
 #include <cstdint>
 
 #include "models/bake_cache.h"
@@ -8,6 +9,7 @@
 #include "models/crossed_billboard.h"
 #include "models/plant_model.h"
 #include "models/point_line_model.h"
+#include "models/radiance_transfer.h"
 #include "scenarios/scenario.h"
 
 namespace sylva {
@@ -52,5 +54,36 @@ std::uint64_t species_point_line_key(const species_settings& species, std::uint6
 // ("point_lines") when `cache` is not null.
 point_line_model load_species_point_lines(const species_settings& species, std::uint64_t seed,
                                           const plant_model& model, bake_cache* cache);
+
+// The cache key of a species' radiance transfer for its three mesh levels: its model's key, the
+// transfer format and every transfer setting.
+std::uint64_t species_transfer_key(const species_settings& species, std::uint64_t seed,
+                                   const transfer_settings& settings);
+
+// The radiance transfer (Behrendt 2005 §4) of `model`'s full, reduced and far meshes (each
+// level's vertices are its receivers; the full mesh shadows all three, so every level is lit by
+// the same occluders), through the cache ("radiance_transfer") when `cache` is not null.
+std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species, std::uint64_t seed,
+                                                       const plant_model& model,
+                                                       const transfer_settings& settings, bake_cache* cache);
+
+// The transfer of a point/line representation: one vector per point_line_model::points vertex
+// and one per point_line_model::lines vertex.
+struct point_line_transfer {
+    radiance_transfer points;
+    radiance_transfer lines;
+};
+
+// The cache key of a species' point/line transfer: species_transfer_key and the point/line
+// representation's key (its receivers).
+std::uint64_t species_point_line_transfer_key(const species_settings& species, std::uint64_t seed,
+                                              const transfer_settings& settings);
+
+// The radiance transfer of `point_lines` (load_species_point_lines of `model`), shadowed by
+// `model`'s full mesh, through the cache ("radiance_transfer") when `cache` is not null.
+point_line_transfer load_species_point_line_transfer(const species_settings& species, std::uint64_t seed,
+                                                     const plant_model& model,
+                                                     const point_line_model& point_lines,
+                                                     const transfer_settings& settings, bake_cache* cache);
 
 }  // namespace sylva
