@@ -334,6 +334,25 @@ void write_rgb(std::uint8_t* texel, glm::vec3 rgb) {
     texel[2] = to_byte(rgb.z);
 }
 
+// Adds one covered subsample's interpolated transfer to `sum` (seen side first): the front
+// vector is the side the vertex normals face, so a back-facing leaf is seen on its back.
+void add_transfer(const billboard_source& source, const sample& s, float* sum) {
+    const radiance_transfer& t = *source.transfer;
+    const std::uint32_t n = t.bands * t.bands;
+    const std::uint32_t triangle = s.triangle & k_triangle_mask;
+    const std::uint32_t* index = &source.mesh->indices[std::size_t(triangle) * 3];
+    const float w[3] = {1.0f - s.lambda1 - s.lambda2, s.lambda1, s.lambda2};
+    const bool back = (s.triangle & k_back_facing_bit) != 0;
+    for (int k = 0; k < 3; ++k) {
+        const float* front = &t.front[std::size_t(index[k]) * n];
+        const float* other = &t.back[std::size_t(index[k]) * n];
+        for (std::uint32_t i = 0; i < n; ++i) {
+            sum[i] += w[k] * (back ? other[i] : front[i]);
+            sum[9 + i] += w[k] * (back ? front[i] : other[i]);
+        }
+    }
+}
+
 void resolve(const billboard_source& source, const rasterizer& raster, const billboard_bake_settings& settings,
              billboard_image& out) {
     const std::uint32_t s = settings.supersampling;
@@ -344,6 +363,8 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
             glm::vec3 normal{0.0f};
             float nearest = -std::numeric_limits<float>::infinity();
             std::uint32_t covered = 0;
+            const std::size_t texel_index = std::size_t(ty) * settings.width + tx;
+            float* transfer = source.transfer ? &out.transfer[texel_index * k_billboard_transfer_floats] : nullptr;
             for (std::uint32_t j = 0; j < s; ++j)
                 for (std::uint32_t i = 0; i < s; ++i) {
                     const sample& smp = samples[std::size_t(ty * s + j) * raster.columns() + tx * s + i];
@@ -351,12 +372,15 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
                     const shaded_sample shaded = shade(source, smp);
                     colour += shaded.colour;
                     normal += shaded.normal;
+                    if (transfer) add_transfer(source, smp, transfer);
                     nearest = std::max(nearest, smp.depth);
                     ++covered;
                 }
             const std::size_t texel = std::size_t(ty) * settings.width + tx;
             out.covered[texel] = std::uint16_t(covered);
             if (covered == 0) continue;
+            if (transfer)
+                for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i) transfer[i] /= float(covered);
             const float n_length = glm::length(normal);
             normal = n_length > 0.0f ? normal / n_length : raster.plane_normal();
             const std::uint32_t total = s * s;
@@ -431,6 +455,23 @@ void dilate(billboard_image& image, std::uint32_t rings, glm::vec3 fallback_norm
             }
 }
 
+// Uncovered texels take the mean covered transfer: they are discarded by the alpha test, and
+// only bilinear filtering at a leaf's edge reads them.
+void fill_uncovered_transfer(billboard_image& image) {
+    std::array<double, k_billboard_transfer_floats> sum{};
+    std::size_t covered = 0;
+    for (std::size_t t = 0; t < image.covered.size(); ++t)
+        if (image.covered[t]) {
+            for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += image.transfer[t * k_billboard_transfer_floats + i];
+            ++covered;
+        }
+    if (covered == 0) return;
+    for (std::size_t t = 0; t < image.covered.size(); ++t)
+        if (!image.covered[t])
+            for (std::size_t i = 0; i < sum.size(); ++i)
+                image.transfer[t * k_billboard_transfer_floats + i] = float(sum[i] / double(covered));
+}
+
 void validate(const billboard_source& source, const billboard_plane& plane, const billboard_bake_settings& settings) {
     if (!source.mesh || !source.leaf_texture || !source.bark_texture)
         throw std::invalid_argument("bake_billboard: mesh, leaf texture and bark texture are required");
@@ -444,6 +485,10 @@ void validate(const billboard_source& source, const billboard_plane& plane, cons
         throw std::invalid_argument("bake_billboard: more than 65536 subsamples per side");
     if (source.mesh->triangle_count() > k_triangle_mask)
         throw std::invalid_argument("bake_billboard: more than 2^30 triangles");
+    if (source.transfer && (source.transfer->bands < 2 || source.transfer->bands > 3 ||
+                            source.transfer->receiver_count() != source.mesh->vertices.size() ||
+                            source.transfer->back.size() != source.transfer->front.size()))
+        throw std::invalid_argument("bake_billboard: the transfer must have 2 or 3 bands and one receiver per vertex");
     const float lu = glm::length(plane.axis_u);
     const float lv = glm::length(plane.axis_v);
     if (!(lu > 0.0f) || !(lv > 0.0f) || std::abs(glm::dot(plane.axis_u, plane.axis_v)) > 1e-4f * lu * lv)
@@ -473,7 +518,9 @@ billboard_image bake_billboard(const billboard_source& source, const billboard_p
     }
     out.depth.assign(texels, 0.0f);
     out.covered.assign(texels, 0);
+    if (source.transfer) out.transfer.assign(texels * k_billboard_transfer_floats, 0.0f);
     resolve(source, raster, settings, out);
+    if (source.transfer) fill_uncovered_transfer(out);
     dilate(out, settings.dilation_texels, raster.plane_normal());
     return out;
 }

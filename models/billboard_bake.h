@@ -14,6 +14,7 @@
 
 #include "models/image.h"
 #include "models/mesh.h"
+#include "models/radiance_transfer.h"
 
 namespace sylva {
 
@@ -61,6 +62,9 @@ struct billboard_source {
     const image_rgba8* leaf_texture = nullptr;
     const image_rgba8* bark_texture = nullptr;
     std::span<const std::uint32_t> triangles;  // triangle indices; empty: every triangle
+    // Optional: the mesh's precomputed radiance transfer, one receiver per vertex (Behrendt
+    // 2005 §4: "we store the Gouraud-interpolated vectors in an extra texture").
+    const radiance_transfer* transfer = nullptr;
 };
 
 // Every image is width x height, rows top (along +axis_v) to bottom.
@@ -79,7 +83,13 @@ struct billboard_image {
     std::vector<float> depth;
     // Covered subsamples per texel (0 .. s²), exact; albedo.a is its 8-bit rounding.
     std::vector<std::uint16_t> covered;
+    // With billboard_source::transfer: per texel, the transfer interpolated over its covered
+    // subsamples, 9 coefficients of the side the viewer sees then 9 of the other side
+    // (k_billboard_transfer_floats; 2-band transfer leaves 4..8 zero); uncovered texels take the
+    // mean covered value. Empty otherwise.
+    std::vector<float> transfer;
 };
+constexpr std::size_t k_billboard_transfer_floats = 18;
 
 // Deterministic: single-threaded, integer edge functions with a top-left fill rule (a subsample
 // on an edge shared by two triangles belongs to exactly one); triangles are drawn nearest first

@@ -222,7 +222,8 @@ void blit(image_rgba8& dst, const image_rgba8& src, std::uint32_t x0, std::uint3
 
 // The rectangle's edge colours copied `ring` texels outward at alpha 0, so filtering and the
 // first mips near an edge average with the billboard's own colours, not the atlas background.
-void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring) {
+// `data_alpha`: the alpha channel is data (transfer pages) and is copied like the colour.
+void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring, bool data_alpha = false) {
     const auto x0 = std::int64_t(r.x) - ring, x1 = std::int64_t(r.x + r.width) + ring;
     const auto y0 = std::int64_t(r.y) - ring, y1 = std::int64_t(r.y + r.height) + ring;
     for (std::int64_t y = std::max<std::int64_t>(y0, 0); y < std::min<std::int64_t>(y1, page.height); ++y)
@@ -232,8 +233,8 @@ void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring) {
             const auto sx = std::uint32_t(std::clamp<std::int64_t>(x, r.x, r.x + r.width - 1));
             const auto sy = std::uint32_t(std::clamp<std::int64_t>(y, r.y, r.y + r.height - 1));
             std::uint8_t* to = page.at(std::uint32_t(x), std::uint32_t(y));
-            std::memcpy(to, page.at(sx, sy), 3);
-            to[3] = 0;
+            std::memcpy(to, page.at(sx, sy), data_alpha ? 4 : 3);
+            if (!data_alpha) to[3] = 0;
         }
 }
 
@@ -283,6 +284,7 @@ std::vector<box_face> billboard_faces(glm::vec3 sides, float f) {
 std::size_t billboard_cloud::atlas_bytes() const {
     std::size_t bytes = 0;
     for (const image_rgba8& p : pages) bytes += p.texels.size();
+    for (const image_rgba8& p : transfer_pages) bytes += p.texels.size();
     return bytes;
 }
 
@@ -337,7 +339,32 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
     return layout;
 }
 
-billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings) {
+std::uint8_t encode_cloud_transfer(float t) {
+    const float unit = std::clamp(t / k_cloud_transfer_range * 0.5f + 0.5f, 0.0f, 1.0f);
+    return std::uint8_t(std::lround(unit * 255.0f));
+}
+
+float decode_cloud_transfer(std::uint8_t byte) { return (float(byte) / 255.0f * 2.0f - 1.0f) * k_cloud_transfer_range; }
+
+namespace {
+
+// One billboard side's transfer (billboard_image::transfer) into the transfer pages at (x0, y0).
+void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image, std::uint32_t x0, std::uint32_t y0) {
+    const std::uint32_t w = image.albedo.width, h = image.albedo.height;
+    for (std::uint32_t y = 0; y < h; ++y)
+        for (std::uint32_t x = 0; x < w; ++x) {
+            const float* t = &image.transfer[(std::size_t(y) * w + x) * k_billboard_transfer_floats];
+            for (std::size_t i = 0; i < std::size_t(k_cloud_transfer_pages) * 4; ++i) {
+                const float value = i < k_billboard_transfer_floats ? t[i] : 0.0f;
+                pages[i / 4].at(x0 + x, y0 + y)[i % 4] = encode_cloud_transfer(value);
+            }
+        }
+}
+
+}  // namespace
+
+billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings,
+                                     const radiance_transfer* transfer) {
     billboard_cloud_layout layout = plan_billboard_cloud(model, settings);
     billboard_cloud cloud;
     cloud.method = layout.clustering.method;
@@ -350,6 +377,15 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         page.width = settings.atlas_width;
         page.height = settings.atlas_height;
         page.texels.assign(std::size_t(page.width) * page.height * 4, 0);
+    }
+    if (transfer) {
+        // Zero transfer is byte 128 (mid-range), also between rectangles.
+        cloud.transfer_pages.resize(k_cloud_transfer_pages);
+        for (image_rgba8& page : cloud.transfer_pages) {
+            page.width = settings.atlas_width;
+            page.height = settings.atlas_height;
+            page.texels.assign(std::size_t(page.width) * page.height * 4, encode_cloud_transfer(0.0f));
+        }
     }
     std::vector<atlas_rect> rects;
     cloud.texels_per_metre = fit_density(cloud.billboards, settings, rects);
@@ -364,7 +400,7 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         bake.width = b.rect.width / 2;
         bake.height = b.rect.height;
         bake.supersampling = settings.supersampling;
-        const billboard_source source{&mesh, &model.leaf_texture, &model.bark_texture, members[b.cluster]};
+        const billboard_source source{&mesh, &model.leaf_texture, &model.bark_texture, members[b.cluster], transfer};
         for (const bool back : {false, true}) {
             const billboard_plane side = back ? back_side(b.plane) : b.plane;
             billboard_image image = bake_billboard(source, side, bake);
@@ -375,10 +411,12 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
             blit(cloud.pages[std::size_t(cloud_atlas_page::normal)], image.normal, x, b.rect.y);
             blit(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)],
                  pre_light(image, side, light, settings.pre_light_ambient), x, b.rect.y);
+            if (transfer) blit_transfer(cloud.transfer_pages, image, x, b.rect.y);
         }
     });
     for (const cloud_billboard& b : cloud.billboards) {
         for (image_rgba8& page : cloud.pages) extend_edges(page, b.rect, settings.gutter / 2);
+        for (image_rgba8& page : cloud.transfer_pages) extend_edges(page, b.rect, settings.gutter / 2, true);
         add_billboard_quads(cloud.mesh, b, cloud.atlas_width, cloud.atlas_height);
     }
     cloud.mesh.submeshes.push_back({0, std::uint32_t(cloud.mesh.indices.size()), material_kind::billboard});

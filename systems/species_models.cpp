@@ -97,12 +97,15 @@ std::uint64_t species_billboard_cloud_key(const species_settings& species, std::
 }
 
 billboard_cloud load_species_billboard_cloud(const species_settings& species, std::uint64_t seed,
-                                             const plant_model& model, bake_cache* cache) {
+                                             const plant_model& model, bake_cache* cache,
+                                             const radiance_transfer* transfer, std::uint64_t transfer_key) {
     auto bake = [&] {
-        return serialize_billboard_cloud(bake_billboard_cloud(model, default_billboard_cloud_settings(model)));
+        return serialize_billboard_cloud(bake_billboard_cloud(model, default_billboard_cloud_settings(model), transfer));
     };
+    std::uint64_t key = species_billboard_cloud_key(species, seed);
+    if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
     return load_cached<billboard_cloud>(
-        cache, "billboard_clouds", species_billboard_cloud_key(species, seed), bake,
+        cache, "billboard_clouds", key, bake,
         [](std::span<const std::byte> bytes) { return deserialize_billboard_cloud(bytes); });
 }
 

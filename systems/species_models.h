@@ -43,9 +43,12 @@ std::uint64_t species_billboard_cloud_key(const species_settings& species, std::
 
 // The billboard cloud (Behrendt 2005 §2) of `model` (unscaled), baked with
 // default_billboard_cloud_settings, through the cache ("billboard_clouds") when `cache` is not
-// null.
+// null. With `transfer` (lods[0]'s, Behrendt 2005 §4) its transfer pages are baked too, and the
+// cache entry is keyed on `transfer_key` (species_transfer_key) as well.
 billboard_cloud load_species_billboard_cloud(const species_settings& species, std::uint64_t seed,
-                                             const plant_model& model, bake_cache* cache);
+                                             const plant_model& model, bake_cache* cache,
+                                             const radiance_transfer* transfer = nullptr,
+                                             std::uint64_t transfer_key = 0);
 
 // The cache key of a species' point/line representation: its model's key and the bake's format.
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed);
