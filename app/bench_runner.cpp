@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <tbb/parallel_invoke.h>
@@ -112,10 +113,13 @@ void save_frame(const image_rgba8& image, const std::filesystem::path& dir, std:
     write_image(image, dir / name);
 }
 
+// `lighting`: as player_options::lighting (empty: the scenario's own).
 reference_frames render_reference(const scenario& s, render::gl_context& context, bake_cache* cache,
-                                  const bench_settings& settings, std::size_t configurations) {
+                                  const bench_settings& settings, std::size_t configurations,
+                                  const std::string& lighting = {}) {
     bench_configuration_spec spec;
     spec.options.geometry = geometry_mode::full;
+    spec.options.lighting = lighting;
     spec.samples = k_bench_reference_samples;
     scenario_player player(configured(s, spec), settings.threads, &context, cache, measured(spec.options));
     warm_up(player);
@@ -283,15 +287,16 @@ bench_configuration_spec points_lines(float sample_distance_px) {
 
 // Behrendt 2005 §2.3: meshes near, billboard clouds from 30 m x plant scale, crossed billboards
 // beyond the species' far distance, each switch cross-faded without sorting.
-bench_configuration_spec billboard_clouds(bool pre_lit) {
+// `lighting`: every species lit as "normal_mapped", "pre_lit" or "sh" (§2.3, §4).
+bench_configuration_spec billboard_clouds(const std::string& lighting) {
     bench_configuration_spec c;
-    c.name = pre_lit ? "billboard_clouds_pre_lit" : "billboard_clouds";
+    c.name = lighting == "normal_mapped" ? "billboard_clouds" : "billboard_clouds_" + lighting;
     c.family = "billboard_clouds";
-    c.description = std::string("billboard clouds (Behrendt 2005), ") + (pre_lit ? "pre-lit" : "normal-mapped") +
+    c.description = "billboard clouds (Behrendt 2005), " + lighting +
                     ": full mesh nearer than 30 m x plant scale, cloud beyond, crossed billboard beyond "
                     "the far distance, sort-free fades";
     c.options.policy.mode = lod_policy::kind::billboard_clouds;
-    c.options.policy.cloud_pre_lit = pre_lit;
+    c.options.lighting = lighting;
     return c;
 }
 
@@ -322,8 +327,9 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(baseline(50.0f, true));
     list.push_back(baseline(25.0f, false));
     list.push_back(baseline(100.0f, false));
-    list.push_back(billboard_clouds(false));
-    list.push_back(billboard_clouds(true));
+    list.push_back(billboard_clouds("normal_mapped"));
+    list.push_back(billboard_clouds("pre_lit"));
+    list.push_back(billboard_clouds("sh"));
     for (float d : {1.0f, 0.5f, 2.0f, 4.0f}) list.push_back(points_lines(d));
     // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
     // with about 1 M primitives).
@@ -338,6 +344,17 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     plants_only.description = "points and lines, d' = 1 px, every plant on its own (no eco-tile point sets, §6.2)";
     plants_only.options.policy.tile_sets = false;
     list.push_back(plants_only);
+    // Behrendt 2005 §4: the same representations lit by precomputed radiance transfer.
+    bench_configuration_spec mesh_sh = mesh_lod(1.0);
+    mesh_sh.name = "mesh_lod_sh";
+    mesh_sh.description = "the runtime's distance levels, every species lit by SH transfer (Behrendt 2005 §4)";
+    mesh_sh.options.lighting = "sh";
+    list.push_back(mesh_sh);
+    bench_configuration_spec points_sh = points_lines(1.0f);
+    points_sh.name = "points_lines_sh";
+    points_sh.description = "points and lines, d' = 1 px, every species lit by SH transfer (Behrendt 2005 §4)";
+    points_sh.options.lighting = "sh";
+    list.push_back(points_sh);
     return list;
 }
 
@@ -367,9 +384,20 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
 
     const reference_frames ref = render_reference(s, context, cache, settings, selected.size());
     report.reference_frame_ms_median = median_of(ref.frame_ms);
+    // A configuration that lights every species another way is compared with a reference lit
+    // that way too (full geometry, 3x3 samples), so its errors are its representation's alone.
+    std::map<std::string, reference_frames> lit_references;
     for (std::size_t i = 0; i < selected.size(); ++i) {
-        report.configurations.push_back(
-            run_configuration(s, *selected[i], ref, context, cache, settings, int(i), selected.size()));
+        const std::string& lighting = selected[i]->options.lighting;
+        const bool own = lighting.empty() ||
+                         (lighting == s.lod.lighting &&
+                          std::all_of(s.species.begin(), s.species.end(),
+                                      [](const species_settings& sp) { return sp.lighting == "scenario"; }));
+        if (!own && !lit_references.contains(lighting))
+            lit_references.emplace(lighting,
+                                   render_reference(s, context, cache, settings, selected.size(), lighting));
+        report.configurations.push_back(run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting),
+                                                          context, cache, settings, int(i), selected.size()));
     }
     if (settings.costs)
         report.primitive_costs = {{"triangle", settings.costs->triangle},

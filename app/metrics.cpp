@@ -63,6 +63,8 @@ nlohmann::json frame_json(const frame_record& f) {
             {"passes", named_ms(f.passes)},
             {"triangles", f.triangles},
             {"shadow_triangles", f.shadow_triangles},
+            {"shadow_texel_m", f.shadow_texel_m},
+            {"shadow_split_m", f.shadow_split_m},
             {"points", f.points},
             {"lines", f.lines},
             {"instances", instances},

@@ -24,6 +24,9 @@ struct frame_record {
     std::vector<std::pair<std::string, double>> passes;   // GPU ms per render pass
     std::uint64_t triangles = 0;         // in the camera's view
     std::uint64_t shadow_triangles = 0;  // in the shadow cascades
+    // Metres per shadow-map texel in each cascade, near to far, and where each ends (view depth).
+    std::vector<double> shadow_texel_m;
+    std::vector<double> shadow_split_m;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances{};

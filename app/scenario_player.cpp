@@ -75,7 +75,6 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         s.lod.representation == "billboard_clouds") {
         policy.mode = lod_policy::kind::billboard_clouds;
         policy.cloud_distance_m = s.lod.cloud_distance_m;
-        policy.cloud_pre_lit = s.lod.cloud_lighting == "pre_lit";
     }
     return policy;
 }
@@ -118,6 +117,10 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
                                  player_options options)
     : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
+    if (!options.lighting.empty()) {
+        m_scenario.lod.lighting = options.lighting;
+        for (species_settings& species : m_scenario.species) species.lighting = "scenario";
+    }
     const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
     m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines(), policy.uses_billboard_clouds()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
@@ -147,7 +150,6 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         render::renderer_settings settings = renderer_settings_of(m_scenario);
         settings.id_buffer = options.id_buffer;
         settings.fade_dissolve = policy.mode == lod_policy::kind::billboard_clouds;
-        settings.cloud_pre_lit = policy.cloud_pre_lit;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
         // Measured once per device and setting, then read from the cache: without a cache the
@@ -200,6 +202,11 @@ frame_record scenario_player::step() {
     const draw_list& draws = m_world.resource<draw_list>();
     record.triangles = draws.triangles;
     record.shadow_triangles = draws.shadow_triangles;
+    const cascade_set& cascades = m_world.resource<cascade_set>();
+    for (int c = 0; c < cascades.count; ++c) {
+        record.shadow_texel_m.push_back(cascades.texel_world_size[std::size_t(c)]);
+        record.shadow_split_m.push_back(cascades.split_far[std::size_t(c)]);
+    }
     record.points = draws.points;
     record.lines = draws.lines;
     record.instances = draws.instances_by_representation;

@@ -44,6 +44,9 @@ struct player_options {
     // (systems/render/primitive_cost_calibration.h), measured once and cached.
     bool measure_costs = true;
     bool id_buffer = false;
+    // Every species lit this way ("normal_mapped", "pre_lit" or "sh"; scenario `lighting`),
+    // whatever the scenario says; empty: as the scenario says. The bench compares variants so.
+    std::string lighting;
 };
 
 class scenario_player {

@@ -16,6 +16,9 @@ struct environment {
     std::uint64_t projected_revision = 0;
     // Irradiance SH coefficients (radiance convolved with the clamped cosine), per channel.
     std::array<glm::vec3, 9> irradiance_sh{};
+    // Radiance SH coefficients of the sky and ground (no sun), per channel: what precomputed
+    // radiance transfer vectors are dotted with.
+    std::array<glm::vec3, 9> radiance_sh{};
 };
 
 }  // namespace sylva

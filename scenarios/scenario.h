@@ -46,6 +46,9 @@
 //     max_distance_m     number     1500         0 .. 1000000; not drawn beyond it as
 //                                                mesh levels (points_lines draws to the far
 //                                                plane); must be >= far_distance_m
+//     octree_depth       integer    0            0 .. 3; Deussen 2002 §6.1 cells per plant
+//     lighting           string     "scenario"   "scenario" (lod.lighting), "normal_mapped",
+//                                                "pre_lit" or "sh" (see lod.lighting)
 //   }
 //   populations    REQUIRED array of >= 1 {
 //     species        string REQUIRED  the name of a species
@@ -127,9 +130,17 @@
 //                                       plant scale and lod_scale) plants are polygonal (the
 //                                       paper's "about 30 m"); capped per species at 0.74 x
 //                                       far_distance_m so the two fade bands never overlap
-//     cloud_lighting     string  "normal_mapped"  billboard_clouds: "normal_mapped" (the
-//                                       atlas's normal page) or "pre_lit" (each billboard lit
-//                                       with its plane's normal: the bake stores unlit colour)
+//     lighting           string  "normal_mapped"  how plants are lit (Behrendt 2005 §2.3, §4):
+//                                       "normal_mapped" (every representation by its normals:
+//                                       the mesh's, the samples', the cloud atlas's normal page),
+//                                       "pre_lit" (billboard clouds take the atlas's page lit at
+//                                       bake time with the plant's own shadows; meshes and
+//                                       samples stay normal-lit) or "sh" (precomputed radiance
+//                                       transfer: every representation lit by the same baked
+//                                       SH transfer vectors, self-shadowing included); a
+//                                       species' own "lighting" overrides it
+//     sh_bands           integer 3       2 .. 3; SH bands of the transfer vectors (4 or 9
+//                                       coefficients) with lighting "sh"
 //   }
 #include <array>
 #include <cstdint>
@@ -172,6 +183,7 @@ struct species_settings {
     float max_distance_m = 1500.0f;
     float importance = 1.0f;
     std::uint32_t octree_depth = 0;
+    std::string lighting = "scenario";  // one of k_species_lightings
     bool operator==(const species_settings&) const = default;
 };
 
@@ -261,8 +273,10 @@ struct eco_tile_settings {
 // The representations `lod.representation` may name.
 inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_levels", "points_lines",
                                                                         "billboard_clouds"};
-// The lighting variants `lod.cloud_lighting` may name (Behrendt 2005 §2.3; SH comes with §4).
-inline constexpr std::array<std::string_view, 2> k_cloud_lightings{"normal_mapped", "pre_lit"};
+// The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
+inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
+// A species' `lighting`: "scenario" takes the lod section's.
+inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped", "pre_lit", "sh"};
 
 struct lod_settings {
     std::string representation = "mesh_levels";
@@ -271,7 +285,8 @@ struct lod_settings {
     double primitive_budget = 0.0;
     double target_frame_ms = 0.0;
     float cloud_distance_m = 30.0f;
-    std::string cloud_lighting = "normal_mapped";
+    std::string lighting = "normal_mapped";  // one of k_lightings
+    std::uint32_t sh_bands = 3;
     bool operator==(const lod_settings&) const = default;
 };
 

@@ -143,6 +143,7 @@ const field_table<species_settings>& species_fields() {
             .number("max_distance_m", &t::max_distance_m, k_distance_m)
             .number("importance", &t::importance, {0.01, 100.0})
             .integer("octree_depth", &t::octree_depth, {0, 3})
+            .choice("lighting", &t::lighting, k_species_lightings)
             .check([](const json_node& n, const t& s) {
                 expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
                                s.far_distance_m, false);
@@ -318,7 +319,8 @@ const field_table<lod_settings>& lod_fields() {
                                   .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
                                   .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
                                   .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})
-                                  .choice("cloud_lighting", &t::cloud_lighting, k_cloud_lightings)
+                                  .choice("lighting", &t::lighting, k_lightings)
+                                  .integer("sh_bands", &t::sh_bands, {2, 3})
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

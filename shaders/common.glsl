@@ -14,6 +14,8 @@ layout(std140, binding = 0) uniform frame_block {
     vec4 u_fog;                        // rgb fog colour; w density per metre
     vec4 u_params;                     // x exposure, y shadow texel size (uv), z time s, w ground uv scale
     vec4 u_cascade_texel_world;        // world size of one shadow texel per cascade
+    vec4 u_sh_radiance[9];             // rgb per coefficient: the sky's radiance SH (transfer.glsl)
+    vec4 u_sun_sh[3];                  // the 9 SH basis values at the sun's direction
 };
 
 // Ramamoorthi & Hanrahan 2001: irradiance E(n) from 9 SH coefficients. The coefficients are

@@ -21,6 +21,14 @@ flat in float v_layer[];
 #ifdef WRITE_ID
 flat in uint v_instance[];
 #endif
+#ifdef SH_TRANSFER
+in vec3 v_sh_sky[];
+in vec2 v_sh_sun[];
+in float v_sh_exit[];
+out vec3 g_sh_sky;
+out vec2 g_sh_sun;
+out float g_sh_exit;
+#endif
 
 out vec3 g_position;
 out vec3 g_normal;
@@ -39,6 +47,11 @@ void emit(int i, vec2 offset_ndc) {
     g_uv = v_uv[i];
     g_tint = v_tint[i];
     g_layer = v_layer[0];
+#ifdef SH_TRANSFER
+    g_sh_sky = v_sh_sky[i];
+    g_sh_sun = v_sh_sun[i];
+    g_sh_exit = v_sh_exit[i];
+#endif
 #ifdef WRITE_ID
     g_instance = v_instance[0];
 #endif

@@ -9,6 +9,9 @@
 // colour page's coverage x gaussian alpha (cloud_alpha_threshold), survivors opaque; lit with
 // the normal page (normal-mapped) or, with CLOUD_PRE_LIT, with the billboard's own plane.
 // FADE_DISSOLVE: the partner of a transition fades by a stable screen-door dissolve.
+// SH_TRANSFER lights by precomputed radiance transfer (transfer.glsl, Behrendt 2005 §4): meshes
+// and lines from the per-vertex dot products surface.vert made, billboard clouds from the
+// transfer pages of their atlas ("Gouraud-interpolated vectors in an extra texture").
 // PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
 // each sample takes the texture's colour where it was baked (a slightly filtered level: a
 // splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
@@ -24,6 +27,9 @@
 #define v_tint g_tint
 #define v_layer g_layer
 #define v_instance g_instance
+#define v_sh_sky g_sh_sky
+#define v_sh_sun g_sh_sun
+#define v_sh_exit g_sh_exit
 #endif
 
 in vec3 v_position;
@@ -63,6 +69,19 @@ float dissolve_hash(uint a, uint b) {
     h = (h >> 22u) ^ h;
     return float(h >> 8u) * (1.0 / 16777216.0);
 }
+#endif
+#if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
+#include "transfer.glsl"
+#ifdef MATERIAL_BILLBOARD_CLOUD
+// models/billboard_cloud.h transfer pages: five layers per species, the 9 coefficients of the
+// side this billboard side's viewer sees, then the 9 of the other, each (T / range) * 0.5 + 0.5.
+layout(binding = 3) uniform sampler2DArray u_cloud_transfer;
+const float k_transfer_page_range = 1.25;  // mirrors k_cloud_transfer_range
+#else
+in vec3 v_sh_sky;
+in vec2 v_sh_sun;
+#endif
+in float v_sh_exit;
 #endif
 #ifdef WRITE_ID
 flat in uint v_instance;
@@ -139,7 +158,29 @@ void main() {
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0));
 #endif
-#if defined(MATERIAL_BILLBOARD_CLOUD) && defined(CLOUD_PRE_LIT)
+#if defined(MATERIAL_BILLBOARD_CLOUD) && defined(SH_TRANSFER)
+    // The atlas holds model-space transfer; turn it by the plant's yaw, as surface.vert does
+    // for vertices.
+    float seen[9], other[9];
+    for (int p = 0; p < 5; ++p) {
+        vec4 t = (texture(u_cloud_transfer, vec3(v_uv, v_layer * 5.0 + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
+        for (int k = 0; k < 4; ++k) {
+            int i = 4 * p + k;
+            if (i < 9) seen[i] = t[k];
+            else if (i < 18) other[i - 9] = t[k];
+        }
+    }
+    sh_rotate_about_y(seen, v_yaw_cos_sin.x, v_yaw_cos_sin.y);
+    sh_rotate_about_y(other, v_yaw_cos_sin.x, v_yaw_cos_sin.y);
+    out_color = vec4(shade_transfer(base, sh_transfer_sky(seen), sh_transfer_sun(seen), sh_transfer_sun(other),
+                                    v_position, v_sh_exit, true), 1.0);
+#elif defined(SH_TRANSFER)
+#if defined(MATERIAL_LEAF)
+    out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, true), 1.0);
+#else
+    out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, false), 1.0);
+#endif
+#elif defined(MATERIAL_BILLBOARD_CLOUD) && defined(CLOUD_PRE_LIT)
     // Pre-lit (Behrendt 2005 §2.3): the colour page was lit at bake time by one light with the
     // plant's own shadows (models/billboard_cloud.h light_factor); only the scene's light
     // level, fog and tone mapping are applied here.

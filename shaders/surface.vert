@@ -6,6 +6,10 @@
 // splat of u_splat_px pixels on screen; in a shadow cascade the same world footprint (the
 // splat's image-plane size times the distance from the eye) in shadow-map texels.
 // PRIMITIVE_LINES hands lines to line.geom, which widens them to d' pixels.
+// SH_TRANSFER lights by the precomputed radiance transfer streamed with the vertices
+// (transfer.glsl, Behrendt 2005 §4): here the transfer is turned by the instance's yaw and
+// dotted with the sky's and the sun's SH; the sun's visibility is looked up per fragment (per
+// point for splats).
 #ifdef WRITE_ID
 #extension GL_ARB_shader_draw_parameters : require
 #endif
@@ -16,6 +20,20 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 layout(location = 3) in vec4 in_instance_position_yaw;
 layout(location = 4) in vec4 in_instance_scale_tint_fade_layer;
+#if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
+#include "transfer.glsl"
+// models/mesh.h vertex_transfer: 9 halves for the side the normal faces, 9 for the other.
+layout(location = 5) in vec4 in_transfer0;
+layout(location = 6) in vec4 in_transfer1;
+layout(location = 7) in vec4 in_transfer2;
+layout(location = 8) in vec4 in_transfer3;
+layout(location = 9) in vec4 in_transfer4;
+#ifndef MATERIAL_BILLBOARD_CLOUD
+out vec3 v_sh_sky;    // T_seen . L_sky
+out vec2 v_sh_sun;    // T_seen . Y(sun), T_other . Y(sun)
+#endif
+out float v_sh_exit;  // metres the sun's ray runs inside the plant's own sphere
+#endif
 
 #ifdef SHADOW_PASS
 uniform int u_cascade;
@@ -67,6 +85,22 @@ void main() {
 #ifdef WRITE_ID
     v_instance = uint(gl_BaseInstanceARB + gl_InstanceID);
 #endif
+#if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
+    v_sh_exit = sphere_exit_distance(world, in_instance_position_yaw.xyz, scale, v_layer);
+#ifndef MATERIAL_BILLBOARD_CLOUD
+    float front[9] = float[9](in_transfer0.x, in_transfer0.y, in_transfer0.z, in_transfer0.w, in_transfer1.x,
+                              in_transfer1.y, in_transfer1.z, in_transfer1.w, in_transfer2.x);
+    float back[9] = float[9](in_transfer2.y, in_transfer2.z, in_transfer2.w, in_transfer3.x, in_transfer3.y,
+                             in_transfer3.z, in_transfer3.w, in_transfer4.x, in_transfer4.y);
+    sh_rotate_about_y(front, c, s);
+    sh_rotate_about_y(back, c, s);
+    // The side seen is the one whose normal faces the eye (the eye is at the origin).
+    bool front_seen = dot(v_normal, world) <= 0.0;
+    float sun_front = sh_transfer_sun(front), sun_back = sh_transfer_sun(back);
+    v_sh_sky = front_seen ? sh_transfer_sky(front) : sh_transfer_sky(back);
+    v_sh_sun = front_seen ? vec2(sun_front, sun_back) : vec2(sun_back, sun_front);
+#endif
+#endif
 #ifdef SHADOW_PASS
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
@@ -81,12 +115,20 @@ void main() {
     // material is a leaf.
     vec4 albedo = textureLod(u_albedo, vec3(v_uv, v_layer), 1.0);
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
+#if defined(SH_TRANSFER)
+#if defined(MATERIAL_LEAF)
+    v_color = shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, world, v_sh_exit, true);
+#else
+    v_color = shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, world, v_sh_exit, false);
+#endif
+#else
     vec3 n = normalize(v_normal);
     if (dot(n, world) > 0.0) n = -n;
 #if defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD)
     v_color = shade_surface(base, n, world, true);
 #else
     v_color = shade_surface(base, n, world, false);
+#endif
 #endif
 #endif
 #endif

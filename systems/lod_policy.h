@@ -33,10 +33,6 @@ struct lod_policy {
     // Behrendt 2005 §2.3, "we have to blend to the complex representation, if a typical tree is
     // closer than 30 meters" (billboard_clouds only; times plant scale and lod_scale).
     float cloud_distance_m = 30.0f;
-    // The clouds' lighting variant (§2.3): normal-mapped from the normal page, or pre-lit. The
-    // bake stores unlit colour, so "pre-lit" here shades each billboard with its plane's normal
-    // toward the eye: the lighting of a pre-lit atlas without its baked shadows.
-    bool cloud_pre_lit = false;
 
     // True when select_representation can choose the point/line representation: the scene then
     // bakes and uploads it (and does not otherwise).

@@ -14,6 +14,12 @@
 
 namespace sylva {
 
+// How a species' plants are lit (scenario `lighting`; Behrendt 2005 §2.3 and §4). The renderer
+// draws each variant with its own shader: normal-lit, the clouds' baked pre-lit page, or
+// precomputed radiance transfer in every representation.
+enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh };
+inline constexpr std::size_t k_lighting_variants = 3;
+
 // One species as the LOD systems see it. Sizes are for scale 1; instances multiply.
 struct species_entry {
     std::string name;
@@ -35,6 +41,7 @@ struct species_entry {
     float bounding_radius = 1.0f;      // sphere around the model, unit scale
     float center_height = 0.5f;        // sphere centre above the base, unit scale
     float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
+    lighting_variant lighting = lighting_variant::normal_mapped;
     // The point/line representation's parts (species_library::lod_parts), when the scene's
     // LOD policy can select it; none otherwise, and none for a species split into octree cells
     // (Deussen 2002 §6.1), whose parts belong to its cells (species_library::cells).
@@ -73,6 +80,7 @@ struct mesh_info {
     std::uint32_t triangles = 0;  // triangles, points or lines, by `primitive`
     representation drawn_as = representation::none;
     primitive_kind primitive = primitive_kind::triangles;
+    lighting_variant lighting = lighting_variant::normal_mapped;  // its species' (terrain: normal)
 };
 
 // The species table as an ECS resource (read by select_representation and build_draw_list).
@@ -99,6 +107,9 @@ struct scene_assets {
     std::vector<image_rgba8> cloud_albedo;
     std::vector<image_rgba8> cloud_normal;
     std::vector<image_rgba8> cloud_pre_lit;  // colour lit at bake time, alpha as cloud_albedo's
+    // SH transfer pages (models/billboard_cloud.h k_cloud_transfer_pages per species, in species
+    // order; blank pages for species not lit by transfer); empty when no species is.
+    std::vector<image_rgba8> cloud_transfer;
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;

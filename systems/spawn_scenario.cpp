@@ -25,6 +25,7 @@
 #include "systems/eco_tiles.h"
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
+#include "systems/lighting/transfer_rotation.h"
 #include "systems/playback.h"
 #include "systems/point_line_assets.h"
 #include "systems/species_models.h"
@@ -92,17 +93,62 @@ void match_cloud_atlas_sizes(std::vector<image_rgba8>& pages) {
     }
 }
 
+// The species' own `lighting`, or the scenario's (scenarios/scenario.h).
+lighting_variant lighting_of(const scenario& s, const species_settings& species) {
+    const std::string& name = species.lighting == "scenario" ? s.lod.lighting : species.lighting;
+    if (name == "pre_lit") return lighting_variant::pre_lit;
+    if (name == "sh") return lighting_variant::sh;
+    if (name == "normal_mapped") return lighting_variant::normal_mapped;
+    throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
+}
+
+// The clouds' transfer pages: none when no species has them; else every species' (blank pages
+// of zero transfer for those lit otherwise), at the albedo pages' common size.
+void fill_transfer_pages(std::vector<image_rgba8>& pages, const std::vector<image_rgba8>& albedo) {
+    if (std::all_of(pages.begin(), pages.end(), [](const image_rgba8& p) { return p.texels.empty(); })) {
+        pages.clear();
+        return;
+    }
+    for (image_rgba8& page : pages)
+        if (page.texels.empty()) {
+            page.width = albedo.front().width;
+            page.height = albedo.front().height;
+            page.texels.assign(std::size_t(page.width) * page.height * 4, encode_cloud_transfer(0.0f));
+        }
+    match_cloud_atlas_sizes(pages);
+}
+
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
                  const scene_needs& needs) {
     const species_settings& settings = s.species[index];
+    const std::size_t first_mesh = assets.meshes.size();
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model = load_species_model(settings, seed, cache);
     // Baked from the unscaled model, so the cache entry does not depend on height_m.
     crossed_billboard billboard = load_species_billboard(settings, seed, model, cache);
     point_line_model point_lines;
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
+    // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
+    // bake's receivers are unscaled too: transfer does not change with a uniform scale).
+    const lighting_variant lighting = lighting_of(s, settings);
+    const bool by_transfer = lighting == lighting_variant::sh;
+    transfer_settings transfer_config;
+    transfer_config.bands = s.lod.sh_bands;
+    transfer_config.seed = seed;
+    std::array<radiance_transfer, 3> transfer;
+    point_line_transfer sample_transfer;
+    if (by_transfer) {
+        transfer = load_species_transfer(settings, seed, model, transfer_config, cache);
+        if (needs.point_lines)
+            sample_transfer = load_species_point_line_transfer(settings, seed, model, point_lines, transfer_config, cache);
+    }
     billboard_cloud cloud;
-    if (needs.billboard_clouds) cloud = load_species_billboard_cloud(settings, seed, model, cache);
+    if (needs.billboard_clouds)
+        cloud = by_transfer ? load_species_billboard_cloud(settings, seed, model, cache, &transfer[0],
+                                                           species_transfer_key(settings, seed, transfer_config))
+                            : load_species_billboard_cloud(settings, seed, model, cache);
+    if (by_transfer)
+        for (std::size_t k = 0; k < model.lods.size(); ++k) model.lods[k].transfer = pack_transfer(transfer[k]);
     // Every species is scaled to the scenario's height_m, generated or imported alike; the
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
@@ -127,14 +173,30 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
     add_mesh(assets, std::move(billboard.mesh), representation::crossed_billboard, entry.mesh_billboard,
              entry.triangles_billboard);
-    if (needs.point_lines) add_point_line_parts(assets, entry, point_lines, scale, settings.importance);
+    if (needs.point_lines) {
+        point_line_records records;
+        if (by_transfer) {
+            // model.triangles keeps the full mesh's vertex array (models/point_line_model.h).
+            if (point_lines.triangles.vertices.size() != transfer[0].receiver_count())
+                throw std::logic_error("species '" + settings.name +
+                                       "': the point/line triangles do not share the full mesh's vertices");
+            records = {pack_transfer(transfer[0]), pack_transfer(sample_transfer.points),
+                       pack_transfer(sample_transfer.lines)};
+        }
+        add_point_line_parts(assets, entry, point_lines, scale, settings.importance, by_transfer ? &records : nullptr);
+    }
     if (needs.billboard_clouds) {
         add_mesh(assets, std::move(cloud.mesh), representation::billboard_cloud, entry.mesh_cloud,
                  entry.triangles_cloud);
         assets.cloud_albedo.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::albedo)]));
         assets.cloud_normal.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::normal)]));
         assets.cloud_pre_lit.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)]));
+        // Placeholders for a species without transfer pages: build_scene_assets fills them.
+        cloud.transfer_pages.resize(k_cloud_transfer_pages);
+        for (image_rgba8& page : cloud.transfer_pages) assets.cloud_transfer.push_back(std::move(page));
     }
+    entry.lighting = lighting;
+    for (std::size_t m = first_mesh; m < assets.meshes.size(); ++m) assets.library.meshes[m].lighting = entry.lighting;
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
@@ -161,6 +223,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     match_cloud_atlas_sizes(assets.cloud_albedo);
     match_cloud_atlas_sizes(assets.cloud_normal);
     match_cloud_atlas_sizes(assets.cloud_pre_lit);
+    fill_transfer_pages(assets.cloud_transfer, assets.cloud_albedo);
     return assets;
 }
 

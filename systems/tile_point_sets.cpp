@@ -10,6 +10,7 @@
 #include "components/tile.h"
 #include "components/transform.h"
 #include "models/random.h"
+#include "systems/lighting/transfer_rotation.h"
 #include "systems/point_line_assets.h"
 
 namespace sylva {
@@ -21,6 +22,7 @@ using set_key = std::tuple<std::uint32_t, material_kind, lod_primitive>;  // spe
 // A set while it is being built: samples relative to its tile's origin.
 struct sample_set {
     std::vector<vertex> vertices;  // one per point, two per line
+    std::vector<vertex_transfer> transfer;  // one per vertex when the species is lit by transfer
     double area = 0.0;
     double full_length = 0.0;  // of every line the set stands for
     float line_error = 0.0f;
@@ -31,8 +33,10 @@ struct sample_set {
 std::uint32_t vertices_per(lod_primitive p) { return p == lod_primitive::lines ? 2u : 1u; }
 
 // Takes `share` (rounded) of `from`'s samples (a prefix: a random subset), moved by `offset`.
-void take(sample_set& into, const std::vector<vertex>& from, std::uint32_t per, double share, glm::vec3 offset,
-          float yaw, float scale) {
+// Transfer records (when `from_transfer` has them) turn with the plant's yaw into the tile's
+// frame, as its normals do.
+void take(sample_set& into, const std::vector<vertex>& from, const std::vector<vertex_transfer>& from_transfer,
+          std::uint32_t per, double share, glm::vec3 offset, float yaw, float scale) {
     const auto available = std::uint32_t(from.size() / per);
     const auto n = std::min(available, std::uint32_t(std::lround(share)));
     const float c = std::cos(yaw), s = std::sin(yaw);
@@ -42,6 +46,8 @@ void take(sample_set& into, const std::vector<vertex>& from, std::uint32_t per, 
         v.position = rotate(v.position * scale) + offset;
         v.normal = rotate(v.normal);
         into.vertices.push_back(v);
+        if (!from_transfer.empty())
+            into.transfer.push_back(yaw == 0.0f ? from_transfer[i] : rotate_about_y(from_transfer[i], yaw));
     }
 }
 
@@ -117,7 +123,8 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     set.line_error = std::max(set.line_error, part.line_error_m * w.scale);
                     set.full_length += double(part.line_length_m) * w.scale;
                     set.stands_for += part.primitive_count;
-                    take(set, mesh.vertices, vertices_per(part.primitive), density[key] * a, offset, w.yaw, w.scale);
+                    take(set, mesh.vertices, mesh.transfer, vertices_per(part.primitive), density[key] * a, offset, w.yaw,
+                         w.scale);
                 });
             }
         } else {
@@ -141,8 +148,8 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     merged.line_error = std::max(merged.line_error, set.line_error);
                     merged.full_length += set.full_length;
                     merged.stands_for += set.stands_for;
-                    take(merged, set.vertices, vertices_per(std::get<2>(key)), density[key] * set.area, offset, 0.0f,
-                         1.0f);
+                    take(merged, set.vertices, set.transfer, vertices_per(std::get<2>(key)), density[key] * set.area,
+                         offset, 0.0f, 1.0f);
                 }
             }
         }
@@ -150,7 +157,9 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
         for (auto& [key, set] : own) {
             const std::uint32_t per = vertices_per(std::get<2>(key));
             rng random(hash_combine(seed, std::uint64_t(i), std::uint64_t(stream++)), 0x711eULL);
+            rng same_order = random;  // the transfer records take the vertices' permutation
             shuffle_groups(set.vertices, per, random);
+            shuffle_groups(set.transfer, per, same_order);
             set.samples = std::uint32_t(set.vertices.size() / per);
         }
     }
@@ -177,8 +186,11 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                 primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
             if (primitive == lod_primitive::lines)
                 part.mesh_splats = add_sample_mesh(
-                    assets, primitive_mesh(set.vertices, primitive_kind::points, material), 2 * set.samples);
-            part.mesh = add_sample_mesh(assets, primitive_mesh(std::move(set.vertices), kind, material), set.samples);
+                    assets, primitive_mesh(set.vertices, primitive_kind::points, material, set.transfer), 2 * set.samples);
+            part.mesh = add_sample_mesh(
+                assets, primitive_mesh(std::move(set.vertices), kind, material, std::move(set.transfer)), set.samples);
+            for (const std::uint16_t m : {part.mesh, part.mesh_splats})
+                if (m) assets.library.meshes[m].lighting = library.species[species].lighting;
             out.parts.push_back(part);
         }
         sets[i].clear();

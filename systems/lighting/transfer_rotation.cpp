@@ -36,6 +36,20 @@ vertex_transfer pack_transfer(const sh9& front, const sh9& back) {
     return out;
 }
 
+std::vector<vertex_transfer> pack_transfer(const radiance_transfer& t) {
+    const std::size_t n = std::size_t(t.bands) * t.bands;
+    std::vector<vertex_transfer> out(t.receiver_count());
+    for (std::size_t r = 0; r < out.size(); ++r) {
+        sh9 front{}, back{};
+        for (std::size_t i = 0; i < n && i < 9; ++i) {
+            front[i] = t.front[r * n + i];
+            back[i] = t.back[r * n + i];
+        }
+        out[r] = pack_transfer(front, back);
+    }
+    return out;
+}
+
 vertex_transfer rotate_about_y(const vertex_transfer& t, float yaw) {
     return pack_transfer(rotate_about_y(transfer_side(t, 0), yaw), rotate_about_y(transfer_side(t, 1), yaw));
 }

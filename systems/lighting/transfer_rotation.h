@@ -19,7 +19,10 @@
 //            w6 = (c^2 - s^2/2) t6 - sqrt3 c s t7 + (sqrt3/2) s^2 t8 (3z^2 - 1)
 //            w7 = sqrt3 c s t6 + (c^2 - s^2) t7 - c s t8             (xz)
 //            w8 = (sqrt3/2) s^2 t6 + c s t7 + (1 - s^2/2) t8         (x^2 - y^2)
+#include <vector>
+
 #include "models/mesh.h"
+#include "models/radiance_transfer.h"
 #include "systems/lighting/spherical_harmonics.h"
 
 namespace sylva {
@@ -33,5 +36,7 @@ vertex_transfer rotate_about_y(const vertex_transfer& t, float yaw);
 // The two 9-coefficient vectors of a streamed transfer, and back.
 sh9 transfer_side(const vertex_transfer& t, int side);  // 0: the side the normal faces, 1: the other
 vertex_transfer pack_transfer(const sh9& front, const sh9& back);
+// Every receiver of a bake as streamed records (2 bands: coefficients 4..8 zero).
+std::vector<vertex_transfer> pack_transfer(const radiance_transfer& t);
 
 }  // namespace sylva

@@ -20,12 +20,16 @@ struct frame_uniforms {
     glm::vec4 fog{0.0f};
     glm::vec4 params{0.0f};  // x exposure, y shadow texel uv, z time, w ground uv scale
     glm::vec4 cascade_texel_world{0.0f};
+    glm::vec4 sh_radiance[9]{};  // the sky's radiance SH, rgb (precomputed radiance transfer)
+    glm::vec4 sun_sh[3]{};       // SH basis at the sun's direction, 9 values packed 4 + 4 + 1
 };
 static_assert(offsetof(frame_uniforms, cascade_view_projection) == 256);
 static_assert(offsetof(frame_uniforms, cascade_split_far) == 512);
 static_assert(offsetof(frame_uniforms, sh_irradiance) == 560);
 static_assert(offsetof(frame_uniforms, fog) == 704);
 static_assert(offsetof(frame_uniforms, cascade_texel_world) == 736);
-static_assert(sizeof(frame_uniforms) == 752);
+static_assert(offsetof(frame_uniforms, sh_radiance) == 752);
+static_assert(offsetof(frame_uniforms, sun_sh) == 896);
+static_assert(sizeof(frame_uniforms) == 944);
 
 }  // namespace sylva::render

@@ -9,6 +9,8 @@ namespace sylva::render {
 namespace {
 
 constexpr GLuint k_vertex_binding = 0;
+constexpr GLuint k_transfer_binding = 2;  // 1 is the instance records (renderer.cpp)
+constexpr GLuint k_first_transfer_attribute = 5;
 
 // Grows a buffer to `new_bytes`, keeping the first `used_bytes` (GL 4.5 buffers are immutable).
 gl_buffer grow(gl_buffer old, std::size_t used_bytes, std::size_t new_bytes) {
@@ -31,7 +33,22 @@ mesh_pool::mesh_pool() : m_vao(make_vertex_array()) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribBinding(vao, a, k_vertex_binding);
     }
+    // vertex_transfer: five vec4s of half floats (shaders/surface.vert locations 5..9).
+    for (GLuint a = 0; a < 5; ++a) {
+        glVertexArrayAttribFormat(vao, k_first_transfer_attribute + a, 4, GL_HALF_FLOAT, GL_FALSE, a * 8);
+        glVertexArrayAttribBinding(vao, k_first_transfer_attribute + a, k_transfer_binding);
+    }
     reserve(1 << 16, 1 << 18);
+}
+
+void mesh_pool::enable_transfer() {
+    if (m_transfer) return;
+    m_transfer = grow({}, 0, m_vertex_capacity * sizeof(vertex_transfer));
+    std::vector<vertex_transfer> zeros(m_vertex_count);
+    if (!zeros.empty())
+        glNamedBufferSubData(m_transfer.id(), 0, GLsizeiptr(zeros.size() * sizeof(vertex_transfer)), zeros.data());
+    glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0, sizeof(vertex_transfer));
+    for (GLuint a = 0; a < 5; ++a) glEnableVertexArrayAttrib(m_vao.id(), k_first_transfer_attribute + a);
 }
 
 void mesh_pool::reserve(std::size_t vertex_count, std::size_t index_count) {
@@ -39,6 +56,11 @@ void mesh_pool::reserve(std::size_t vertex_count, std::size_t index_count) {
         std::size_t capacity = std::max(vertex_count, m_vertex_capacity * 2);
         m_vertices = grow(std::move(m_vertices), m_vertex_count * sizeof(vertex),
                           capacity * sizeof(vertex));
+        if (m_transfer) {
+            m_transfer = grow(std::move(m_transfer), m_vertex_count * sizeof(vertex_transfer),
+                              capacity * sizeof(vertex_transfer));
+            glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0, sizeof(vertex_transfer));
+        }
         m_vertex_capacity = capacity;
         glVertexArrayVertexBuffer(m_vao.id(), k_vertex_binding, m_vertices.id(), 0, sizeof(vertex));
     }
@@ -51,9 +73,16 @@ void mesh_pool::reserve(std::size_t vertex_count, std::size_t index_count) {
     }
 }
 
-std::uint16_t mesh_pool::add(const mesh_data& mesh) {
+std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
     if (m_meshes.size() >= std::numeric_limits<std::uint16_t>::max())
         throw std::runtime_error("mesh_pool: more than 65535 meshes");
+    if (!mesh.transfer.empty() && mesh.transfer.size() != mesh.vertices.size())
+        throw std::logic_error("mesh_pool: a mesh's transfer must have one record per vertex");
+    if (lighting == lighting_variant::sh && mesh.transfer.empty() && mesh.primitive == primitive_kind::triangles &&
+        !mesh.submeshes.empty() && mesh.submeshes[0].material != material_kind::billboard_cloud &&
+        mesh.submeshes[0].material != material_kind::billboard)
+        throw std::logic_error("mesh_pool: an SH-lit mesh needs its transfer");
+    if (!mesh.transfer.empty()) enable_transfer();
     reserve(m_vertex_count + mesh.vertices.size(), m_index_count + mesh.indices.size());
     const auto vertex_bytes = GLsizeiptr(mesh.vertices.size() * sizeof(vertex));
     const auto index_bytes = GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t));
@@ -62,12 +91,22 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh) {
     glNamedBufferSubData(m_indices.id(), GLintptr(m_index_count * sizeof(std::uint32_t)),
                          index_bytes, mesh.indices.data());
     m_uploaded_bytes += std::uint64_t(vertex_bytes + index_bytes);
+    if (m_transfer) {
+        // Zeros for a mesh without transfer: the buffer's storage starts undefined.
+        std::vector<vertex_transfer> zeros;
+        if (mesh.transfer.empty()) zeros.resize(mesh.vertices.size());
+        const auto& records = mesh.transfer.empty() ? zeros : mesh.transfer;
+        const auto transfer_bytes = GLsizeiptr(records.size() * sizeof(vertex_transfer));
+        glNamedBufferSubData(m_transfer.id(), GLintptr(m_vertex_count * sizeof(vertex_transfer)), transfer_bytes,
+                             records.data());
+        m_uploaded_bytes += std::uint64_t(transfer_bytes);
+    }
 
     gpu_mesh gpu;
     gpu.primitive = mesh.primitive;
     for (const auto& sub : mesh.submeshes) {
         gpu.submeshes.push_back({std::uint32_t(m_index_count + sub.first_index), sub.index_count,
-                                 std::int32_t(m_vertex_count), sub.material});
+                                 std::int32_t(m_vertex_count), sub.material, lighting});
         if (mesh.primitive == primitive_kind::triangles) gpu.triangle_count += sub.index_count / 3;
     }
     m_vertex_count += mesh.vertices.size();

@@ -85,7 +85,10 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         m_terrain_tiles.push_back({id, center, glm::length(tile.bounds_max - center)});
     }
     for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
-        std::uint16_t id = m_meshes.add(assets.meshes[i]);
+        // Scenes built by hand (tests) may leave the library's mesh table empty: normal-lit.
+        const lighting_variant lighting =
+            i < assets.library.meshes.size() ? assets.library.meshes[i].lighting : lighting_variant::normal_mapped;
+        std::uint16_t id = m_meshes.add(assets.meshes[i], lighting);
         if (id != i) throw std::logic_error("renderer: mesh ids must follow scene_assets order");
     }
     setup_instance_attributes(m_meshes.vertex_array());
@@ -100,17 +103,18 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         // The colour page's alpha is filtered plainly: the fade threshold reads the gaussian
         // in it. The normal page's alpha is the coverage the alpha test reads, kept per mip.
         // Pre-lit clouds read the page lit at bake time in its place (same layout and alpha).
-        m_cloud_albedo = make_texture_array(settings.cloud_pre_lit && !assets.cloud_pre_lit.empty()
-                                                ? assets.cloud_pre_lit
-                                                : assets.cloud_albedo,
-                                            false);
+        m_cloud_albedo = make_texture_array(assets.cloud_albedo, false);
         m_cloud_normal = make_texture_array(assets.cloud_normal, false, true);
+        if (!assets.cloud_pre_lit.empty()) m_cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
+        if (!assets.cloud_transfer.empty()) m_cloud_transfer = make_texture_array(assets.cloud_transfer, false);
     }
+    write_species_block(assets.library);
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
     for (const auto* images : {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
-                               &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal})
+                               &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal,
+                               &assets.cloud_pre_lit, &assets.cloud_transfer})
         for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
     m_static_upload_bytes += assets.ground_texture.texels.size();
     glEnable(GL_DEPTH_TEST);
@@ -119,7 +123,21 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
 
 renderer::~renderer() = default;
 
-GLuint renderer::surface_program(material_kind material, bool shadow, primitive_kind primitive) {
+// transfer.glsl's species_block: each species' bounding sphere (centre height, radius) by its
+// texture layer, for the shadow lookup outside the plant's own volume.
+void renderer::write_species_block(const species_library& library) {
+    if (library.species.size() > k_max_species_spheres)
+        throw std::runtime_error("renderer: at most " + std::to_string(k_max_species_spheres) + " species (the scene has " +
+                                 std::to_string(library.species.size()) + ")");
+    std::array<glm::vec4, k_max_species_spheres> spheres{};
+    for (const species_entry& e : library.species)
+        spheres[std::size_t(e.texture_layer)] = glm::vec4(e.center_height, e.bounding_radius, 0.0f, 0.0f);
+    m_species_block = make_buffer();
+    glNamedBufferStorage(m_species_block.id(), sizeof(spheres), spheres.data(), 0);
+}
+
+GLuint renderer::surface_program(material_kind material, bool shadow, primitive_kind primitive,
+                                 lighting_variant lighting) {
     program_source source{"surface.vert", "surface.frag", {}, {}};
     if (primitive == primitive_kind::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (primitive == primitive_kind::lines) {
@@ -136,8 +154,11 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
     if (material == material_kind::billboard) source.defines.push_back("MATERIAL_BILLBOARD");
     if (material == material_kind::billboard_cloud) {
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
-        if (m_settings.cloud_pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
+        if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
     }
+    // Crossed billboards and the ground have no transfer: they stay normal-lit.
+    if (lighting == lighting_variant::sh && material != material_kind::billboard && material != material_kind::ground)
+        source.defines.push_back("SH_TRANSFER");
     // Partners of a transition are drawn in the view only, and only as whole meshes.
     if (!shadow && m_settings.fade_dissolve && primitive == primitive_kind::triangles &&
         material != material_kind::ground && material != material_kind::billboard_cloud)
@@ -187,6 +208,9 @@ void renderer::write_uniforms(const frame_view& view) {
     u.sun_direction = glm::vec4(s.direction, m_cascade_count > 0 && sun_up ? 1.0f : 0.0f);
     u.sun_radiance = glm::vec4(sun_up ? s.color * s.intensity : glm::vec3(0.0f), float(m_cascade_count));
     for (int i = 0; i < 9; ++i) u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
+    for (int i = 0; i < 9; ++i) u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
+    const sh9 sun_basis = sh_basis(s.direction);
+    for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
     glm::vec3 horizon{0.0f};
     for (int i = 0; i < 9; ++i) horizon += view.sky->irradiance_sh[std::size_t(i)] * (i == 0 ? 0.282095f : 0.0f);
@@ -227,7 +251,7 @@ void renderer::write_commands(const frame_view& view) {
         const std::uint32_t per = vertices_per(mesh.primitive);
         for (const auto& sub : mesh.submeshes) {
             const std::uint32_t indices = primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
-            groups[std::size_t(pass) * k_groups_per_pass + group_of(sub.material, mesh.primitive)].push_back(
+            groups[std::size_t(pass) * k_groups_per_pass + group_of(sub.material, mesh.primitive, sub.lighting)].push_back(
                 {indices, count, sub.first_index, sub.base_vertex, first});
         }
     };
@@ -290,32 +314,26 @@ void renderer::draw_shadow_cascades() {
         glUniform1i(glGetUniformLocation(ground, "u_cascade"), c);
         const auto& groups = m_commands[std::size_t(shadow_pass(c))];
         draw_group(groups[group_of(material_kind::ground, primitive_kind::triangles)], ground, false);
-        const GLuint bark = surface_program(material_kind::bark, true);
-        glUseProgram(bark);
-        glUniform1i(glGetUniformLocation(bark, "u_cascade"), c);
-        draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles)], bark, false);
-        const GLuint leaf = surface_program(material_kind::leaf, true);
-        glUseProgram(leaf);
-        glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
-        glBindTextureUnit(0, m_leaf_textures.id());
-        draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles)], leaf, false);
-        if (groups[group_of(material_kind::billboard, primitive_kind::triangles)].count) {
-            const GLuint billboard = surface_program(material_kind::billboard, true);
-            glUseProgram(billboard);
-            glUniform1i(glGetUniformLocation(billboard, "u_cascade"), c);
-            glBindTextureUnit(0, m_billboard_albedo.id());
-            draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)], billboard, false);
+        // Depth only: every lighting variant's group is drawn with the one shadow program.
+        for (const lighting_variant l : k_all_lightings) {
+            const GLuint bark = surface_program(material_kind::bark, true);
+            glUseProgram(bark);
+            glUniform1i(glGetUniformLocation(bark, "u_cascade"), c);
+            draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles, l)], bark, false);
+            const GLuint leaf = surface_program(material_kind::leaf, true);
+            glUseProgram(leaf);
+            glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
+            glBindTextureUnit(0, m_leaf_textures.id());
+            draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles, l)], leaf, false);
+            if (groups[group_of(material_kind::billboard, primitive_kind::triangles, l)].count) {
+                const GLuint billboard = surface_program(material_kind::billboard, true);
+                glUseProgram(billboard);
+                glUniform1i(glGetUniformLocation(billboard, "u_cascade"), c);
+                glBindTextureUnit(0, m_billboard_albedo.id());
+                draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)], billboard, false);
+            }
         }
-        if (groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)].count) {
-            // Both sides of a billboard share its plane and its silhouette (the back image is
-            // the front's mirror): culling the side turned away from the sun leaves one quad
-            // per billboard and the same shadow, at half the alpha-tested fragments.
-            const GLuint cloud = surface_program(material_kind::billboard_cloud, true);
-            glUseProgram(cloud);
-            glUniform1i(glGetUniformLocation(cloud, "u_cascade"), c);
-            glBindTextureUnit(2, m_cloud_normal.id());
-            draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)], cloud, true);
-        }
+        draw_clouds(groups, c);
         draw_samples(groups, c);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -336,24 +354,23 @@ void renderer::draw_opaque() {
     const auto& groups = m_commands[std::size_t(render_pass::opaque)];
     glBindTextureUnit(0, m_ground_texture.id());
     draw_group(groups[group_of(material_kind::ground, primitive_kind::triangles)], surface_program(material_kind::ground, false), true);
-    glBindTextureUnit(0, m_bark_textures.id());
-    draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles)], surface_program(material_kind::bark, false), true);
-    glBindTextureUnit(0, m_leaf_textures.id());
-    draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles)], surface_program(material_kind::leaf, false), false);
-    if (groups[group_of(material_kind::billboard, primitive_kind::triangles)].count) {
-        glBindTextureUnit(0, m_billboard_albedo.id());
-        glBindTextureUnit(2, m_billboard_normal.id());
-        draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles)],
-                   surface_program(material_kind::billboard, false), false);
+    if (!m_species_block.id()) throw std::logic_error("renderer: no species block");
+    glBindBufferBase(GL_UNIFORM_BUFFER, 1, m_species_block.id());
+    for (const lighting_variant l : k_all_lightings) {
+        glBindTextureUnit(0, m_bark_textures.id());
+        draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles, l)],
+                   surface_program(material_kind::bark, false, primitive_kind::triangles, l), true);
+        glBindTextureUnit(0, m_leaf_textures.id());
+        draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles, l)],
+                   surface_program(material_kind::leaf, false, primitive_kind::triangles, l), false);
+        if (groups[group_of(material_kind::billboard, primitive_kind::triangles, l)].count) {
+            glBindTextureUnit(0, m_billboard_albedo.id());
+            glBindTextureUnit(2, m_billboard_normal.id());
+            draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)],
+                       surface_program(material_kind::billboard, false, primitive_kind::triangles, l), false);
+        }
     }
-    if (groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)].count) {
-        // One-sided quads (models/billboard_cloud.h): each side of a billboard shows only to
-        // its own viewer.
-        glBindTextureUnit(0, m_cloud_albedo.id());
-        glBindTextureUnit(2, m_cloud_normal.id());
-        draw_group(groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles)],
-                   surface_program(material_kind::billboard_cloud, false), true);
-    }
+    draw_clouds(groups, -1);
     draw_samples(groups, -1);
     m_timer.end();
 }
@@ -362,11 +379,12 @@ void renderer::draw_opaque() {
 // parts, in a shadow cascade (`cascade` >= 0) or the view (-1).
 void renderer::draw_samples(const pass_commands& groups, int cascade) {
     const bool shadow = cascade >= 0;
+    for (const lighting_variant lighting : k_all_lightings)
     for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
         for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
-            const command_range& range = groups[group_of(material, primitive)];
+            const command_range& range = groups[group_of(material, primitive, lighting)];
             if (range.count == 0) continue;
-            const GLuint program = surface_program(material, shadow, primitive);
+            const GLuint program = surface_program(material, shadow, primitive, shadow ? lighting_variant::normal_mapped : lighting);
             glUseProgram(program);
             if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
             if (primitive == primitive_kind::points) {
@@ -386,6 +404,29 @@ void renderer::draw_samples(const pass_commands& groups, int cascade) {
             glBindTextureUnit(0, material == material_kind::leaf ? m_leaf_textures.id() : m_bark_textures.id());
             draw_group(range, program, false, primitive);
         }
+    }
+}
+
+// Billboard-cloud quads (models/billboard_cloud.h) of every lighting variant, in a shadow
+// cascade (`cascade` >= 0) or the view (-1). One-sided: each side of a billboard shows only to
+// its own viewer. In a cascade, both sides of a billboard share its plane and silhouette (the
+// back image is the front's mirror): culling the side turned away from the sun leaves one quad
+// per billboard and the same shadow, at half the alpha-tested fragments.
+void renderer::draw_clouds(const pass_commands& groups, int cascade) {
+    const bool shadow = cascade >= 0;
+    for (const lighting_variant l : k_all_lightings) {
+        const command_range& range = groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
+        if (range.count == 0) continue;
+        const GLuint program = surface_program(material_kind::billboard_cloud, shadow, primitive_kind::triangles,
+                                               shadow ? lighting_variant::normal_mapped : l);
+        glUseProgram(program);
+        if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
+        // Pre-lit clouds read the page lit at bake time in the colour page's place (same layout
+        // and alpha); SH clouds add their transfer pages.
+        glBindTextureUnit(0, !shadow && l == lighting_variant::pre_lit ? m_cloud_pre_lit.id() : m_cloud_albedo.id());
+        glBindTextureUnit(2, m_cloud_normal.id());
+        if (!shadow && l == lighting_variant::sh) glBindTextureUnit(3, m_cloud_transfer.id());
+        draw_group(range, program, true);
     }
 }
 

@@ -41,8 +41,6 @@ struct renderer_settings {
     // screen-door dissolve by their instance's fade. Only scenes whose LOD policy fades ask for
     // it: a discard in the bark shader costs early depth rejection on a software rasteriser.
     bool fade_dissolve = false;
-    // The clouds' pre-lit variant (lod_policy::cloud_pre_lit), else normal-mapped.
-    bool cloud_pre_lit = false;
 };
 
 // What one frame draws, gathered by the submit system from the ECS.
@@ -91,11 +89,11 @@ private:
         std::size_t offset = 0;  // bytes into the ring buffer
         std::uint32_t count = 0;
     };
-    // Indirect command groups per pass (shadow cascades and opaque), material and primitive.
-    // material_kind: bark, leaf, ground, billboard, billboard_cloud
+    // Indirect command groups per pass (shadow cascades and opaque), material, primitive and
+    // lighting variant. material_kind: bark, leaf, ground, billboard, billboard_cloud
     static constexpr std::size_t k_materials = 5;
     static constexpr std::size_t k_primitives = 3;  // primitive_kind: triangles, points, lines
-    static constexpr std::size_t k_groups_per_pass = k_materials * k_primitives;
+    static constexpr std::size_t k_groups_per_pass = k_materials * k_primitives * k_lighting_variants;
     using pass_commands = std::array<command_range, k_groups_per_pass>;
     // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
     struct indirect_command {
@@ -106,8 +104,9 @@ private:
         std::uint32_t base_instance;
     };
     static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * k_groups_per_pass;
-    static constexpr std::size_t group_of(material_kind m, primitive_kind p) {
-        return std::size_t(p) * k_materials + std::size_t(m);
+    static constexpr std::size_t group_of(material_kind m, primitive_kind p,
+                                          lighting_variant l = lighting_variant::normal_mapped) {
+        return (std::size_t(l) * k_primitives + std::size_t(p)) * k_materials + std::size_t(m);
     }
 
     void update_sky_texture(const frame_view& view);
@@ -117,11 +116,17 @@ private:
     void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
                     primitive_kind primitive = primitive_kind::triangles);
     void draw_samples(const pass_commands& groups, int cascade);
+    void draw_clouds(const pass_commands& groups, int cascade);
+    void write_species_block(const species_library& library);
+    static constexpr std::size_t k_max_species_spheres = 64;  // transfer.glsl u_species_sphere
+    static constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
+        lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh};
     void draw_shadow_cascades();
     void draw_opaque();
     void draw_sky();
     GLuint surface_program(material_kind material, bool shadow,
-                           primitive_kind primitive = primitive_kind::triangles);
+                           primitive_kind primitive = primitive_kind::triangles,
+                           lighting_variant lighting = lighting_variant::normal_mapped);
 
     renderer_settings m_settings;
     shader_library m_shaders;
@@ -137,6 +142,9 @@ private:
     gl_texture m_billboard_normal;  // and model-space normals
     gl_texture m_cloud_albedo;      // billboard clouds: colour with coverage x gaussian alpha
     gl_texture m_cloud_normal;      // and model-space normals with coverage alpha
+    gl_texture m_cloud_pre_lit;     // colour lit at bake time (pre-lit species)
+    gl_texture m_cloud_transfer;    // SH transfer pages, k_cloud_transfer_pages layers per species
+    gl_buffer m_species_block;      // transfer.glsl species_block: each species' sphere
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::optional<sky_model> m_sky_drawn;  // what m_sky_texture holds

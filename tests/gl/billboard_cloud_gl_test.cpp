@@ -80,7 +80,7 @@ player_options cloud_only(bool pre_lit = false) {
     player_options options;
     options.id_buffer = true;
     options.policy = {lod_policy::kind::single, representation::billboard_cloud, representation::billboard_cloud, 0.0f};
-    options.policy.cloud_pre_lit = pre_lit;
+    if (pre_lit) options.lighting = "pre_lit";
     return options;
 }
 

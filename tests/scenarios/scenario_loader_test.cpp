@@ -307,7 +307,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "tiles_per_side"},
         {"/species/0/heigth_m",
          "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
-         "importance, octree_depth"},
+         "importance, octree_depth, lighting"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
          "min_altitude_m, max_altitude_m, placement, density_map, density"},
@@ -320,7 +320,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
         {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
-                   "cloud_distance_m, cloud_lighting"},
+                   "cloud_distance_m, lighting, sh_bands"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -703,15 +703,28 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
 
 TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {
     json j = minimal();
-    j["lod"] = {{"representation", "billboard_clouds"}, {"cloud_distance_m", 45}, {"cloud_lighting", "pre_lit"}};
+    j["lod"] = {{"representation", "billboard_clouds"}, {"cloud_distance_m", 45}, {"lighting", "pre_lit"}};
     const scenario s = load(j);
     EXPECT_EQ(s.lod.representation, "billboard_clouds");
     EXPECT_EQ(s.lod.cloud_distance_m, 45.0f);
-    EXPECT_EQ(s.lod.cloud_lighting, "pre_lit");
+    EXPECT_EQ(s.lod.lighting, "pre_lit");
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
     const scenario d = load(minimal());
     EXPECT_EQ(d.lod.cloud_distance_m, 30.0f);  // Behrendt 2005 §2.3: "closer than 30 meters"
-    EXPECT_EQ(d.lod.cloud_lighting, "normal_mapped");
+    EXPECT_EQ(d.lod.lighting, "normal_mapped");
+    EXPECT_EQ(d.lod.sh_bands, 3u);
+    EXPECT_EQ(d.species[0].lighting, "scenario");
+}
+
+TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
+    json j = minimal();
+    j["lod"] = {{"lighting", "sh"}, {"sh_bands", 2}};
+    j["species"][0]["lighting"] = "pre_lit";
+    const scenario s = load(j);
+    EXPECT_EQ(s.lod.lighting, "sh");
+    EXPECT_EQ(s.lod.sh_bands, 2u);
+    EXPECT_EQ(s.species[0].lighting, "pre_lit");
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
 }
 
 TEST(scenario_loader, lod_fields_name_the_bad_value) {
@@ -720,8 +733,11 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
                   "\"voxels\""});
     expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
                  {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});
-    expect_error(set(minimal(), "/lod/cloud_lighting", "sh"),
-                 {"/lod/cloud_lighting", "unknown value; expected one of: normal_mapped, pre_lit", "\"sh\""});
+    expect_error(set(minimal(), "/lod/lighting", "shiny"),
+                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh", "\"shiny\""});
+    expect_error(set(minimal(), "/lod/sh_bands", 4), {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
+    expect_error(set(minimal(), "/species/0/lighting", "sh3"),
+                 {"/species/0/lighting", "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh", "\"sh3\""});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),
                  {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
     expect_error(set(minimal(), "/lod/splat_factor", 0.5),

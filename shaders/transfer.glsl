@@ -1,0 +1,56 @@
+// Precomputed radiance transfer (Behrendt 2005 §4, after Sloan, Kautz and Snyder 2002): each
+// vertex, point, line end or cloud texel carries two 9-coefficient SH transfer vectors baked
+// from the full plant with its self-shadowing (models/radiance_transfer.h): one for light
+// arriving on the side its normal faces, one for the other side. Shading is "the scalar product
+// of the coefficients" with the environment's radiance coefficients: the sky (u_sh_radiance)
+// and the sun as a directional light (u_sun_sh: the basis at the sun's direction; its colour is
+// u_sun_radiance). Every representation of a plant reads the same coefficients, so a plant is
+// lit alike at every distance. Needs common.glsl first.
+
+// The plants' spheres (centre height above the base and radius, scale 1), by texture layer:
+// shadows between objects (Behrendt 2005 §4: "we use a shadow map") are looked up from where
+// the sun's ray leaves the plant's own sphere, so the map adds the shadows of other objects
+// and not a second, sharper copy of the self-shadowing the transfer already holds.
+layout(std140, binding = 1) uniform species_block {
+    vec4 u_species_sphere[64];  // x centre height, y radius
+};
+
+// Mirrors sylva::rotate_about_y (systems/lighting/transfer_rotation.h, where it is derived):
+// model-space coefficients to world space under the instance yaw, c = cos, s = sin.
+void sh_rotate_about_y(inout float t[9], float c, float s) {
+    const float sqrt3 = 1.7320508;
+    float t2 = t[2], t3 = t[3], t4 = t[4], t5 = t[5], t6 = t[6], t7 = t[7], t8 = t[8];
+    t[2] = c * t2 - s * t3;
+    t[3] = s * t2 + c * t3;
+    t[4] = c * t4 + s * t5;
+    t[5] = -s * t4 + c * t5;
+    t[6] = (c * c - 0.5 * s * s) * t6 - sqrt3 * c * s * t7 + 0.5 * sqrt3 * s * s * t8;
+    t[7] = sqrt3 * c * s * t6 + (c * c - s * s) * t7 - c * s * t8;
+    t[8] = 0.5 * sqrt3 * s * s * t6 + c * s * t7 + (1.0 - 0.5 * s * s) * t8;
+}
+
+// Sky light through the transfer: sum_i T_i L_i per channel (irradiance-like: the albedo/pi
+// is applied by the caller).
+vec3 sh_transfer_sky(float t[9]) {
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < 9; ++i) e += t[i] * u_sh_radiance[i].rgb;
+    return e;
+}
+
+// The sun through the transfer, per unit of its irradiance: sum_i T_i Y_i(l).
+float sh_transfer_sun(float t[9]) {
+    float e = 0.0;
+    for (int i = 0; i < 9; ++i) e += t[i] * u_sun_sh[i / 4][i % 4];
+    return e;
+}
+
+// How far the sun's ray from `position` (camera-relative) runs inside the plant's sphere; the
+// plant instance stands at `origin` (camera-relative) with `scale`.
+float sphere_exit_distance(vec3 position, vec3 origin, float scale, float layer) {
+    vec4 sphere = u_species_sphere[int(layer + 0.5)];
+    vec3 d = position - (origin + vec3(0.0, sphere.x * scale, 0.0));
+    float r = sphere.y * scale;
+    float b = dot(d, u_sun_direction.xyz);
+    float disc = b * b - (dot(d, d) - r * r);
+    return disc > 0.0 ? max(-b + sqrt(disc), 0.0) : 0.0;
+}
