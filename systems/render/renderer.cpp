@@ -9,7 +9,9 @@
 
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
+#include "systems/lighting/environment_map.h"
 #include "systems/lighting/sky_model.h"
+#include "systems/project_environment_system.h"
 #include "systems/render/frame_uniforms.h"
 #include "systems/render/textures.h"
 
@@ -60,6 +62,30 @@ void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
     }
 }
 
+// The environment map (k_sky_width x k_sky_height, rows from the zenith) turned by turn_deg
+// of azimuth about the vertical: world column i shows the map at azimuth phi_i - turn, read
+// with linear interpolation across columns (wrapping at south), scaled by `intensity`.
+void fill_map_sky_grid(const std::vector<float>& map, float turn_deg, float intensity,
+                       std::vector<float>& rgb) {
+    rgb.resize(std::size_t(k_sky_width) * k_sky_height * 3);
+    const double shift = double(turn_deg) / 360.0 * k_sky_width;
+    for (int i = 0; i < k_sky_width; ++i) {
+        double source = std::fmod(double(i) - shift, double(k_sky_width));
+        if (source < 0.0) source += k_sky_width;
+        const auto left = int(source) % k_sky_width;
+        const int right = (left + 1) % k_sky_width;
+        const auto t = float(source - std::floor(source));
+        for (int j = 0; j < k_sky_height; ++j) {
+            const std::size_t row = std::size_t(j) * k_sky_width;
+            for (int c = 0; c < 3; ++c) {
+                const float a = map[(row + std::size_t(left)) * 3 + std::size_t(c)];
+                const float b = map[(row + std::size_t(right)) * 3 + std::size_t(c)];
+                rgb[(row + std::size_t(i)) * 3 + std::size_t(c)] = intensity * (a + (b - a) * t);
+            }
+        }
+    }
+}
+
 bool same_sky(const sky_model& a, const sky_model& b) {
     return a.sun_direction == b.sun_direction && a.turbidity == b.turbidity && a.sky_intensity == b.sky_intensity &&
            a.ground_albedo == b.ground_albedo && a.sun_irradiance == b.sun_irradiance;
@@ -106,6 +132,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
                                             false);
         m_cloud_normal = make_texture_array(assets.cloud_normal, false, true);
     }
+    if (assets.environment_sky.width > 0)
+        m_map_sky = downsample_environment_map(assets.environment_sky, k_sky_width, k_sky_height).rgb;
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
@@ -153,19 +181,32 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
 }
 
 void renderer::update_sky_texture(const frame_view& view) {
+    if (!m_map_sky.empty()) {
+        // An environment map: only its turn and brightness change while the scene plays.
+        const std::pair key{environment_map_turn_deg(*view.sky, *view.sun_light), view.sky->sky_intensity};
+        if (m_sky_texture && m_map_drawn == key) return;
+        fill_map_sky_grid(m_map_sky, key.first, std::max(key.second, 0.0f), m_sky_grid);
+        upload_sky_grid();
+        m_map_drawn = key;
+        return;
+    }
     // Keyed on the sky's inputs, not on environment::sky_revision: revisions count changes of
     // one environment, and two environments drawn by one renderer (the primitive-cost
     // calibration's and a scene's) can share a number while their skies differ.
     const sky_model sky = sky_of(view);
     if (m_sky_texture && m_sky_drawn && same_sky(*m_sky_drawn, sky)) return;
-    std::vector<float>& grid = m_sky_grid;
-    fill_sky_radiance_grid(sky, grid);
+    fill_sky_radiance_grid(sky, m_sky_grid);
+    upload_sky_grid();
+    m_sky_drawn = sky;
+}
+
+void renderer::upload_sky_grid() {
+    const std::vector<float>& grid = m_sky_grid;
     if (!m_sky_texture)
         m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
     else  // the sun moved: same texture, new texels (no GL allocation in the frame loop)
         glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB, GL_FLOAT,
                             grid.data());
-    m_sky_drawn = sky;
     m_frame_upload_bytes += grid.size() * sizeof(float);
 }
 
