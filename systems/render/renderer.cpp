@@ -68,7 +68,8 @@ void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
 void fill_map_sky_grid(const std::vector<float>& map, float turn_deg, float intensity,
                        std::vector<float>& rgb) {
     rgb.resize(std::size_t(k_sky_width) * k_sky_height * 3);
-    const double shift = double(turn_deg) / 360.0 * k_sky_width;
+    // A non-finite turn (no scenario gives one) draws the map unturned, as the SH are.
+    const double shift = std::isfinite(turn_deg) ? double(turn_deg) / 360.0 * k_sky_width : 0.0;
     for (int i = 0; i < k_sky_width; ++i) {
         double source = std::fmod(double(i) - shift, double(k_sky_width));
         if (source < 0.0) source += k_sky_width;
@@ -185,7 +186,7 @@ void renderer::update_sky_texture(const frame_view& view) {
         // An environment map: only its turn and brightness change while the scene plays.
         const std::pair key{environment_map_turn_deg(*view.sky, *view.sun_light), view.sky->sky_intensity};
         if (m_sky_texture && m_map_drawn == key) return;
-        fill_map_sky_grid(m_map_sky, key.first, std::max(key.second, 0.0f), m_sky_grid);
+        fill_map_sky_grid(m_map_sky, key.first, key.second > 0.0f ? key.second : 0.0f, m_sky_grid);
         upload_sky_grid();
         m_map_drawn = key;
         return;
