@@ -91,7 +91,21 @@
 //     }
 //     intensity      number  3   0 .. 1000000
 //     turbidity      number  3   1.7 .. 10 (Preetham sky)
-//     sky_intensity  number  1   0 .. 1000000
+//     sky_intensity  number  1   0 .. 1000000; also scales the environment map's radiance
+//   }
+//   environment {  what lights the scene besides the sun (the sun stays a directional light)
+//     map              file path  none  an HDR latitude-longitude map (.hdr or .exr, linear
+//                                       float RGB, width = 2 x height; orientation in
+//                                       systems/lighting/environment_map.h: the image centre
+//                                       is north, -z, the top row the zenith). When set, its
+//                                       SH projection replaces the Preetham sky's (turbidity
+//                                       then only colours the sun) and it is drawn as the sky;
+//                                       it turns about the vertical with the sun: as the sun's
+//                                       azimuth moves away from the first sun keyframe's, the
+//                                       map turns by the same angle
+//     map_rotation_deg number     0     -360 .. 360; turns the map about the vertical,
+//                                       clockwise seen from above (as azimuth grows: 90 puts
+//                                       the map's north at east); only with map
 //   }
 //   shadows {
 //     cascades       integer 3     1 .. 4
@@ -250,6 +264,12 @@ struct sun_settings {
     bool operator==(const sun_settings&) const = default;
 };
 
+struct environment_settings {
+    std::string map;  // absolute path, empty: the analytic (Preetham) sky
+    float map_rotation_deg = 0.0f;
+    bool operator==(const environment_settings&) const = default;
+};
+
 struct shadow_settings {
     std::uint32_t cascades = 3;
     std::uint32_t resolution = 1024;  // texels per side of each cascade
@@ -304,6 +324,7 @@ struct scenario {
     std::vector<population_settings> populations;
     camera_settings camera;
     sun_settings sun;
+    environment_settings environment;
     shadow_settings shadows;
     render_settings render;
     eco_tile_settings eco_tiles;

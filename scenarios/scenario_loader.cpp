@@ -278,6 +278,20 @@ const field_table<sun_settings>& sun_fields() {
     return table;
 }
 
+const field_table<environment_settings>& environment_fields() {
+    using t = environment_settings;
+    static const auto table =
+        field_table<t>()
+            .file_path("map", &t::map)
+            .number("map_rotation_deg", &t::map_rotation_deg, {-360.0, 360.0})
+            .check([](const json_node& n, const t& e) {
+                // A rotation of nothing is a mistake worth hearing about, not a silent no-op.
+                if (e.map.empty() && e.map_rotation_deg != 0.0f)
+                    n.find("map_rotation_deg")->fail("turns the environment map; give map too");
+            });
+    return table;
+}
+
 const field_table<shadow_settings>& shadow_fields() {
     using t = shadow_settings;
     static const auto table =
@@ -353,6 +367,7 @@ const field_table<scenario>& scenario_fields() {
             .required()
             .object("camera", &t::camera, camera_fields())
             .object("sun", &t::sun, sun_fields())
+            .object("environment", &t::environment, environment_fields())
             .object("shadows", &t::shadows, shadow_fields())
             .object("render", &t::render, render_fields())
             .object("eco_tiles", &t::eco_tiles, eco_tile_fields())

@@ -1,5 +1,6 @@
 // The analytic sky (Preetham 1999, evaluated on the CPU into an equirectangular texture when
-// the sun moves) plus the sun's disk, with the same fog and tone mapping as the surfaces.
+// the sun moves), or the scenario's environment map turned with the sun (the same texture,
+// filled from the map), plus the sun's disk, with the same fog and tone mapping as the surfaces.
 #include "common.glsl"
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_sky;

@@ -1,12 +1,24 @@
 #pragma once
-// Projects the sky (sun and analytic sky) to 3-band spherical harmonics and convolves it with
-// the clamped cosine, giving the irradiance every surface is lit with. Runs only when the sky
-// changed (environment::sky_revision), so a static sky costs nothing per frame.
+// Projects the environment (the analytic sky, or the scenario's environment map) to 3-band
+// spherical harmonics: radiance_sh for transfer vectors and, convolved with the clamped cosine,
+// irradiance_sh, what every surface is lit with. Runs only when the sky changed
+// (environment::sky_revision), so a static sky costs nothing per frame. A sun that only moves
+// in azimuth costs a rotation (systems/lighting/sh_rotation.h), not an integration.
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"
 
 namespace sylva {
+
+// The work of the system, on plain data: fills env.radiance_sh, env.irradiance_sh and
+// env.sky_cache from `light`'s elevation and azimuth (its direction is derived from them by
+// update_sun). Ignores sky_revision.
+void project_environment(environment& env, const sun& light);
+
+// How far the environment map is turned about the vertical, in degrees of azimuth (clockwise
+// from above): the scenario's map_rotation_deg plus the sun's azimuth change since the first
+// keyframe. The SH projection and the renderer's sky background both turn by it.
+float environment_map_turn_deg(const environment& env, const sun& light);
 
 struct project_environment_system {
     static constexpr std::string_view k_name = "project_environment";

@@ -2,6 +2,7 @@
 // Everything a scenario needs drawn, built once on the CPU before the frame loop: the meshes
 // (index = mesh id, used in sort keys), per-species textures (index = texture array layer), the
 // terrain, and the species table the per-frame systems read as a resource.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "models/mesh.h"
 #include "models/point_line_model.h"
 #include "models/terrain.h"
+#include "systems/lighting/environment_map.h"
 
 namespace sylva {
 
@@ -92,6 +94,10 @@ struct species_library {
     std::vector<std::uint32_t> points_after;  // lod_part_entry::first_after indexes it
 };
 
+// Width of scene_assets::environment_sky: twice the renderer's 128-texel sky texture, so the
+// reduction there still averages a few texels; small enough to keep with the assets.
+inline constexpr int k_environment_sky_width = 256;
+
 struct scene_assets {
     std::vector<mesh_data> meshes;
     std::vector<image_rgba8> leaf_textures;  // one layer per species, same size
@@ -114,6 +120,11 @@ struct scene_assets {
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
     float ground_uv_scale_m = 4.0f;
     heightfield terrain;
+    // The scenario's environment map (environment.map), when it names one: its radiance SH as
+    // the file lies (spawn_scenario hands it to the environment component), and the map reduced
+    // to k_environment_sky_width x half that for the renderer's sky background. Empty otherwise.
+    std::array<glm::vec3, 9> environment_map_sh{};
+    environment_map environment_sky;
     species_library library;
     std::uint64_t source_triangles = 0;  // sum over instances of full-detail triangles
 };

@@ -24,6 +24,7 @@
 #include "systems/draw_list.h"
 #include "systems/eco_tiles.h"
 #include "systems/frame_stats.h"
+#include "systems/lighting/environment_map.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/lighting/transfer_rotation.h"
 #include "systems/playback.h"
@@ -219,6 +220,15 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
         assets.meshes.push_back(std::move(tile));
     }
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
+    if (!s.environment.map.empty()) {
+        const environment_map map = load_environment_map(s.environment.map);
+        if (map.sanitised_texels > 0)
+            spdlog::warn("environment map {}: {} texels were NaN, infinite or negative; set to 0",
+                         s.environment.map, map.sanitised_texels);
+        assets.environment_map_sh = project_environment_map(map).c;
+        assets.environment_sky = downsample_environment_map(map, k_environment_sky_width,
+                                                            k_environment_sky_width / 2);
+    }
     for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
     match_cloud_atlas_sizes(assets.cloud_albedo);
     match_cloud_atlas_sizes(assets.cloud_normal);
@@ -339,7 +349,7 @@ std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_asset
     return plants.size();
 }
 
-void spawn_viewer_and_sky(ecs::world& world, const scenario& s) {
+void spawn_viewer_and_sky(ecs::world& world, const scenario& s, const scene_assets& assets) {
     const ecs::entity viewer = world.create();
     camera cam;
     cam.aspect = float(s.width) / float(s.height);
@@ -355,6 +365,12 @@ void spawn_viewer_and_sky(ecs::world& world, const scenario& s) {
     env.turbidity = s.sun.turbidity;
     env.sky_intensity = s.sun.sky_intensity;
     env.sky_revision = 0;  // update_sun sets the first revision
+    // The sky is integrated with the sun here and turned to its azimuth, and the map turns
+    // with the sun from here (components/environment.h).
+    if (!s.sun.keyframes.empty()) env.reference_azimuth_deg = s.sun.keyframes.front().azimuth_deg;
+    env.has_map = !s.environment.map.empty();
+    env.map_rotation_deg = s.environment.map_rotation_deg;
+    env.map_radiance_sh = assets.environment_map_sh;
     world.emplace<environment>(sky, env);
 }
 
@@ -363,7 +379,7 @@ void spawn_viewer_and_sky(ecs::world& world, const scenario& s) {
 spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_assets& assets) {
     spawn_report report;
     for (const auto& pop : s.populations) report.requested += pop.count;
-    spawn_viewer_and_sky(world, s);
+    spawn_viewer_and_sky(world, s, assets);
     report.plants = spawn_plants(world, s, assets);
 
     world.set_resource(playback_clock{0, s.fps});

@@ -223,6 +223,15 @@ glm::vec3 sun_direction_from_angles(float elevation_deg, float azimuth_deg) {
                      float(-std::cos(e) * std::cos(a)));
 }
 
+glm::mat3 azimuth_rotation(float delta_azimuth_deg) {
+    // (sin a, y, -cos a) -> (sin(a + d), y, -cos(a + d)) by the angle-sum identities:
+    // x' = cos d x - sin d z, z' = sin d x + cos d z. glm matrices are built from columns.
+    const double d = glm::radians(double(delta_azimuth_deg));
+    const auto c = float(std::cos(d));
+    const auto s = float(std::sin(d));
+    return glm::mat3(glm::vec3(c, 0.0f, s), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(-s, 0.0f, c));
+}
+
 namespace {
 
 // Representative wavelengths (micrometres) for the linear sRGB channels; sampling the

@@ -7,6 +7,7 @@
 // Directions: world space, y up, x east, -z north; unit vectors.
 // Units: the model's luminance (kcd/m^2) is scaled so that sky_intensity = 1 gives radiance
 // of roughly 0.5-1.5 at mid sun elevations, matching the renderer's sun intensity of a few units.
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "systems/lighting/spherical_harmonics.h"
@@ -39,6 +40,11 @@ sh9_rgb project_sky(const sky_model& sky, int samples_theta = 64, int samples_ph
 // Unit vector towards the sun. Elevation in degrees above the horizon; azimuth in degrees
 // clockwise from north seen from above: 0 = north = -z, 90 = east = +x, 180 = south = +z.
 glm::vec3 sun_direction_from_angles(float elevation_deg, float azimuth_deg);
+
+// The rotation about world y (up) that adds `delta_azimuth_deg` to every direction's azimuth in
+// the convention above: sun_direction_from_angles(e, a) goes to sun_direction_from_angles(e,
+// a + delta). Clockwise seen from above, so it is a right-handed rotation by -delta about +y.
+glm::mat3 azimuth_rotation(float delta_azimuth_deg);
 
 // The sun's colour after atmospheric extinction along its slant path (reddish near the horizon),
 // per linear RGB channel, normalised so that the overhead sun through a clear (T = 2) atmosphere

@@ -35,6 +35,17 @@
 
 namespace sylva {
 
+// Bands 0..bands-1 hold bands^2 coefficients (band l has 2l + 1): 4 for 2 bands, 9 for 3.
+constexpr int sh_coefficient_count(int bands) {
+    return bands * bands;
+}
+inline constexpr int k_sh_bands = 3;
+
+// 2 bands from 3: the first sh_coefficient_count(2) = 4 coefficients of a 9-term projection ARE
+// the 2-band projection. The basis is orthonormal, so c_i = integral f Y_i depends on Y_i alone,
+// not on which other basis functions are kept, and the truncated sum is the least-squares best
+// fit in bands 0..1 (the projection theorem). Transfer vectors of 4 coefficients therefore dot
+// with the first 4 of radiance_sh, no re-projection needed.
 using sh9 = std::array<float, 9>;
 
 struct sh9_rgb {

@@ -9,7 +9,9 @@
 
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
+#include "systems/lighting/environment_map.h"
 #include "systems/lighting/sky_model.h"
+#include "systems/project_environment_system.h"
 #include "systems/render/frame_uniforms.h"
 #include "systems/render/textures.h"
 
@@ -56,6 +58,31 @@ void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
             glm::vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
             glm::vec3 l = sky.radiance(d);
             std::memcpy(&rgb[(std::size_t(j) * k_sky_width + i) * 3], &l, sizeof(l));
+        }
+    }
+}
+
+// The environment map (k_sky_width x k_sky_height, rows from the zenith) turned by turn_deg
+// of azimuth about the vertical: world column i shows the map at azimuth phi_i - turn, read
+// with linear interpolation across columns (wrapping at south), scaled by `intensity`.
+void fill_map_sky_grid(const std::vector<float>& map, float turn_deg, float intensity,
+                       std::vector<float>& rgb) {
+    rgb.resize(std::size_t(k_sky_width) * k_sky_height * 3);
+    // A non-finite turn (no scenario gives one) draws the map unturned, as the SH are.
+    const double shift = std::isfinite(turn_deg) ? double(turn_deg) / 360.0 * k_sky_width : 0.0;
+    for (int i = 0; i < k_sky_width; ++i) {
+        double source = std::fmod(double(i) - shift, double(k_sky_width));
+        if (source < 0.0) source += k_sky_width;
+        const auto left = int(source) % k_sky_width;
+        const int right = (left + 1) % k_sky_width;
+        const auto t = float(source - std::floor(source));
+        for (int j = 0; j < k_sky_height; ++j) {
+            const std::size_t row = std::size_t(j) * k_sky_width;
+            for (int c = 0; c < 3; ++c) {
+                const float a = map[(row + std::size_t(left)) * 3 + std::size_t(c)];
+                const float b = map[(row + std::size_t(right)) * 3 + std::size_t(c)];
+                rgb[(row + std::size_t(i)) * 3 + std::size_t(c)] = intensity * (a + (b - a) * t);
+            }
         }
     }
 }
@@ -109,6 +136,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         if (!assets.cloud_transfer.empty()) m_cloud_transfer = make_texture_array(assets.cloud_transfer, false);
     }
     write_species_block(assets.library);
+    if (assets.environment_sky.width > 0)
+        m_map_sky = downsample_environment_map(assets.environment_sky, k_sky_width, k_sky_height).rgb;
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
@@ -174,19 +203,32 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
 }
 
 void renderer::update_sky_texture(const frame_view& view) {
+    if (!m_map_sky.empty()) {
+        // An environment map: only its turn and brightness change while the scene plays.
+        const std::pair key{environment_map_turn_deg(*view.sky, *view.sun_light), view.sky->sky_intensity};
+        if (m_sky_texture && m_map_drawn == key) return;
+        fill_map_sky_grid(m_map_sky, key.first, key.second > 0.0f ? key.second : 0.0f, m_sky_grid);
+        upload_sky_grid();
+        m_map_drawn = key;
+        return;
+    }
     // Keyed on the sky's inputs, not on environment::sky_revision: revisions count changes of
     // one environment, and two environments drawn by one renderer (the primitive-cost
     // calibration's and a scene's) can share a number while their skies differ.
     const sky_model sky = sky_of(view);
     if (m_sky_texture && m_sky_drawn && same_sky(*m_sky_drawn, sky)) return;
-    std::vector<float>& grid = m_sky_grid;
-    fill_sky_radiance_grid(sky, grid);
+    fill_sky_radiance_grid(sky, m_sky_grid);
+    upload_sky_grid();
+    m_sky_drawn = sky;
+}
+
+void renderer::upload_sky_grid() {
+    const std::vector<float>& grid = m_sky_grid;
     if (!m_sky_texture)
         m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
     else  // the sun moved: same texture, new texels (no GL allocation in the frame loop)
         glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB, GL_FLOAT,
                             grid.data());
-    m_sky_drawn = sky;
     m_frame_upload_bytes += grid.size() * sizeof(float);
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "components/camera.h"
@@ -110,6 +111,7 @@ private:
     }
 
     void update_sky_texture(const frame_view& view);
+    void upload_sky_grid();
     void write_uniforms(const frame_view& view);
     void write_instances(const frame_view& view);
     void write_commands(const frame_view& view);
@@ -148,6 +150,10 @@ private:
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
     std::optional<sky_model> m_sky_drawn;  // what m_sky_texture holds
+    // The scene's environment map at the sky texture's size, when it has one: the sky is then
+    // this map turned about the vertical, not the analytic sky.
+    std::vector<float> m_map_sky;
+    std::optional<std::pair<float, float>> m_map_drawn;  // (turn_deg, sky_intensity) drawn
     struct terrain_tile {
         std::uint16_t mesh = 0;
         glm::vec3 center{0.0f};  // terrain-local

@@ -295,8 +295,8 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
     expect_error(set(minimal(), "/sead", 4),
                  {"/sead",
                   "unknown field; expected one of: name, seed, resolution, frames, fps, "
-                  "world_offset, terrain, species, populations, camera, sun, shadows, render, "
-                  "eco_tiles, lod",
+                  "world_offset, terrain, species, populations, camera, sun, environment, shadows, "
+                  "render, eco_tiles, lod",
                   "4"});
 }
 
@@ -317,6 +317,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/camera/keyframes/0/fov", "t, position, target, fov_deg, relative_to_terrain"},
         {"/sun/elevation", "keyframes, intensity, turbidity, sky_intensity"},
         {"/sun/keyframes/0/time", "t, elevation_deg, azimuth_deg"},
+        {"/environment/rotation_deg", "map, map_rotation_deg"},
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
         {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
@@ -582,8 +583,8 @@ TEST(scenario_loader, only_the_first_problem_is_reported) {
     // Unknown keys are checked before any field; fields in their documented order.
     expect_error(j, {"/bogus",
                      "unknown field; expected one of: name, seed, resolution, frames, fps, "
-                     "world_offset, terrain, species, populations, camera, sun, shadows, render, "
-                     "eco_tiles, lod",
+                     "world_offset, terrain, species, populations, camera, sun, environment, "
+                     "shadows, render, eco_tiles, lod",
                      "1"});
     j.erase("bogus");
     expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
@@ -599,7 +600,7 @@ public:
         : m_root(std::filesystem::temp_directory_path() / ("sylva_scenario_" + std::string(name))) {
         std::filesystem::remove_all(m_root);
         std::filesystem::create_directories(m_root / "maps");
-        for (const char* file : {"maps/hills.png", "maps/meadow.png", "oak.glb"})
+        for (const char* file : {"maps/hills.png", "maps/meadow.png", "oak.glb", "maps/sky.hdr"})
             std::ofstream(m_root / file) << "x";
     }
     ~scenario_folder() { std::filesystem::remove_all(m_root); }
@@ -626,6 +627,8 @@ TEST(scenario_loader, new_fields_default_to_todays_behaviour) {
     EXPECT_EQ(p.max_altitude_m, 1e9f);
     EXPECT_TRUE(s.eco_tiles.enabled);
     EXPECT_EQ(s.eco_tiles.max_plants_per_tile, 256u);
+    EXPECT_TRUE(s.environment.map.empty());
+    EXPECT_EQ(s.environment.map_rotation_deg, 0.0f);
 }
 
 TEST(scenario_loader, paths_are_resolved_against_the_scenario_folder_and_stored_absolute) {
@@ -633,6 +636,7 @@ TEST(scenario_loader, paths_are_resolved_against_the_scenario_folder_and_stored_
     json j = set(minimal(), "/terrain/heightmap", "maps/hills.png");
     j["species"][0]["model"] = "./oak.glb";
     j["populations"][0]["density_map"] = "maps/../maps/meadow.png";
+    j["environment"] = {{"map", "maps/sky.hdr"}, {"map_rotation_deg", -90}};
     const scenario s = folder.load(j);
     const auto root = std::filesystem::absolute(folder.root()).lexically_normal();
     EXPECT_EQ(s.terrain.heightmap, (root / "maps/hills.png").string());
@@ -643,12 +647,36 @@ TEST(scenario_loader, paths_are_resolved_against_the_scenario_folder_and_stored_
     EXPECT_EQ(again.terrain, s.terrain);
     EXPECT_EQ(again.species, s.species);
     EXPECT_EQ(again.populations, s.populations);
+    EXPECT_EQ(s.environment.map, (root / "maps/sky.hdr").string());
+    EXPECT_EQ(s.environment.map_rotation_deg, -90.0f);
+    EXPECT_EQ(again.environment, s.environment);
+}
+
+TEST(scenario_loader, environment_map_rotation_is_in_range_and_needs_a_map) {
+    const scenario_folder folder("environment");
+    const json with_map = set(minimal(), "/environment/map", "maps/sky.hdr");
+    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", 360)).environment.map_rotation_deg,
+              360.0f);
+    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", -360)).environment.map_rotation_deg,
+              -360.0f);
+    for (double outside : {-360.5, 360.5}) {
+        try {
+            folder.load(set(with_map, "/environment/map_rotation_deg", outside));
+            ADD_FAILURE() << "loaded " << outside;
+        } catch (const scenario_error& e) {
+            EXPECT_EQ(e.json_path(), "/environment/map_rotation_deg");
+            EXPECT_EQ(e.problem(), "out of range; expected a number from -360 to 360");
+        }
+    }
+    expect_error(set(minimal(), "/environment/map_rotation_deg", 45),
+                 {"/environment/map_rotation_deg", "turns the environment map; give map too", "45"});
 }
 
 TEST(scenario_loader, missing_files_are_named_at_their_json_path) {
     const scenario_folder folder("missing");
     for (const std::string pointer :
-         {"/terrain/heightmap", "/species/0/model", "/populations/0/density_map"}) {
+         {"/terrain/heightmap", "/species/0/model", "/populations/0/density_map",
+          "/environment/map"}) {
         SCOPED_TRACE(pointer);
         try {
             folder.load(set(minimal(), pointer, "nope.glb"));

@@ -85,6 +85,72 @@ TEST(project_radiance, clamped_cosine_lobe_about_up_matches_hand_values) {
     for (std::size_t i : {2u, 3u, 4u, 5u, 7u}) EXPECT_NEAR(c.c[i].x, 0.0f, 1e-4f) << i;
 }
 
+TEST(project_radiance, clamped_cosine_lobe_about_any_direction_matches_hand_values) {
+    // Ramamoorthi & Hanrahan 2001, Eq. 8 and the addition theorem: max(0, n.w) has band-l
+    // coefficients sqrt(4 pi / (2l + 1)) z_l Y_lm(n) with the zonal z_l = sqrt(pi)/2, sqrt(pi/3),
+    // sqrt(5 pi)/8, i.e. c_i = A_l Y_i(n) with A = pi, 2 pi/3, pi/4. For n = (2, 1, 2)/3:
+    //   Y(n) = 0.282095, 0.488603 (1/3, 2/3, 2/3), 1.092548 (2/9, 2/9), 0.315392 (1/3),
+    //          1.092548 (4/9), 0.546274 (1/3)
+    //   c    = 0.886227, 0.341109, 0.682218, 0.682218, 0.190686, 0.190686, 0.082569, 0.381371,
+    //          0.143014.
+    // The lobe's kink is not on a grid line here, hence the finer grid.
+    const glm::vec3 n(2.0f / 3.0f, 1.0f / 3.0f, 2.0f / 3.0f);
+    const sh9_rgb c = project_radiance(
+        [n](glm::vec3 w) { return glm::vec3(std::max(0.0f, glm::dot(n, w))); }, 128, 256);
+    const sh9 expected = {0.886227f, 0.341109f, 0.682218f, 0.682218f, 0.190686f,
+                          0.190686f, 0.082569f, 0.381371f, 0.143014f};
+    for (std::size_t i = 0; i < 9; ++i) EXPECT_NEAR(c.c[i].x, expected[i], 5e-4f) << i;
+}
+
+TEST(sh_coefficient_count, is_the_square_of_the_band_count) {
+    static_assert(sh_coefficient_count(1) == 1);
+    static_assert(sh_coefficient_count(2) == 4);
+    static_assert(sh_coefficient_count(k_sh_bands) == 9);
+    EXPECT_EQ(sh_coefficient_count(2), 4);
+}
+
+TEST(project_radiance, first_four_coefficients_are_the_best_two_band_fit) {
+    // The claim in spherical_harmonics.h: truncating 9 coefficients to 4 gives the 2-band
+    // projection. Checked against an independent least-squares fit of f by Y_0..Y_3 on the
+    // quadrature grid (normal equations G a = b with the grid's own Gram matrix G), for a
+    // function with strong band-2 and higher content that a wrong truncation would leak into.
+    const glm::vec3 lobe = glm::normalize(glm::vec3(-0.6f, 0.5f, 0.8f));
+    const auto f = [lobe](glm::vec3 w) {
+        return std::exp(2.0f * glm::dot(w, lobe)) + 3.0f * w.x * w.z - w.y * w.y;
+    };
+    constexpr int n_theta = 96;
+    constexpr int n_phi = 192;
+    const sh9_rgb c =
+        project_radiance([&](glm::vec3 w) { return glm::vec3(f(w)); }, n_theta, n_phi);
+    double gram[4][5] = {};  // augmented [G | b]
+    for (int j = 0; j < n_theta; ++j) {
+        const double theta = (j + 0.5) * std::numbers::pi / n_theta;
+        const double weight = std::sin(theta) * (std::numbers::pi / n_theta) *
+                              (2.0 * std::numbers::pi / n_phi);
+        for (int i = 0; i < n_phi; ++i) {
+            const double phi = (i + 0.5) * 2.0 * std::numbers::pi / n_phi;
+            const glm::vec3 w(float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)),
+                              float(-std::sin(theta) * std::cos(phi)));
+            const sh9 y = sh_basis(w);
+            for (int r = 0; r < 4; ++r) {
+                for (int k = 0; k < 4; ++k) gram[r][k] += weight * y[std::size_t(r)] * y[std::size_t(k)];
+                gram[r][4] += weight * y[std::size_t(r)] * f(w);
+            }
+        }
+    }
+    for (int col = 0; col < 4; ++col) {  // Gauss-Jordan; G is close to the identity
+        for (int k = 4; k >= col; --k) gram[col][k] /= gram[col][col];
+        for (int r = 0; r < 4; ++r) {
+            if (r == col) continue;
+            const double m = gram[r][col];
+            for (int k = col; k < 5; ++k) gram[r][k] -= m * gram[col][k];
+        }
+    }
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(c.c[i].x, gram[i][4], 2e-3) << i;
+    // Sanity that the check can fail: the band-2 content is large.
+    EXPECT_GT(std::abs(c.c[7].x), 0.5f);
+}
+
 TEST(irradiance_from_radiance, clamped_cosine_lobe_seen_from_its_axis) {
     // True E(up) = integral of cos^2 over the hemisphere = 2 pi / 3 = 2.0944. The 9 terms give
     // A0 c0 Y0 + A1 c1 Y1 + A2 (c6 Y6 + c8 Y8) = pi/4 + pi/3 + 5 pi/64 = 127 pi / 192 = 2.0780.
