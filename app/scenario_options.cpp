@@ -10,7 +10,7 @@ namespace sylva {
 void add_scenario_options(CLI::App& command, scenario_options& options) {
     command.add_option("scenario", options.path,
                        "Scenario JSON file (see README: scenario format), or the name of a bundled "
-                       "scenario (default, tiny, single_tree, forest, meadow, landscape); default: "
+                       "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day); default: "
                        "the bundled default");
     command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")
         ->check(CLI::Range(1u, 1000000u));
@@ -29,6 +29,13 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "billboard_clouds (Behrendt 2005: meshes near, billboard clouds beyond "
                     "lod.cloud_distance_m, crossed billboards far)")
         ->check(CLI::IsMember({"mesh_levels", "points_lines", "billboard_clouds"}));
+    command
+        .add_option("--lighting", options.lighting,
+                    "How every species is lit (overrides lod.lighting and each species' own): normal_mapped "
+                    "(by its normals), pre_lit (billboard clouds from the page lit at bake time) or sh "
+                    "(precomputed radiance transfer with self-shadowing in every representation, Behrendt "
+                    "2005 §4; the first run bakes the transfer into the cache)")
+        ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh"}));
     command
         .add_option("--sample-distance", options.sample_distance_px,
                     "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "
@@ -58,6 +65,10 @@ scenario load_with_overrides(const scenario_options& options) {
     if (options.width) s.width = *options.width;
     if (options.height) s.height = *options.height;
     if (options.representation) s.lod.representation = *options.representation;
+    if (options.lighting) {
+        s.lod.lighting = *options.lighting;
+        for (species_settings& species : s.species) species.lighting = "scenario";
+    }
     if (options.sample_distance_px) s.lod.sample_distance_px = *options.sample_distance_px;
     if (options.primitive_budget) {
         s.lod.primitive_budget = *options.primitive_budget;

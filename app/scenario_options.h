@@ -17,6 +17,7 @@ struct scenario_options {
     int threads = 0;
     // Overrides of the scenario's `lod` section (scenarios/scenario.h).
     std::optional<std::string> representation;
+    std::optional<std::string> lighting;
     std::optional<float> sample_distance_px;
     std::optional<double> primitive_budget;
     std::optional<double> target_frame_ms;

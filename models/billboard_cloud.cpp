@@ -339,30 +339,6 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
     return layout;
 }
 
-std::uint8_t encode_cloud_transfer(float t) {
-    const float unit = std::clamp(t / k_cloud_transfer_range * 0.5f + 0.5f, 0.0f, 1.0f);
-    return std::uint8_t(std::lround(unit * 255.0f));
-}
-
-float decode_cloud_transfer(std::uint8_t byte) { return (float(byte) / 255.0f * 2.0f - 1.0f) * k_cloud_transfer_range; }
-
-namespace {
-
-// One billboard side's transfer (billboard_image::transfer) into the transfer pages at (x0, y0).
-void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image, std::uint32_t x0, std::uint32_t y0) {
-    const std::uint32_t w = image.albedo.width, h = image.albedo.height;
-    for (std::uint32_t y = 0; y < h; ++y)
-        for (std::uint32_t x = 0; x < w; ++x) {
-            const float* t = &image.transfer[(std::size_t(y) * w + x) * k_billboard_transfer_floats];
-            for (std::size_t i = 0; i < std::size_t(k_cloud_transfer_pages) * 4; ++i) {
-                const float value = i < k_billboard_transfer_floats ? t[i] : 0.0f;
-                pages[i / 4].at(x0 + x, y0 + y)[i % 4] = encode_cloud_transfer(value);
-            }
-        }
-}
-
-}  // namespace
-
 billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings,
                                      const radiance_transfer* transfer) {
     billboard_cloud_layout layout = plan_billboard_cloud(model, settings);
@@ -378,15 +354,7 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         page.height = settings.atlas_height;
         page.texels.assign(std::size_t(page.width) * page.height * 4, 0);
     }
-    if (transfer) {
-        // Zero transfer is byte 128 (mid-range), also between rectangles.
-        cloud.transfer_pages.resize(k_cloud_transfer_pages);
-        for (image_rgba8& page : cloud.transfer_pages) {
-            page.width = settings.atlas_width;
-            page.height = settings.atlas_height;
-            page.texels.assign(std::size_t(page.width) * page.height * 4, encode_cloud_transfer(0.0f));
-        }
-    }
+    if (transfer) cloud.transfer_pages = blank_transfer_pages(settings.atlas_width, settings.atlas_height);
     std::vector<atlas_rect> rects;
     cloud.texels_per_metre = fit_density(cloud.billboards, settings, rects);
     for (std::size_t i = 0; i < rects.size(); ++i) cloud.billboards[i].rect = rects[i];

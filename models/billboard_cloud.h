@@ -28,10 +28,9 @@
 //   page 2  pre-lit: rgb the albedo lit once at bake time by one light including the plant's
 //           own shadows (Behrendt 2005 §2.3's first variant; light_factor()), a as page 0's
 //   transfer pages (only when baked with the plant's radiance transfer, Behrendt 2005 §4: "we
-//           store the Gouraud-interpolated vectors in an extra texture"): k_cloud_transfer_pages
-//           more pages of the same layout; texel channels 0..8 (pages 0, 1 and page 2's r) the
-//           transfer of the side this billboard side's viewer sees, 9..17 of the other side,
-//           each encoded (T / k_cloud_transfer_range) * 0.5 + 0.5 in 8 bits.
+//           store the Gouraud-interpolated vectors in an extra texture"): k_transfer_pages
+//           more pages of the same layout (models/transfer_pages.h); each billboard side's
+//           texels hold the transfer of the side its own viewer sees first.
 //
 // Sort-free fading (Behrendt 2005 §2.3): "We multiply the alpha channel of the billboard texture
 // with a gauss curve in pre-processing"; at run time a fragment is discarded below a threshold
@@ -47,6 +46,7 @@
 #include "models/atlas_packing.h"
 #include "models/billboard_bake.h"
 #include "models/radiance_transfer.h"
+#include "models/transfer_pages.h"
 #include "models/image.h"
 #include "models/mesh.h"
 #include "models/oriented_box.h"
@@ -80,11 +80,6 @@ std::vector<box_face> billboard_faces(glm::vec3 sides, float f = k_billboard_sha
 
 enum class cloud_atlas_page : std::uint32_t { albedo = 0, normal = 1, pre_lit = 2 };
 constexpr std::uint32_t k_cloud_atlas_pages = 3;
-// 18 transfer coefficients per texel in RGBA8 pages. Transfer coefficients stay within about
-// ±1.02 (the clamped cosine's band-1 coefficient, sqrt(pi/3), is the largest), so ±1.25 keeps
-// every one with room, at 0.01 per step. Mirrored in shaders/surface.frag.
-constexpr std::uint32_t k_cloud_transfer_pages = 5;
-constexpr float k_cloud_transfer_range = 1.25f;
 
 struct billboard_cloud_settings {
     // target_clusters 0 (the default here): default_cluster_target(model).
@@ -128,7 +123,7 @@ struct billboard_cloud {
     std::uint32_t atlas_width = 0;
     std::uint32_t atlas_height = 0;
     std::array<image_rgba8, k_cloud_atlas_pages> pages;  // cloud_atlas_page order
-    std::vector<image_rgba8> transfer_pages;  // k_cloud_transfer_pages, or none (see above)
+    std::vector<image_rgba8> transfer_pages;  // k_transfer_pages, or none (see above)
     float texels_per_metre = 0.0f;  // the density every billboard was baked at
 
     const image_rgba8& page(cloud_atlas_page p) const { return pages[std::size_t(p)]; }
@@ -154,9 +149,6 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
 billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings = {},
                                      const radiance_transfer* transfer = nullptr);
 
-// One transfer coefficient as a transfer page stores it, and back.
-std::uint8_t encode_cloud_transfer(float t);
-float decode_cloud_transfer(std::uint8_t byte);
 
 // The normal page in the tangent space of each billboard side, for formats that want it (glTF):
 // x along the side's axis_u, y along its axis_v (the image's up), z its normal toward its viewer

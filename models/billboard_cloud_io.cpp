@@ -125,7 +125,7 @@ billboard_cloud deserialize_billboard_cloud(std::span<const std::byte> bytes) {
             throw std::runtime_error("bake cache entry: billboard cloud atlas pages differ in size");
     }
     const auto transfer_pages = in.pod<std::uint32_t>();
-    if (transfer_pages != 0 && transfer_pages != k_cloud_transfer_pages)
+    if (transfer_pages != 0 && transfer_pages != k_transfer_pages)
         throw std::runtime_error("bake cache entry: billboard cloud has " + std::to_string(transfer_pages) +
                                  " transfer pages");
     cloud.transfer_pages.resize(transfer_pages);

@@ -5,6 +5,7 @@
 
 #include "models/bake_cache.h"
 #include "models/mesh_io.h"
+#include "models/transfer_pages.h"
 
 namespace sylva {
 namespace {
@@ -20,6 +21,8 @@ std::vector<std::byte> serialize_crossed_billboard(const crossed_billboard& bill
     write_mesh(out, billboard.mesh);
     write_image(out, billboard.albedo);
     write_image(out, billboard.normal);
+    out.pod(std::uint32_t(billboard.transfer_pages.size()));
+    for (const image_rgba8& page : billboard.transfer_pages) write_image(out, page);
     return std::move(out.bytes());
 }
 
@@ -35,6 +38,15 @@ crossed_billboard deserialize_crossed_billboard(std::span<const std::byte> bytes
     billboard.normal = read_image(in);
     if (billboard.albedo.width != billboard.normal.width || billboard.albedo.height != billboard.normal.height)
         throw std::runtime_error("bake cache entry: billboard albedo and normal atlases differ in size");
+    const auto pages = in.pod<std::uint32_t>();
+    if (pages != 0 && pages != k_transfer_pages)
+        throw std::runtime_error("bake cache entry: crossed billboard has " + std::to_string(pages) + " transfer pages");
+    billboard.transfer_pages.resize(pages);
+    for (image_rgba8& page : billboard.transfer_pages) {
+        page = read_image(in);
+        if (page.width != billboard.albedo.width || page.height != billboard.albedo.height)
+            throw std::runtime_error("bake cache entry: crossed billboard transfer pages differ in size");
+    }
     if (!in.at_end()) throw std::runtime_error("bake cache entry: trailing bytes");
     return billboard;
 }

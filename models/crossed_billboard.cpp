@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <stdexcept>
 
+#include "models/transfer_pages.h"
+
 namespace sylva {
 namespace {
 
@@ -63,14 +65,15 @@ std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(
     }};
 }
 
-crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings) {
+crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings,
+                                         const radiance_transfer* transfer) {
     const mesh_data& full = model.lods[0];
     const auto planes = crossed_billboard_planes(full);
     billboard_bake_settings bake;
     bake.width = settings.resolution;
     bake.height = settings.resolution;
     bake.supersampling = settings.supersampling;
-    const billboard_source source{&full, &model.leaf_texture, &model.bark_texture, {}};
+    const billboard_source source{&full, &model.leaf_texture, &model.bark_texture, {}, transfer};
 
     crossed_billboard out;
     for (image_rgba8* atlas : {&out.albedo, &out.normal}) {
@@ -78,10 +81,12 @@ crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed
         atlas->height = settings.resolution;
         atlas->texels.assign(std::size_t(atlas->width) * atlas->height * 4, 0);
     }
+    if (transfer) out.transfer_pages = blank_transfer_pages(out.albedo.width, out.albedo.height);
     for (std::size_t q = 0; q < planes.size(); ++q) {
         const billboard_image image = bake_billboard(source, planes[q], bake);
         blit(out.albedo, image.albedo, std::uint32_t(q) * settings.resolution);
         blit(out.normal, image.normal, std::uint32_t(q) * settings.resolution);
+        if (transfer) blit_transfer(out.transfer_pages, image, std::uint32_t(q) * settings.resolution, 0);
         add_quad(out.mesh, planes[q], q);
     }
     out.mesh.submeshes.push_back({0, std::uint32_t(out.mesh.indices.size()), material_kind::billboard});

@@ -20,16 +20,19 @@
 // back_side() from models/billboard_bake.h.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "models/billboard_bake.h"
 #include "models/image.h"
 #include "models/mesh.h"
 #include "models/plant_model.h"
+#include "models/radiance_transfer.h"
 
 namespace sylva {
 
 // Bump whenever the bake, the quad layout or the atlas layout changes what it produces.
-constexpr std::uint32_t k_crossed_billboard_format = 2;  // 2: meshes in models/mesh_io.h form
+// 2: meshes in models/mesh_io.h form; 3: optional transfer pages
+constexpr std::uint32_t k_crossed_billboard_format = 3;
 constexpr std::size_t k_crossed_billboard_quads = 2;
 
 struct crossed_billboard_settings {
@@ -41,12 +44,18 @@ struct crossed_billboard {
     mesh_data mesh;      // 2 quads, 4 triangles, one material_kind::billboard submesh
     image_rgba8 albedo;  // (2 * resolution) x resolution, alpha = coverage
     image_rgba8 normal;  // model-space normals n * 0.5 + 0.5, alpha = coverage
+    // With the plant's radiance transfer (Behrendt 2005 §4): k_transfer_pages pages of the
+    // atlas's size (models/transfer_pages.h), the front's transfer; else none. Seen from behind
+    // a quad shows its front image mirrored, and its front transfer too.
+    std::vector<image_rgba8> transfer_pages;
 };
 
 // The quads' planes in atlas order, from the full mesh of a plant standing on the origin (y up).
 std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(const mesh_data& full);
 
-// Bakes lods[0] with the model's leaf and bark textures. Deterministic.
-crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings = {});
+// Bakes lods[0] with the model's leaf and bark textures, and with `transfer` (lods[0]'s, one
+// receiver per vertex) its transfer pages. Deterministic.
+crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings = {},
+                                         const radiance_transfer* transfer = nullptr);
 
 }  // namespace sylva

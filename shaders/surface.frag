@@ -72,11 +72,12 @@ float dissolve_hash(uint a, uint b) {
 #endif
 #if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
 #include "transfer.glsl"
-#ifdef MATERIAL_BILLBOARD_CLOUD
-// models/billboard_cloud.h transfer pages: five layers per species, the 9 coefficients of the
-// side this billboard side's viewer sees, then the 9 of the other, each (T / range) * 0.5 + 0.5.
-layout(binding = 3) uniform sampler2DArray u_cloud_transfer;
-const float k_transfer_page_range = 1.25;  // mirrors k_cloud_transfer_range
+#if defined(MATERIAL_BILLBOARD_CLOUD) || defined(MATERIAL_BILLBOARD)
+#define TRANSFER_PAGES
+// models/transfer_pages.h: five layers per species, the 9 coefficients of the side this
+// billboard side's viewer sees, then the 9 of the other, each (T / range) * 0.5 + 0.5.
+layout(binding = 3) uniform sampler2DArray u_transfer_pages;
+const float k_transfer_page_range = 1.25;  // mirrors models/transfer_pages.h
 #else
 in vec3 v_sh_sky;
 in vec2 v_sh_sun;
@@ -158,12 +159,13 @@ void main() {
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0));
 #endif
-#if defined(MATERIAL_BILLBOARD_CLOUD) && defined(SH_TRANSFER)
+#if defined(TRANSFER_PAGES) && defined(SH_TRANSFER)
     // The atlas holds model-space transfer; turn it by the plant's yaw, as surface.vert does
-    // for vertices.
+    // for vertices. A crossed billboard seen from behind shows its front image mirrored, and
+    // is lit with the front's transfer too.
     float seen[9], other[9];
     for (int p = 0; p < 5; ++p) {
-        vec4 t = (texture(u_cloud_transfer, vec3(v_uv, v_layer * 5.0 + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
+        vec4 t = (texture(u_transfer_pages, vec3(v_uv, v_layer * 5.0 + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
         for (int k = 0; k < 4; ++k) {
             int i = 4 * p + k;
             if (i < 9) seen[i] = t[k];

@@ -28,7 +28,7 @@ layout(location = 6) in vec4 in_transfer1;
 layout(location = 7) in vec4 in_transfer2;
 layout(location = 8) in vec4 in_transfer3;
 layout(location = 9) in vec4 in_transfer4;
-#ifndef MATERIAL_BILLBOARD_CLOUD
+#if !defined(MATERIAL_BILLBOARD_CLOUD) && !defined(MATERIAL_BILLBOARD)
 out vec3 v_sh_sky;    // T_seen . L_sky
 out vec2 v_sh_sun;    // T_seen . Y(sun), T_other . Y(sun)
 #endif
@@ -87,7 +87,7 @@ void main() {
 #endif
 #if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
     v_sh_exit = sphere_exit_distance(world, in_instance_position_yaw.xyz, scale, v_layer);
-#ifndef MATERIAL_BILLBOARD_CLOUD
+#if !defined(MATERIAL_BILLBOARD_CLOUD) && !defined(MATERIAL_BILLBOARD)
     float front[9] = float[9](in_transfer0.x, in_transfer0.y, in_transfer0.z, in_transfer0.w, in_transfer1.x,
                               in_transfer1.y, in_transfer1.z, in_transfer1.w, in_transfer2.x);
     float back[9] = float[9](in_transfer2.y, in_transfer2.z, in_transfer2.w, in_transfer3.x, in_transfer3.y,

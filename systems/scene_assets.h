@@ -106,6 +106,9 @@ struct scene_assets {
     // order of leaf_textures, all the same size; the normal atlas holds model-space normals.
     std::vector<image_rgba8> billboard_albedo;
     std::vector<image_rgba8> billboard_normal;
+    // Their SH transfer pages (models/transfer_pages.h), k_transfer_pages per species in species
+    // order; empty when no species is lit by transfer.
+    std::vector<image_rgba8> billboard_transfer;
     // The billboard clouds' atlas pages (models/billboard_cloud.h: colour with coverage x
     // gaussian alpha, model-space normals with coverage alpha), one layer per species in the same
     // order, all the size of the largest (smaller atlases replicated by an integer factor); empty
@@ -113,7 +116,7 @@ struct scene_assets {
     std::vector<image_rgba8> cloud_albedo;
     std::vector<image_rgba8> cloud_normal;
     std::vector<image_rgba8> cloud_pre_lit;  // colour lit at bake time, alpha as cloud_albedo's
-    // SH transfer pages (models/billboard_cloud.h k_cloud_transfer_pages per species, in species
+    // SH transfer pages (models/transfer_pages.h k_transfer_pages per species, in species
     // order; blank pages for species not lit by transfer); empty when no species is.
     std::vector<image_rgba8> cloud_transfer;
     image_rgba8 ground_texture;

@@ -21,6 +21,7 @@
 #include "models/placement.h"
 #include "models/random.h"
 #include "models/textures.h"
+#include "models/transfer_pages.h"
 #include "systems/draw_list.h"
 #include "systems/eco_tiles.h"
 #include "systems/frame_stats.h"
@@ -103,19 +104,16 @@ lighting_variant lighting_of(const scenario& s, const species_settings& species)
     throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
 }
 
-// The clouds' transfer pages: none when no species has them; else every species' (blank pages
-// of zero transfer for those lit otherwise), at the albedo pages' common size.
+// The clouds' or crossed billboards' transfer pages: none when no species has them; else every
+// species' (blank pages of zero transfer for those lit otherwise), at the albedo pages' common
+// size (crossed billboards all share one size).
 void fill_transfer_pages(std::vector<image_rgba8>& pages, const std::vector<image_rgba8>& albedo) {
     if (std::all_of(pages.begin(), pages.end(), [](const image_rgba8& p) { return p.texels.empty(); })) {
         pages.clear();
         return;
     }
     for (image_rgba8& page : pages)
-        if (page.texels.empty()) {
-            page.width = albedo.front().width;
-            page.height = albedo.front().height;
-            page.texels.assign(std::size_t(page.width) * page.height * 4, encode_cloud_transfer(0.0f));
-        }
+        if (page.texels.empty()) page = blank_transfer_pages(albedo.front().width, albedo.front().height).front();
     match_cloud_atlas_sizes(pages);
 }
 
@@ -125,8 +123,6 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     const std::size_t first_mesh = assets.meshes.size();
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model = load_species_model(settings, seed, cache);
-    // Baked from the unscaled model, so the cache entry does not depend on height_m.
-    crossed_billboard billboard = load_species_billboard(settings, seed, model, cache);
     point_line_model point_lines;
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
     // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
@@ -143,11 +139,13 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         if (needs.point_lines)
             sample_transfer = load_species_point_line_transfer(settings, seed, model, point_lines, transfer_config, cache);
     }
+    const std::uint64_t transfer_key = by_transfer ? species_transfer_key(settings, seed, transfer_config) : 0;
+    const radiance_transfer* full_transfer = by_transfer ? &transfer[0] : nullptr;
+    // Baked from the unscaled model, so the cache entries do not depend on height_m.
+    crossed_billboard billboard = load_species_billboard(settings, seed, model, cache, full_transfer, transfer_key);
     billboard_cloud cloud;
     if (needs.billboard_clouds)
-        cloud = by_transfer ? load_species_billboard_cloud(settings, seed, model, cache, &transfer[0],
-                                                           species_transfer_key(settings, seed, transfer_config))
-                            : load_species_billboard_cloud(settings, seed, model, cache);
+        cloud = load_species_billboard_cloud(settings, seed, model, cache, full_transfer, transfer_key);
     if (by_transfer)
         for (std::size_t k = 0; k < model.lods.size(); ++k) model.lods[k].transfer = pack_transfer(transfer[k]);
     // Every species is scaled to the scenario's height_m, generated or imported alike; the
@@ -193,7 +191,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         assets.cloud_normal.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::normal)]));
         assets.cloud_pre_lit.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)]));
         // Placeholders for a species without transfer pages: build_scene_assets fills them.
-        cloud.transfer_pages.resize(k_cloud_transfer_pages);
+        cloud.transfer_pages.resize(k_transfer_pages);
         for (image_rgba8& page : cloud.transfer_pages) assets.cloud_transfer.push_back(std::move(page));
     }
     entry.lighting = lighting;
@@ -202,6 +200,8 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
     assets.billboard_normal.push_back(std::move(billboard.normal));
+    billboard.transfer_pages.resize(k_transfer_pages);  // placeholders: see fill_transfer_pages
+    for (image_rgba8& page : billboard.transfer_pages) assets.billboard_transfer.push_back(std::move(page));
     assets.library.species.push_back(std::move(entry));
 }
 
@@ -234,6 +234,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     match_cloud_atlas_sizes(assets.cloud_normal);
     match_cloud_atlas_sizes(assets.cloud_pre_lit);
     fill_transfer_pages(assets.cloud_transfer, assets.cloud_albedo);
+    fill_transfer_pages(assets.billboard_transfer, assets.billboard_albedo);
     return assets;
 }
 

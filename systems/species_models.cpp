@@ -84,10 +84,15 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 }
 
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
-                                         const plant_model& model, bake_cache* cache) {
-    auto bake = [&] { return serialize_crossed_billboard(bake_crossed_billboard(model, k_billboard_settings)); };
+                                         const plant_model& model, bake_cache* cache,
+                                         const radiance_transfer* transfer, std::uint64_t transfer_key) {
+    auto bake = [&] {
+        return serialize_crossed_billboard(bake_crossed_billboard(model, k_billboard_settings, transfer));
+    };
+    std::uint64_t key = species_billboard_key(species, seed);
+    if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
     return load_cached<crossed_billboard>(
-        cache, "billboards", species_billboard_key(species, seed), bake,
+        cache, "billboards", key, bake,
         [](std::span<const std::byte> bytes) { return deserialize_crossed_billboard(bytes); });
 }
 

@@ -34,8 +34,11 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 
 // The crossed billboard of `model` (the species' model as load_species_model returns it,
 // unscaled), through the cache ("billboards") when `cache` is not null.
+// With `transfer` (lods[0]'s, Behrendt 2005 §4) its transfer pages are baked too, and the cache
+// entry is keyed on `transfer_key` (species_transfer_key) as well.
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
-                                         const plant_model& model, bake_cache* cache);
+                                         const plant_model& model, bake_cache* cache,
+                                         const radiance_transfer* transfer = nullptr, std::uint64_t transfer_key = 0);
 
 // The cache key of a species' billboard cloud: its model's key and the cloud's format version
 // (the settings are default_billboard_cloud_settings of that model, fixed by the two).

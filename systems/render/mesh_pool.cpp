@@ -78,7 +78,8 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
         throw std::runtime_error("mesh_pool: more than 65535 meshes");
     if (!mesh.transfer.empty() && mesh.transfer.size() != mesh.vertices.size())
         throw std::logic_error("mesh_pool: a mesh's transfer must have one record per vertex");
-    if (lighting == lighting_variant::sh && mesh.transfer.empty() && mesh.primitive == primitive_kind::triangles &&
+    // Billboards read their transfer from pages; every other SH-lit mesh streams it.
+    if (lighting == lighting_variant::sh && mesh.transfer.empty() && !mesh.vertices.empty() &&
         !mesh.submeshes.empty() && mesh.submeshes[0].material != material_kind::billboard_cloud &&
         mesh.submeshes[0].material != material_kind::billboard)
         throw std::logic_error("mesh_pool: an SH-lit mesh needs its transfer");

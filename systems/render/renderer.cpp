@@ -125,6 +125,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     if (!assets.billboard_albedo.empty()) {
         m_billboard_albedo = make_texture_array(assets.billboard_albedo, false, true);
         m_billboard_normal = make_texture_array(assets.billboard_normal, false);
+        if (!assets.billboard_transfer.empty())
+            m_billboard_transfer = make_texture_array(assets.billboard_transfer, false);
     }
     if (!assets.cloud_albedo.empty()) {
         // The colour page's alpha is filtered plainly: the fade threshold reads the gaussian
@@ -143,7 +145,7 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     m_static_upload_bytes = m_meshes.uploaded_bytes();
     for (const auto* images : {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
                                &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal,
-                               &assets.cloud_pre_lit, &assets.cloud_transfer})
+                               &assets.cloud_pre_lit, &assets.cloud_transfer, &assets.billboard_transfer})
         for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
     m_static_upload_bytes += assets.ground_texture.texels.size();
     glEnable(GL_DEPTH_TEST);
@@ -185,9 +187,7 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
         if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
     }
-    // Crossed billboards and the ground have no transfer: they stay normal-lit.
-    if (lighting == lighting_variant::sh && material != material_kind::billboard && material != material_kind::ground)
-        source.defines.push_back("SH_TRANSFER");
+    if (lighting == lighting_variant::sh && material != material_kind::ground) source.defines.push_back("SH_TRANSFER");
     // Partners of a transition are drawn in the view only, and only as whole meshes.
     if (!shadow && m_settings.fade_dissolve && primitive == primitive_kind::triangles &&
         material != material_kind::ground && material != material_kind::billboard_cloud)
@@ -408,6 +408,7 @@ void renderer::draw_opaque() {
         if (groups[group_of(material_kind::billboard, primitive_kind::triangles, l)].count) {
             glBindTextureUnit(0, m_billboard_albedo.id());
             glBindTextureUnit(2, m_billboard_normal.id());
+            if (l == lighting_variant::sh) glBindTextureUnit(3, m_billboard_transfer.id());
             draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)],
                        surface_program(material_kind::billboard, false, primitive_kind::triangles, l), false);
         }

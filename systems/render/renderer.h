@@ -142,10 +142,11 @@ private:
     gl_texture m_ground_texture;
     gl_texture m_billboard_albedo;  // crossed billboards: colour with coverage alpha
     gl_texture m_billboard_normal;  // and model-space normals
+    gl_texture m_billboard_transfer;  // SH transfer pages, k_transfer_pages layers per species
     gl_texture m_cloud_albedo;      // billboard clouds: colour with coverage x gaussian alpha
     gl_texture m_cloud_normal;      // and model-space normals with coverage alpha
     gl_texture m_cloud_pre_lit;     // colour lit at bake time (pre-lit species)
-    gl_texture m_cloud_transfer;    // SH transfer pages, k_cloud_transfer_pages layers per species
+    gl_texture m_cloud_transfer;    // SH transfer pages, k_transfer_pages layers per species
     gl_buffer m_species_block;      // transfer.glsl species_block: each species' sphere
     gl_texture m_sky_texture;
     std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
