@@ -1,0 +1,170 @@
+// Precomputed radiance transfer in the renderer (Behrendt 2005 §4, shaders/transfer.glsl): a
+// surface whose transfer is the unoccluded clamped-cosine projection must look like the same
+// surface lit by its normal (the sky term is identical, the sun's 3-band approximation is within
+// a few per cent), one whose transfer is halved must look darker, and another object's shadow
+// must still darken an SH-lit surface although the shadow map is read outside the plant's own
+// sphere.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "gl_test_support.h"
+#include "systems/lighting/sky_model.h"
+#include "systems/lighting/transfer_rotation.h"
+#include "systems/render/renderer.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+mesh_data horizontal_quad(float half, float y, material_kind material) {
+    mesh_data m;
+    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}}, {{half, y, -half}, {0, 1, 0}, {1, 0}},
+                  {{half, y, half}, {0, 1, 0}, {1, 1}}, {{-half, y, half}, {0, 1, 0}, {0, 1}}};
+    m.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
+    m.submeshes = {{0, 6, material}};
+    m.bounds_min = {-half, y, -half};
+    m.bounds_max = {half, y, half};
+    return m;
+}
+
+image_rgba8 solid(std::uint8_t v) {
+    image_rgba8 image{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, v)};
+    for (std::size_t i = 3; i < image.texels.size(); i += 4) image.texels[i] = 255;
+    return image;
+}
+
+// Ramamoorthi & Hanrahan 2001, Eqs. 7-9: the clamped cosine about n has band-l coefficients
+// A_l Y_lm(n), A = (pi, 2 pi / 3, pi / 4): an unoccluded receiver's transfer.
+sh9 clamped_cosine(glm::vec3 n, float scale) {
+    const float a[3] = {3.14159265f, 2.0943951f, 0.78539816f};
+    const sh9 y = sh_basis(n);
+    sh9 t{};
+    for (std::size_t i = 0; i < 9; ++i) t[i] = scale * a[i == 0 ? 0 : (i < 4 ? 1 : 2)] * y[i];
+    return t;
+}
+
+mesh_data with_transfer(mesh_data m, float scale) {
+    const vertex_transfer t = pack_transfer(clamped_cosine({0, 1, 0}, scale), clamped_cosine({0, -1, 0}, scale));
+    m.transfer.assign(m.vertices.size(), t);
+    return m;
+}
+
+float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec3 world) {
+    const glm::vec4 clip = cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const auto px = std::uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
+    const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));
+    const std::uint8_t* p = image.at(px, py);
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+struct transfer_scene {
+    scene_assets assets;
+    camera cam;
+    sun light;
+    environment sky;
+};
+
+// Mesh 1: a normal-lit bark card; 2: the same with unoccluded transfer; 3: with half of it;
+// 4: a second SH card; 5: an opaque roof that shadows card 4 only.
+transfer_scene make_scene() {
+    transfer_scene s;
+    s.assets.meshes.push_back(horizontal_quad(60.0f, 0.0f, material_kind::ground));
+    s.assets.meshes.push_back(horizontal_quad(1.5f, 1.0f, material_kind::bark));
+    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
+    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 0.5f));
+    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
+    s.assets.meshes.push_back(horizontal_quad(2.5f, 6.0f, material_kind::bark));
+    const lighting_variant lit[] = {lighting_variant::normal_mapped, lighting_variant::normal_mapped,
+                                    lighting_variant::sh, lighting_variant::sh, lighting_variant::sh,
+                                    lighting_variant::normal_mapped};
+    for (std::size_t i = 0; i < s.assets.meshes.size(); ++i)
+        s.assets.library.meshes.push_back({std::uint32_t(s.assets.meshes[i].triangle_count()),
+                                           representation::mesh_full, primitive_kind::triangles, lit[i]});
+    // The cards' species sphere: 1.5 m about their centre, so the roof 5 m up is another object.
+    species_entry card;
+    card.center_height = 1.0f;
+    card.bounding_radius = 2.2f;
+    s.assets.library.species = {card};
+    s.assets.terrain_meshes = {0};
+    s.assets.leaf_textures = {solid(60)};
+    s.assets.bark_textures = {solid(60)};
+    s.assets.ground_texture = solid(60);
+
+    s.cam.position = {0.0, 40.0, 0.0};
+    s.cam.forward = {0.0f, -1.0f, 0.0f};
+    s.cam.aspect = 1.0f;
+    s.cam.fov_y = glm::radians(50.0f);
+    s.cam.viewport_height_px = 256.0f;
+    derive_camera_matrices(s.cam);
+    s.light.direction = sun_direction_from_angles(60.0f, 90.0f);  // from the east (+x)
+    s.light.color = glm::vec3(1.0f);
+    s.light.intensity = 2.0f;
+    sky_model model;
+    model.sun_direction = s.light.direction;
+    model.sky_intensity = 0.3f;  // the sun dominates, so its shadow is plain to see
+    const sh9_rgb radiance = project_sky(model, 32, 64);
+    const sh9_rgb irradiance = irradiance_from_radiance(radiance);
+    for (std::size_t i = 0; i < 9; ++i) {
+        s.sky.radiance_sh[i] = radiance.c[i];
+        s.sky.irradiance_sh[i] = irradiance.c[i];
+    }
+    return s;
+}
+
+TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_transfer_is_darker) {
+    SYLVA_REQUIRE_GL();
+    render::context_options options;
+    options.width = options.height = 256;
+    auto context = render::create_context(options);
+    transfer_scene s = make_scene();
+    render::renderer_settings settings;
+    settings.width = settings.height = 256;
+    settings.cascades = 1;
+    settings.shadow_resolution = 2048;
+    render::renderer renderer(settings, s.assets);
+
+    // Cards at x = -8 (normal), -3 (unoccluded transfer), 2 (half transfer), 8 (in the roof's
+    // shadow); the roof 5 m higher and 2.9 m east of the last card, so the sun (60° up in the
+    // east) throws its shadow onto that card while the camera, looking straight down, still
+    // sees the card's western half.
+    const glm::dvec3 at[] = {{-8, 0, 0}, {-3, 0, 0}, {2, 0, 0}, {8, 0, 0}, {10.9, 0, 0}};
+    draw_list draws;
+    for (const glm::dvec3& p : at) {
+        instance_gpu i;
+        i.position = glm::vec3(p - s.cam.position);
+        draws.instances.push_back(i);
+    }
+    for (std::uint16_t m = 1; m <= 5; ++m) {
+        draws.batches.push_back({render_pass::opaque, m, std::uint32_t(m - 1), 1});
+        draws.batches.push_back({render_pass::shadow_cascade_0, m, std::uint32_t(m - 1), 1});
+    }
+    const cascade_set cascades = fit_cascades(s.cam.view, s.cam.fov_y, s.cam.aspect, s.cam.near_plane, 60.0f,
+                                              s.light.direction, 1, 0.5f, 2048, 50.0f, s.cam.position);
+    render::frame_view view;
+    view.view_camera = &s.cam;
+    view.sun_light = &s.light;
+    view.sky = &s.sky;
+    view.cascades = &cascades;
+    view.draws = &draws;
+    view.terrain_position = glm::vec3(-s.cam.position);
+    renderer.render(view);
+    renderer.finish();
+    const image_rgba8 image = renderer.read_color();
+
+    const float normal_lit = luminance_at(image, s.cam, {-8.0, 1.0, 0.6});
+    const float by_transfer = luminance_at(image, s.cam, {-3.0, 1.0, 0.6});
+    const float half_transfer = luminance_at(image, s.cam, {2.0, 1.0, 0.6});
+    ASSERT_GT(normal_lit, 40.0f);
+    ASSERT_LT(normal_lit, 200.0f);  // below the tone curve's shoulder, where darker stays darker
+    EXPECT_NEAR(by_transfer, normal_lit, 0.06f * normal_lit);
+    EXPECT_LT(half_transfer, 0.85f * by_transfer);
+    // The roof, outside the card's 2.2 m sphere, is another object: its shadow darkens the card.
+    const float in_roof_shadow = luminance_at(image, s.cam, {7.0, 1.0, 0.6});
+    EXPECT_LT(in_roof_shadow, 0.8f * by_transfer);
+}
+
+}  // namespace
+}  // namespace sylva
