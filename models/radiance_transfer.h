@@ -26,7 +26,9 @@
 
 namespace sylva {
 
-constexpr std::uint32_t k_radiance_transfer_format = 1;  // bump when the bake changes
+// Bump when the bake changes. 2: the reduced and far levels resampled from the full level's
+// transfer (models/transfer_resampling.h) instead of ray-cast.
+constexpr std::uint32_t k_radiance_transfer_format = 2;
 
 struct transfer_settings {
     std::uint32_t bands = 3;  // 2 (4 coefficients) or 3 (9)

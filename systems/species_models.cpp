@@ -12,6 +12,7 @@
 #include "models/point_line_bake.h"
 #include "models/point_line_io.h"
 #include "models/radiance_transfer_io.h"
+#include "models/transfer_resampling.h"
 #include "models/random.h"
 
 namespace sylva {
@@ -146,7 +147,10 @@ std::array<radiance_transfer, 3> load_species_transfer(const species_settings& s
     auto bake = [&] {
         const transfer_occluders occluders(model.lods[0], model.leaf_texture, model.bark_texture);
         std::array<radiance_transfer, 3> levels;
-        for (std::size_t i = 0; i < 3; ++i) levels[i] = occluders.bake(model.lods[i].vertices, settings);
+        levels[0] = occluders.bake(model.lods[0].vertices, settings);
+        // The coarser levels show the full plant's light (models/transfer_resampling.h).
+        for (std::size_t i = 1; i < 3; ++i)
+            levels[i] = resample_transfer(model.lods[0], levels[0], model.lods[i].vertices);
         return serialize_radiance_transfers(levels);
     };
     const std::array<std::size_t, 3> receivers = {model.lods[0].vertices.size(), model.lods[1].vertices.size(),

@@ -66,9 +66,10 @@ point_line_model load_species_point_lines(const species_settings& species, std::
 std::uint64_t species_transfer_key(const species_settings& species, std::uint64_t seed,
                                    const transfer_settings& settings);
 
-// The radiance transfer (Behrendt 2005 §4) of `model`'s full, reduced and far meshes (each
-// level's vertices are its receivers; the full mesh shadows all three, so every level is lit by
-// the same occluders), through the cache ("radiance_transfer") when `cache` is not null.
+// The radiance transfer (Behrendt 2005 §4) of `model`'s full, reduced and far meshes: the full
+// mesh's vertices ray-cast against the full mesh, the coarser levels' resampled from it
+// (models/transfer_resampling.h), through the cache ("radiance_transfer") when `cache` is not
+// null.
 std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species, std::uint64_t seed,
                                                        const plant_model& model,
                                                        const transfer_settings& settings, bake_cache* cache);

@@ -246,3 +246,50 @@ TEST(billboard_bake, rejects_bad_planes_and_missing_inputs) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// A transfer with one receiver per vertex of `mesh`: front coefficient i of vertex v is
+// front_value(v, i), back is its negative (so the two sides are told apart).
+radiance_transfer linear_transfer(const mesh_data& mesh) {
+    radiance_transfer t;
+    t.bands = 3;
+    for (const vertex& v : mesh.vertices)
+        for (int i = 0; i < 9; ++i) {
+            t.front.push_back(0.1f * float(i) + 0.05f * v.position.x);
+            t.back.push_back(-(0.1f * float(i) + 0.05f * v.position.x));
+        }
+    return t;
+}
+
+TEST(billboard_bake, transfer_is_interpolated_over_the_covered_subsamples_seen_side_first) {
+    scene s;
+    add_rect(s.mesh, 0.0f, 0.0f, 4.0f, 8.0f, 0.0f, material_kind::bark);
+    // A leaf seen from its back: its back transfer is the side the viewer sees.
+    add_rect(s.mesh, 4.0f, 0.0f, 8.0f, 8.0f, 0.0f, material_kind::leaf, {0.0f, 0.0f, -1.0f}, true);
+    const radiance_transfer t = linear_transfer(s.mesh);
+    const billboard_image image = bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings());
+    ASSERT_EQ(image.transfer.size(), 64u * k_billboard_transfer_floats);
+    auto at = [&](std::uint32_t x, std::uint32_t y, std::size_t i) {
+        return image.transfer[(std::size_t(y) * 8 + x) * k_billboard_transfer_floats + i];
+    };
+    // Texel (1, 3) covers x in [1, 2]: Gouraud interpolation of 0.05 x gives 0.05 * 1.5 there.
+    EXPECT_NEAR(at(1, 3, 2), 0.2f + 0.075f, 1e-5f);
+    EXPECT_NEAR(at(1, 3, 9 + 2), -(0.2f + 0.075f), 1e-5f);
+    // Texel (6, 3) shows the leaf's back: seen first is its back vector, x in [6, 7].
+    EXPECT_NEAR(at(6, 3, 4), -(0.4f + 0.325f), 1e-5f);
+    EXPECT_NEAR(at(6, 3, 9 + 4), 0.4f + 0.325f, 1e-5f);
+}
+
+TEST(billboard_bake, transfer_must_match_the_mesh) {
+    scene s;
+    add_rect(s.mesh, 0.0f, 0.0f, 8.0f, 8.0f, 0.0f, material_kind::bark);
+    radiance_transfer t = linear_transfer(s.mesh);
+    t.front.resize(9);
+    t.back.resize(9);
+    EXPECT_THROW(bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sylva

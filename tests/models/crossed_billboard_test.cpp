@@ -9,6 +9,7 @@
 #include "models/bake_cache.h"
 #include "models/billboard_io.h"
 #include "models/plant_library.h"
+#include "models/transfer_pages.h"
 
 namespace sylva {
 namespace {
@@ -153,6 +154,44 @@ TEST(crossed_billboard, round_trips_through_the_bake_cache_byte_identically) {
     std::vector<std::byte> other_version = bytes;
     other_version[4] = std::byte(0xee);
     EXPECT_THROW(deserialize_crossed_billboard(other_version), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace sylva
+
+namespace sylva {
+namespace {
+
+TEST(crossed_billboard, with_transfer_bakes_five_pages_that_round_trip) {
+    // Every vertex unoccluded and facing up (a made-up transfer): T0 = pi * 0.282095 = 0.886
+    // on the front, 0 behind, so covered texels encode 0.886 first and 0 ninth.
+    const plant_model& model = broadleaf();
+    radiance_transfer t;
+    t.bands = 2;
+    for (std::size_t v = 0; v < model.lods[0].vertices.size(); ++v) {
+        t.front.insert(t.front.end(), {0.886227f, 0.0f, 0.0f, 0.0f});
+        t.back.insert(t.back.end(), {0.0f, 0.0f, 0.0f, 0.0f});
+    }
+    const crossed_billboard b = bake_crossed_billboard(model, {32, 2}, &t);
+    ASSERT_EQ(b.transfer_pages.size(), k_transfer_pages);
+    std::size_t covered = 0;
+    for (std::uint32_t y = 0; y < b.albedo.height; ++y)
+        for (std::uint32_t x = 0; x < b.albedo.width; ++x)
+            if (b.albedo.at(x, y)[3] == 255) {
+                ++covered;
+                // A mean over subsamples of fronts (0.886) and leaf backs seen first (0).
+                const float seen = decode_transfer(b.transfer_pages[0].at(x, y)[0]);
+                EXPECT_GE(seen, -0.005f);
+                EXPECT_LE(seen, 0.8910f);
+                // The other side's first coefficient is the complement: 0.886 - seen.
+                EXPECT_NEAR(decode_transfer(b.transfer_pages[2].at(x, y)[1]), 0.886227f - seen, 0.011f);
+                EXPECT_EQ(b.transfer_pages[1].at(x, y)[0], encode_transfer(0.0f));  // coefficient 4: 2 bands
+            }
+    EXPECT_GT(covered, 100u);
+    const crossed_billboard back = deserialize_crossed_billboard(serialize_crossed_billboard(b));
+    ASSERT_EQ(back.transfer_pages.size(), k_transfer_pages);
+    EXPECT_EQ(back.transfer_pages[0].texels, b.transfer_pages[0].texels);
+    EXPECT_TRUE(broadleaf_billboard().transfer_pages.empty());
 }
 
 }  // namespace
