@@ -155,6 +155,9 @@
 //                                       species' own "lighting" overrides it
 //     sh_bands           integer 3       2 .. 3; SH bands of the transfer vectors (4 or 9
 //                                       coefficients) with lighting "sh"
+//     sh_interreflection boolean false   with lighting "sh": add one diffuse bounce of the
+//                                       plant's own light to its transfer (Sloan et al. 2002's
+//                                       interreflected transfer; bakes about twice as long)
 //   }
 #include <array>
 #include <cstdint>
@@ -307,6 +310,7 @@ struct lod_settings {
     float cloud_distance_m = 30.0f;
     std::string lighting = "normal_mapped";  // one of k_lightings
     std::uint32_t sh_bands = 3;
+    bool sh_interreflection = false;
     bool operator==(const lod_settings&) const = default;
 };
 

@@ -335,6 +335,7 @@ const field_table<lod_settings>& lod_fields() {
                                   .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})
                                   .choice("lighting", &t::lighting, k_lightings)
                                   .integer("sh_bands", &t::sh_bands, {2, 3})
+                                  .boolean("sh_interreflection", &t::sh_interreflection)
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

@@ -132,6 +132,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     transfer_settings transfer_config;
     transfer_config.bands = s.lod.sh_bands;
     transfer_config.seed = seed;
+    transfer_config.interreflection = s.lod.sh_interreflection;
     std::array<radiance_transfer, 3> transfer;
     point_line_transfer sample_transfer;
     if (by_transfer) {

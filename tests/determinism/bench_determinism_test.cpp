@@ -17,7 +17,7 @@ std::vector<bench_configuration_spec> some_configurations() {
     std::vector<bench_configuration_spec> chosen;
     for (const auto& c : default_bench_configurations())
         if (c.name == "reference" || c.name == "brute_force" || c.name == "mesh_lod" || c.name == "baseline" ||
-            c.name == "points_lines_d2" || c.name == "billboard_clouds")
+            c.name == "points_lines_d2" || c.name == "billboard_clouds" || c.name == "billboard_clouds_sh")
             chosen.push_back(c);
     return chosen;
 }
@@ -40,8 +40,8 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
     SYLVA_REQUIRE_GL();
     const bench_report one = bench_tiny(1);
     const bench_report two = bench_tiny(2);
-    ASSERT_EQ(one.configurations.size(), 6u);
-    ASSERT_EQ(two.configurations.size(), 6u);
+    ASSERT_EQ(one.configurations.size(), 7u);
+    ASSERT_EQ(two.configurations.size(), 7u);
     for (std::size_t i = 0; i < one.configurations.size(); ++i) {
         const bench_configuration& a = one.configurations[i];
         const bench_configuration& b = two.configurations[i];

@@ -321,7 +321,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
         {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
-                   "cloud_distance_m, lighting, sh_bands"},
+                   "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -746,11 +746,12 @@ TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {
 
 TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
     json j = minimal();
-    j["lod"] = {{"lighting", "sh"}, {"sh_bands", 2}};
+    j["lod"] = {{"lighting", "sh"}, {"sh_bands", 2}, {"sh_interreflection", true}};
     j["species"][0]["lighting"] = "pre_lit";
     const scenario s = load(j);
     EXPECT_EQ(s.lod.lighting, "sh");
     EXPECT_EQ(s.lod.sh_bands, 2u);
+    EXPECT_TRUE(s.lod.sh_interreflection);
     EXPECT_EQ(s.species[0].lighting, "pre_lit");
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
 }
