@@ -129,7 +129,8 @@ reference_frames render_reference(const scenario& s, render::gl_context& context
         const frame_record record = player.step();
         ref.frame_ms.push_back(record.frame_ms);
         ref.images.push_back(box_downsample(player.capture(), spec.samples));
-        if (!settings.frames_dir.empty()) save_frame(ref.images.back(), settings.frames_dir / "_reference", f);
+        if (!settings.frames_dir.empty())
+            save_frame(ref.images.back(), settings.frames_dir / (lighting.empty() ? "_reference" : "_reference_" + lighting), f);
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         ref.masks.push_back(plant_mask(ids));
         ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
@@ -386,13 +387,20 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.reference_frame_ms_median = median_of(ref.frame_ms);
     // A configuration that lights every species another way is compared with a reference lit
     // that way too (full geometry, 3x3 samples), so its errors are its representation's alone.
+    // Full geometry draws no clouds, so pre-lit and normal-mapped references are one image.
+    auto reference_lighting = [](const std::string& l) { return l == "sh" ? l : std::string("normal_mapped"); };
+    const bool scenario_all_sh = std::all_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+    });
+    const bool scenario_no_sh = std::none_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+    });
     std::map<std::string, reference_frames> lit_references;
     for (std::size_t i = 0; i < selected.size(); ++i) {
-        const std::string& lighting = selected[i]->options.lighting;
-        const bool own = lighting.empty() ||
-                         (lighting == s.lod.lighting &&
-                          std::all_of(s.species.begin(), s.species.end(),
-                                      [](const species_settings& sp) { return sp.lighting == "scenario"; }));
+        const std::string lighting =
+            selected[i]->options.lighting.empty() ? std::string() : reference_lighting(selected[i]->options.lighting);
+        const bool own = lighting.empty() || (lighting == "sh" && scenario_all_sh) ||
+                         (lighting == "normal_mapped" && scenario_no_sh);
         if (!own && !lit_references.contains(lighting))
             lit_references.emplace(lighting,
                                    render_reference(s, context, cache, settings, selected.size(), lighting));

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -238,6 +239,37 @@ void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring, bo
         }
 }
 
+// Texels of no billboard take the mean transfer of the covered texels: the coarse mip levels
+// average rectangles with their surroundings, and zero transfer there would darken far clouds'
+// edges (the colour pages need no such care: their alpha fades those texels out).
+void fill_transfer_background(billboard_cloud& cloud, std::uint32_t ring) {
+    const image_rgba8& albedo = cloud.pages[std::size_t(cloud_atlas_page::albedo)];
+    std::vector<std::uint8_t> used(std::size_t(albedo.width) * albedo.height, 0);
+    for (const cloud_billboard& b : cloud.billboards) {
+        const std::uint32_t x0 = b.rect.x > ring ? b.rect.x - ring : 0, y0 = b.rect.y > ring ? b.rect.y - ring : 0;
+        const std::uint32_t x1 = std::min(albedo.width, b.rect.x + b.rect.width + ring);
+        const std::uint32_t y1 = std::min(albedo.height, b.rect.y + b.rect.height + ring);
+        for (std::uint32_t y = y0; y < y1; ++y)
+            for (std::uint32_t x = x0; x < x1; ++x) used[std::size_t(y) * albedo.width + x] = 1;
+    }
+    for (image_rgba8& page : cloud.transfer_pages) {
+        std::array<double, 4> sum{};
+        std::size_t covered = 0;
+        for (std::uint32_t y = 0; y < albedo.height; ++y)
+            for (std::uint32_t x = 0; x < albedo.width; ++x)
+                if (albedo.at(x, y)[3] > 0) {
+                    for (int c = 0; c < 4; ++c) sum[std::size_t(c)] += page.at(x, y)[c];
+                    ++covered;
+                }
+        if (covered == 0) continue;
+        std::array<std::uint8_t, 4> mean{};
+        for (int c = 0; c < 4; ++c) mean[std::size_t(c)] = std::uint8_t(std::lround(sum[std::size_t(c)] / double(covered)));
+        for (std::uint32_t y = 0; y < albedo.height; ++y)
+            for (std::uint32_t x = 0; x < albedo.width; ++x)
+                if (!used[std::size_t(y) * albedo.width + x]) std::memcpy(page.at(x, y), mean.data(), 4);
+    }
+}
+
 // One quad: `corners` lower-left, lower-right, upper-right, upper-left as its viewer sees them
 // (counter-clockwise: GL's front face), uvs onto texels [x0, x0 + w) x [y0, y0 + h).
 void add_quad(mesh_data& mesh, const std::array<glm::vec3, 4>& corners, glm::vec3 normal, std::uint32_t x0,
@@ -387,6 +419,7 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         for (image_rgba8& page : cloud.transfer_pages) extend_edges(page, b.rect, settings.gutter / 2, true);
         add_billboard_quads(cloud.mesh, b, cloud.atlas_width, cloud.atlas_height);
     }
+    if (transfer) fill_transfer_background(cloud, settings.gutter / 2);
     cloud.mesh.submeshes.push_back({0, std::uint32_t(cloud.mesh.indices.size()), material_kind::billboard});
     if (!cloud.mesh.vertices.empty()) {
         cloud.mesh.bounds_min = cloud.mesh.bounds_max = cloud.mesh.vertices[0].position;

@@ -57,7 +57,7 @@ namespace sylva {
 
 // Bump whenever the clustering, the boxes, the billboard rule, the bake or the layout change
 // what a bake produces.
-constexpr std::uint32_t k_billboard_cloud_format = 3;  // 2: the pre-lit page; 3: transfer pages
+constexpr std::uint32_t k_billboard_cloud_format = 4;  // 2: the pre-lit page; 3: transfer pages; 4: their background
 
 // Behrendt 2005 §2.2: "We found that f = 0.5 produces visibly pleasing results."
 constexpr float k_billboard_shape_factor = 0.5f;

@@ -46,7 +46,8 @@ struct crossed_billboard {
     image_rgba8 normal;  // model-space normals n * 0.5 + 0.5, alpha = coverage
     // With the plant's radiance transfer (Behrendt 2005 §4): k_transfer_pages pages of the
     // atlas's size (models/transfer_pages.h), the front's transfer; else none. Seen from behind
-    // a quad shows its front image mirrored, and its front transfer too.
+    // a quad shows its front image mirrored, and the shader mirrors its transfer through the
+    // quad's plane as it does the normals.
     std::vector<image_rgba8> transfer_pages;
 };
 

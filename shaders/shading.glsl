@@ -59,13 +59,14 @@ vec3 shade_pre_lit(vec3 lit, vec3 position) {
 // Precomputed radiance transfer (transfer.glsl; Behrendt 2005 §4): `sky_seen` = T_seen . L_sky,
 // `sun_seen` = T_seen . Y(l) and `sun_other` = T_other . Y(l), so the plant's self-shadowing is in
 // the coefficients. Shadows of other objects come from the shadow map, looked up where the sun's
-// ray leaves the plant's own sphere (`exit` metres towards the sun). Foliage transmits the
-// sunlight that reaches its other side, as shade_surface's leaves do.
+// ray leaves the plant's own sphere (`exit` metres towards the sun; negative: no shadow map, see
+// transfer.glsl sphere_exit_distance). Foliage transmits the sunlight that reaches its other
+// side, as shade_surface's leaves do.
 vec3 shade_transfer(vec3 base, vec3 sky_seen, float sun_seen, float sun_other, vec3 position, float exit,
                     bool foliage) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
-    float visibility = sun_visibility(position + l * exit, l, view_depth);
+    float visibility = exit < 0.0 ? 1.0 : sun_visibility(position + l * exit, l, view_depth);
     vec3 sun = u_sun_radiance.rgb * visibility;
     vec3 radiance = base / 3.14159265 * (max(sky_seen, vec3(0.0)) + sun * max(sun_seen, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(sun_other, 0.0));

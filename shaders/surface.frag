@@ -10,8 +10,9 @@
 // the normal page (normal-mapped) or, with CLOUD_PRE_LIT, with the billboard's own plane.
 // FADE_DISSOLVE: the partner of a transition fades by a stable screen-door dissolve.
 // SH_TRANSFER lights by precomputed radiance transfer (transfer.glsl, Behrendt 2005 §4): meshes
-// and lines from the per-vertex dot products surface.vert made, billboard clouds from the
-// transfer pages of their atlas ("Gouraud-interpolated vectors in an extra texture").
+// and lines from the per-vertex dot products surface.vert made, billboard clouds and crossed
+// billboards from the transfer pages of their atlases ("Gouraud-interpolated vectors in an
+// extra texture").
 // PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
 // each sample takes the texture's colour where it was baked (a slightly filtered level: a
 // splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
@@ -78,11 +79,15 @@ float dissolve_hash(uint a, uint b) {
 // billboard side's viewer sees, then the 9 of the other, each (T / range) * 0.5 + 0.5.
 layout(binding = 3) uniform sampler2DArray u_transfer_pages;
 const float k_transfer_page_range = 1.25;  // mirrors models/transfer_pages.h
+flat in vec4 v_sh_sphere;
 #else
 in vec3 v_sh_sky;
 in vec2 v_sh_sun;
-#endif
 in float v_sh_exit;
+#if !defined(PRIMITIVE_SAMPLES)
+in vec3 v_sh_sky_back;
+#endif
+#endif
 #endif
 #ifdef WRITE_ID
 flat in uint v_instance;
@@ -161,25 +166,53 @@ void main() {
 #endif
 #if defined(TRANSFER_PAGES) && defined(SH_TRANSFER)
     // The atlas holds model-space transfer; turn it by the plant's yaw, as surface.vert does
-    // for vertices. A crossed billboard seen from behind shows its front image mirrored, and
-    // is lit with the front's transfer too.
+    // for vertices.
     float seen[9], other[9];
+    float first_page = u_species[int(v_layer + 0.5)].z;
     for (int p = 0; p < 5; ++p) {
-        vec4 t = (texture(u_transfer_pages, vec3(v_uv, v_layer * 5.0 + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
+        vec4 t = (texture(u_transfer_pages, vec3(v_uv, first_page + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
         for (int k = 0; k < 4; ++k) {
             int i = 4 * p + k;
             if (i < 9) seen[i] = t[k];
             else if (i < 18) other[i - 9] = t[k];
         }
     }
+#ifdef MATERIAL_BILLBOARD
+    // A crossed billboard seen from behind shows its front image mirrored through the quad's
+    // plane, as the normal-mapped path reflects its normals: mirror the transfer too. The quads
+    // are axis-aligned in model space (models/crossed_billboard.h): the x-y quad (normal z)
+    // flips the coefficients odd in z (2, 5, 7), the z-y quad (normal x) those odd in x (3, 4, 7).
+    if (dot(plane, -v_position) < 0.0) {
+        vec3 model_plane = vec3(v_yaw_cos_sin.x * plane.x - v_yaw_cos_sin.y * plane.z, plane.y,
+                                v_yaw_cos_sin.y * plane.x + v_yaw_cos_sin.x * plane.z);
+        bool xy_quad = abs(model_plane.z) > abs(model_plane.x);
+        for (int i = 2; i < 8; ++i) {
+            bool odd = xy_quad ? (i == 2 || i == 5 || i == 7) : (i == 3 || i == 4 || i == 7);
+            if (odd) {
+                seen[i] = -seen[i];
+                other[i] = -other[i];
+            }
+        }
+    }
+#endif
     sh_rotate_about_y(seen, v_yaw_cos_sin.x, v_yaw_cos_sin.y);
     sh_rotate_about_y(other, v_yaw_cos_sin.x, v_yaw_cos_sin.y);
     out_color = vec4(shade_transfer(base, sh_transfer_sky(seen), sh_transfer_sun(seen), sh_transfer_sun(other),
-                                    v_position, v_sh_exit, true), 1.0);
+                                    v_position, sphere_exit_distance(v_position, v_sh_sphere), true), 1.0);
 #elif defined(SH_TRANSFER)
-#if defined(MATERIAL_LEAF)
+#if defined(PRIMITIVE_SAMPLES) && defined(MATERIAL_LEAF)
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, true), 1.0);
+#elif defined(PRIMITIVE_SAMPLES)
+    out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, false), 1.0);
+#elif defined(MATERIAL_LEAF)
+    // A leaf card seen from its back face is lit by its back transfer (as !gl_FrontFacing turns
+    // the normal in the normal-lit path).
+    if (gl_FrontFacing)
+        out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, true), 1.0);
+    else
+        out_color = vec4(shade_transfer(base, v_sh_sky_back, v_sh_sun.y, v_sh_sun.x, v_position, v_sh_exit, true), 1.0);
 #else
+    // Bark is one-sided and back-face culled: always the side its normal faces.
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, false), 1.0);
 #endif
 #elif defined(MATERIAL_BILLBOARD_CLOUD) && defined(CLOUD_PRE_LIT)

@@ -28,11 +28,20 @@ layout(location = 6) in vec4 in_transfer1;
 layout(location = 7) in vec4 in_transfer2;
 layout(location = 8) in vec4 in_transfer3;
 layout(location = 9) in vec4 in_transfer4;
-#if !defined(MATERIAL_BILLBOARD_CLOUD) && !defined(MATERIAL_BILLBOARD)
-out vec3 v_sh_sky;    // T_seen . L_sky
-out vec2 v_sh_sun;    // T_seen . Y(sun), T_other . Y(sun)
-#endif
+#if defined(MATERIAL_BILLBOARD_CLOUD) || defined(MATERIAL_BILLBOARD)
+// Billboard quads reach across the plant: the sun's exit from its sphere is found per fragment.
+flat out vec4 v_sh_sphere;
+#else
+// Samples (points, lines): the side facing the eye is the one seen, so x/rgb are that side's,
+// y the other's. Triangles: the side the normal faces, and v_sh_sky_back the other side's
+// (surface.frag picks by gl_FrontFacing).
+out vec3 v_sh_sky;    // T . L_sky
+out vec2 v_sh_sun;    // T . Y(sun) of the two sides
 out float v_sh_exit;  // metres the sun's ray runs inside the plant's own sphere
+#if !defined(PRIMITIVE_POINTS) && !defined(PRIMITIVE_LINES)
+out vec3 v_sh_sky_back;
+#endif
+#endif
 #endif
 
 #ifdef SHADOW_PASS
@@ -86,19 +95,28 @@ void main() {
     v_instance = uint(gl_BaseInstanceARB + gl_InstanceID);
 #endif
 #if defined(SH_TRANSFER) && !defined(SHADOW_PASS)
-    v_sh_exit = sphere_exit_distance(world, in_instance_position_yaw.xyz, scale, v_layer);
-#if !defined(MATERIAL_BILLBOARD_CLOUD) && !defined(MATERIAL_BILLBOARD)
+    vec4 sphere = plant_sphere(in_instance_position_yaw.xyz, scale, v_layer);
+#if defined(MATERIAL_BILLBOARD_CLOUD) || defined(MATERIAL_BILLBOARD)
+    v_sh_sphere = sphere;
+#else
+    v_sh_exit = sphere_exit_distance(world, sphere);
     float front[9] = float[9](in_transfer0.x, in_transfer0.y, in_transfer0.z, in_transfer0.w, in_transfer1.x,
                               in_transfer1.y, in_transfer1.z, in_transfer1.w, in_transfer2.x);
     float back[9] = float[9](in_transfer2.y, in_transfer2.z, in_transfer2.w, in_transfer3.x, in_transfer3.y,
                              in_transfer3.z, in_transfer3.w, in_transfer4.x, in_transfer4.y);
     sh_rotate_about_y(front, c, s);
     sh_rotate_about_y(back, c, s);
+    float sun_front = sh_transfer_sun(front), sun_back = sh_transfer_sun(back);
+#if defined(PRIMITIVE_POINTS) || defined(PRIMITIVE_LINES)
     // The side seen is the one whose normal faces the eye (the eye is at the origin).
     bool front_seen = dot(v_normal, world) <= 0.0;
-    float sun_front = sh_transfer_sun(front), sun_back = sh_transfer_sun(back);
     v_sh_sky = front_seen ? sh_transfer_sky(front) : sh_transfer_sky(back);
     v_sh_sun = front_seen ? vec2(sun_front, sun_back) : vec2(sun_back, sun_front);
+#else
+    v_sh_sky = sh_transfer_sky(front);
+    v_sh_sky_back = sh_transfer_sky(back);
+    v_sh_sun = vec2(sun_front, sun_back);
+#endif
 #endif
 #endif
 #ifdef SHADOW_PASS

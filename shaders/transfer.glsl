@@ -7,13 +7,39 @@
 // u_sun_radiance). Every representation of a plant reads the same coefficients, so a plant is
 // lit alike at every distance. Needs common.glsl first.
 
-// The plants' spheres (centre height above the base and radius, scale 1), by texture layer:
-// shadows between objects (Behrendt 2005 §4: "we use a shadow map") are looked up from where
-// the sun's ray leaves the plant's own sphere, so the map adds the shadows of other objects
-// and not a second, sharper copy of the self-shadowing the transfer already holds.
+// Per species, by texture layer (systems/render/renderer.cpp write_species_block): x the
+// centre height of a sphere around every representation of the plant (scale 1), y its radius,
+// z the species' first layer in the transfer-page arrays. Shadows between objects (Behrendt
+// 2005 §4: "we use a shadow map") are looked up from where the sun's ray leaves the plant's own
+// sphere, so the map adds the shadows of other objects and not a second, sharper copy of the
+// self-shadowing the transfer already holds.
 layout(std140, binding = 1) uniform species_block {
-    vec4 u_species_sphere[64];  // x centre height, y radius
+    vec4 u_species[64];
 };
+
+// An eco-tile point set's instance (Deussen 2002 §6.2) marks its layer with this fraction
+// (systems/draw_list.h k_aggregated_layer_flag): its samples come from many plants, so there is
+// no one sphere to leave.
+bool aggregated_layer(float layer) { return fract(layer) > 0.125; }
+
+// The plant's sphere, camera-relative centre and radius, for an instance at `origin`
+// (camera-relative) with `scale`; radius -1 for an aggregated set.
+vec4 plant_sphere(vec3 origin, float scale, float layer) {
+    if (aggregated_layer(layer)) return vec4(0.0, 0.0, 0.0, -1.0);
+    vec4 s = u_species[int(layer + 0.5)];
+    return vec4(origin + vec3(0.0, s.x * scale, 0.0), s.y * scale);
+}
+
+// How far the sun's ray from `position` (camera-relative) runs inside `sphere`; -1 when there
+// is no sphere (the caller then leaves the shadow map out: an aggregated set keeps only the
+// self-shadowing its transfer holds).
+float sphere_exit_distance(vec3 position, vec4 sphere) {
+    if (sphere.w < 0.0) return -1.0;
+    vec3 d = position - sphere.xyz;
+    float b = dot(d, u_sun_direction.xyz);
+    float disc = b * b - (dot(d, d) - sphere.w * sphere.w);
+    return disc > 0.0 ? max(-b + sqrt(disc), 0.0) : 0.0;
+}
 
 // Mirrors sylva::rotate_about_y (systems/lighting/transfer_rotation.h, where it is derived):
 // model-space coefficients to world space under the instance yaw, c = cos, s = sin.
@@ -42,15 +68,4 @@ float sh_transfer_sun(float t[9]) {
     float e = 0.0;
     for (int i = 0; i < 9; ++i) e += t[i] * u_sun_sh[i / 4][i % 4];
     return e;
-}
-
-// How far the sun's ray from `position` (camera-relative) runs inside the plant's sphere; the
-// plant instance stands at `origin` (camera-relative) with `scale`.
-float sphere_exit_distance(vec3 position, vec3 origin, float scale, float layer) {
-    vec4 sphere = u_species_sphere[int(layer + 0.5)];
-    vec3 d = position - (origin + vec3(0.0, sphere.x * scale, 0.0));
-    float r = sphere.y * scale;
-    float b = dot(d, u_sun_direction.xyz);
-    float disc = b * b - (dot(d, d) - r * r);
-    return disc > 0.0 ? max(-b + sqrt(disc), 0.0) : 0.0;
 }

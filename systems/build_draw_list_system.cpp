@@ -286,7 +286,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
                 const tile_point_part& part = tile_sets.parts[k & ~k_tile_item_bit];
                 instance_gpu g;
                 g.position = glm::vec3(tile_sets.origin[part.tile] - cam.position);
-                g.texture_layer = part.texture_layer;
+                g.texture_layer = part.texture_layer + k_aggregated_layer_flag;
                 list.instances[i] = g;
                 continue;
             }

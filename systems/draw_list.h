@@ -16,6 +16,11 @@ namespace sylva {
 // plant's dense index with this bit set. Tile items use the bit above (k_tile_item_bit).
 inline constexpr std::uint32_t k_partner_item_bit = 0x40000000u;
 
+// An eco-tile point set's instance record (Deussen 2002 §6.2) adds this to its texture layer:
+// the layer still rounds to the species' (GL rounds array layers to the nearest), and
+// shaders/transfer.glsl reads the fraction as "samples of many plants, no one plant's sphere".
+inline constexpr float k_aggregated_layer_flag = 0.25f;
+
 struct draw_item {
     std::uint64_t key = 0;
     std::uint32_t instance = 0;  // dense index of the plant in its component tables

@@ -44,6 +44,12 @@ struct species_entry {
     float center_height = 0.5f;        // sphere centre above the base, unit scale
     float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
     lighting_variant lighting = lighting_variant::normal_mapped;
+    // Lighting sh: the radius (scale 1, about the same centre) of a sphere around every
+    // representation, crossed billboard and cloud included, outside which shadows come from
+    // other objects (shaders/transfer.glsl); and the species' first layer in the transfer-page
+    // arrays (k_transfer_pages of them; only SH species have pages).
+    float transfer_radius = 0.0f;
+    float transfer_layer = 0.0f;
     // The point/line representation's parts (species_library::lod_parts), when the scene's
     // LOD policy can select it; none otherwise, and none for a species split into octree cells
     // (Deussen 2002 §6.1), whose parts belong to its cells (species_library::cells).
@@ -106,18 +112,17 @@ struct scene_assets {
     // order of leaf_textures, all the same size; the normal atlas holds model-space normals.
     std::vector<image_rgba8> billboard_albedo;
     std::vector<image_rgba8> billboard_normal;
-    // Their SH transfer pages (models/transfer_pages.h), k_transfer_pages per species in species
-    // order; empty when no species is lit by transfer.
+    // Their SH transfer pages, laid out as cloud_transfer's.
     std::vector<image_rgba8> billboard_transfer;
     // The billboard clouds' atlas pages (models/billboard_cloud.h: colour with coverage x
     // gaussian alpha, model-space normals with coverage alpha), one layer per species in the same
     // order, all the size of the largest (smaller atlases replicated by an integer factor); empty
-    // when the scene draws no clouds. SH pages (Behrendt 2005 §4) will join as further arrays.
+    // when the scene draws no clouds.
     std::vector<image_rgba8> cloud_albedo;
     std::vector<image_rgba8> cloud_normal;
     std::vector<image_rgba8> cloud_pre_lit;  // colour lit at bake time, alpha as cloud_albedo's
-    // SH transfer pages (models/transfer_pages.h k_transfer_pages per species, in species
-    // order; blank pages for species not lit by transfer); empty when no species is.
+    // SH transfer pages (models/transfer_pages.h), k_transfer_pages for each species lit by
+    // transfer, in species order (species_entry::transfer_layer); empty when no species is.
     std::vector<image_rgba8> cloud_transfer;
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one

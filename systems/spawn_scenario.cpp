@@ -21,7 +21,6 @@
 #include "models/placement.h"
 #include "models/random.h"
 #include "models/textures.h"
-#include "models/transfer_pages.h"
 #include "systems/draw_list.h"
 #include "systems/eco_tiles.h"
 #include "systems/frame_stats.h"
@@ -104,17 +103,14 @@ lighting_variant lighting_of(const scenario& s, const species_settings& species)
     throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
 }
 
-// The clouds' or crossed billboards' transfer pages: none when no species has them; else every
-// species' (blank pages of zero transfer for those lit otherwise), at the albedo pages' common
-// size (crossed billboards all share one size).
-void fill_transfer_pages(std::vector<image_rgba8>& pages, const std::vector<image_rgba8>& albedo) {
-    if (std::all_of(pages.begin(), pages.end(), [](const image_rgba8& p) { return p.texels.empty(); })) {
-        pages.clear();
-        return;
-    }
-    for (image_rgba8& page : pages)
-        if (page.texels.empty()) page = blank_transfer_pages(albedo.front().width, albedo.front().height).front();
-    match_cloud_atlas_sizes(pages);
+// The radius of a sphere about the species' centre (fit_bounds) around every vertex of every
+// representation it may draw: shaders/transfer.glsl looks shadows up outside it.
+float transfer_radius(const species_entry& entry, std::initializer_list<const mesh_data*> meshes) {
+    const glm::vec3 center{0.0f, entry.center_height, 0.0f};
+    float radius = entry.bounding_radius;
+    for (const mesh_data* mesh : meshes)
+        for (const vertex& v : mesh->vertices) radius = std::max(radius, glm::length(v.position - center));
+    return radius;
 }
 
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
@@ -167,6 +163,12 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     entry.max_distance_m = settings.max_distance_m;
     entry.texture_layer = float(index);
     fit_bounds(model.lods[0], entry);
+    if (by_transfer) {
+        entry.transfer_radius = transfer_radius(entry, {&model.lods[1], &model.lods[2], &billboard.mesh, &cloud.mesh});
+        entry.transfer_layer = float(assets.billboard_transfer.size());
+        for (image_rgba8& page : billboard.transfer_pages) assets.billboard_transfer.push_back(std::move(page));
+        for (image_rgba8& page : cloud.transfer_pages) assets.cloud_transfer.push_back(std::move(page));
+    }
     add_mesh(assets, std::move(model.lods[0]), representation::mesh_full, entry.mesh_full, entry.triangles_full);
     add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
              entry.triangles_reduced);
@@ -191,9 +193,6 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         assets.cloud_albedo.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::albedo)]));
         assets.cloud_normal.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::normal)]));
         assets.cloud_pre_lit.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)]));
-        // Placeholders for a species without transfer pages: build_scene_assets fills them.
-        cloud.transfer_pages.resize(k_transfer_pages);
-        for (image_rgba8& page : cloud.transfer_pages) assets.cloud_transfer.push_back(std::move(page));
     }
     entry.lighting = lighting;
     for (std::size_t m = first_mesh; m < assets.meshes.size(); ++m) assets.library.meshes[m].lighting = entry.lighting;
@@ -201,8 +200,6 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
     assets.billboard_normal.push_back(std::move(billboard.normal));
-    billboard.transfer_pages.resize(k_transfer_pages);  // placeholders: see fill_transfer_pages
-    for (image_rgba8& page : billboard.transfer_pages) assets.billboard_transfer.push_back(std::move(page));
     assets.library.species.push_back(std::move(entry));
 }
 
@@ -234,8 +231,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     match_cloud_atlas_sizes(assets.cloud_albedo);
     match_cloud_atlas_sizes(assets.cloud_normal);
     match_cloud_atlas_sizes(assets.cloud_pre_lit);
-    fill_transfer_pages(assets.cloud_transfer, assets.cloud_albedo);
-    fill_transfer_pages(assets.billboard_transfer, assets.billboard_albedo);
+    match_cloud_atlas_sizes(assets.cloud_transfer);
     return assets;
 }
 

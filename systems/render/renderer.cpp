@@ -137,7 +137,7 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         if (!assets.cloud_pre_lit.empty()) m_cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
         if (!assets.cloud_transfer.empty()) m_cloud_transfer = make_texture_array(assets.cloud_transfer, false);
     }
-    write_species_block(assets.library);
+    write_species_block(assets);
     if (assets.environment_sky.width > 0)
         m_map_sky = downsample_environment_map(assets.environment_sky, k_sky_width, k_sky_height).rgb;
     if (settings.shadows)
@@ -154,15 +154,26 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
 
 renderer::~renderer() = default;
 
-// transfer.glsl's species_block: each species' bounding sphere (centre height, radius) by its
-// texture layer, for the shadow lookup outside the plant's own volume.
-void renderer::write_species_block(const species_library& library) {
-    if (library.species.size() > k_max_species_spheres)
-        throw std::runtime_error("renderer: at most " + std::to_string(k_max_species_spheres) + " species (the scene has " +
-                                 std::to_string(library.species.size()) + ")");
+// transfer.glsl's species_block, by texture layer: each species' sphere (centre height, radius
+// around every representation) for shadow lookups outside the plant's own volume, and its first
+// transfer-page layer. Only species lit by transfer read it, so only they count against its size.
+void renderer::write_species_block(const scene_assets& assets) {
     std::array<glm::vec4, k_max_species_spheres> spheres{};
-    for (const species_entry& e : library.species)
-        spheres[std::size_t(e.texture_layer)] = glm::vec4(e.center_height, e.bounding_radius, 0.0f, 0.0f);
+    for (const species_entry& e : assets.library.species) {
+        if (e.lighting != lighting_variant::sh) continue;
+        if (e.texture_layer >= float(k_max_species_spheres))
+            throw std::runtime_error("renderer: species '" + e.name + "' is lit by SH transfer, which supports the first " +
+                                     std::to_string(k_max_species_spheres) + " species of a scene only");
+        spheres[std::size_t(e.texture_layer)] = glm::vec4(e.center_height, e.transfer_radius, e.transfer_layer, 0.0f);
+    }
+    // Billboards read their transfer from pages: a scene that lights them by transfer must have them.
+    for (std::size_t i = 0; i < assets.meshes.size() && i < assets.library.meshes.size(); ++i) {
+        if (assets.library.meshes[i].lighting != lighting_variant::sh || assets.meshes[i].submeshes.empty()) continue;
+        const material_kind m = assets.meshes[i].submeshes[0].material;
+        if ((m == material_kind::billboard && assets.billboard_transfer.empty()) ||
+            (m == material_kind::billboard_cloud && assets.cloud_transfer.empty()))
+            throw std::logic_error("renderer: mesh " + std::to_string(i) + " is lit by SH transfer but has no transfer pages");
+    }
     m_species_block = make_buffer();
     glNamedBufferStorage(m_species_block.id(), sizeof(spheres), spheres.data(), 0);
 }

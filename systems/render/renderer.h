@@ -119,7 +119,7 @@ private:
                     primitive_kind primitive = primitive_kind::triangles);
     void draw_samples(const pass_commands& groups, int cascade);
     void draw_clouds(const pass_commands& groups, int cascade);
-    void write_species_block(const species_library& library);
+    void write_species_block(const scene_assets& assets);
     static constexpr std::size_t k_max_species_spheres = 64;  // transfer.glsl u_species_sphere
     static constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
         lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh};

@@ -87,6 +87,8 @@ transfer_scene make_scene() {
     species_entry card;
     card.center_height = 1.0f;
     card.bounding_radius = 2.2f;
+    card.transfer_radius = 2.2f;
+    card.lighting = lighting_variant::sh;
     s.assets.library.species = {card};
     s.assets.terrain_meshes = {0};
     s.assets.leaf_textures = {solid(60)};
