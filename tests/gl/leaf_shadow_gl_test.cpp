@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "flat_scene.h"
 #include "gl_test_support.h"
 #include "systems/lighting/sky_model.h"
 #include "systems/render/renderer.h"
@@ -15,22 +16,9 @@
 namespace sylva {
 namespace {
 
-mesh_data horizontal_quad(float half, float y, material_kind material) {
-    mesh_data m;
-    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}}, {{half, y, -half}, {0, 1, 0}, {1, 0}},
-                  {{half, y, half}, {0, 1, 0}, {1, 1}}, {{-half, y, half}, {0, 1, 0}, {0, 1}}};
-    m.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
-    m.submeshes = {{0, 6, material}};
-    m.bounds_min = {-half, y, -half};
-    m.bounds_max = {half, y, half};
-    return m;
-}
-
-image_rgba8 solid(std::uint8_t v) {
-    image_rgba8 image{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, v)};
-    for (std::size_t i = 3; i < image.texels.size(); i += 4) image.texels[i] = 255;
-    return image;
-}
+using testing::horizontal_quad;
+using testing::luminance_at;
+using testing::solid;
 
 // Opaque where u < 0.5 (west, -x), fully transparent where u >= 0.5.
 image_rgba8 half_transparent_leaf() {
@@ -38,15 +26,6 @@ image_rgba8 half_transparent_leaf() {
     for (std::uint32_t y = 0; y < 16; ++y)
         for (std::uint32_t x = 8; x < 16; ++x) image.at(x, y)[3] = 0;
     return image;
-}
-
-float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec3 world) {
-    const glm::vec4 clip = cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    const auto px = std::uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
-    const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));
-    const std::uint8_t* p = image.at(px, py);
-    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
 TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {

@@ -1,0 +1,43 @@
+#pragma once
+// Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, and
+// the luminance the camera sees at a world point.
+#include <cstdint>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include "components/camera.h"
+#include "models/image.h"
+#include "models/mesh.h"
+
+namespace sylva::testing {
+
+// A square of side 2·half at height y, normal up, wound counter-clockwise seen from above.
+inline mesh_data horizontal_quad(float half, float y, material_kind material) {
+    mesh_data m;
+    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}}, {{half, y, -half}, {0, 1, 0}, {1, 0}},
+                  {{half, y, half}, {0, 1, 0}, {1, 1}}, {{-half, y, half}, {0, 1, 0}, {0, 1}}};
+    m.indices = {0, 2, 1, 0, 3, 2};
+    m.submeshes = {{0, 6, material}};
+    m.bounds_min = {-half, y, -half};
+    m.bounds_max = {half, y, half};
+    return m;
+}
+
+// A 16 x 16 opaque texture of grey level v.
+inline image_rgba8 solid(std::uint8_t v) {
+    image_rgba8 image{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, v)};
+    for (std::size_t i = 3; i < image.texels.size(); i += 4) image.texels[i] = 255;
+    return image;
+}
+
+// Rec. 709 luminance (0..255) of the pixel where `cam` sees `world`.
+inline float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec3 world) {
+    const glm::vec4 clip = cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const auto px = std::uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
+    const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));
+    const std::uint8_t* p = image.at(px, py);
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+}  // namespace sylva::testing
