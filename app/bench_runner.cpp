@@ -1,14 +1,15 @@
 #include "app/bench_runner.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <tbb/parallel_invoke.h>
 #include <thread>
 
 #include "app/metrics.h"
@@ -130,7 +131,10 @@ reference_frames render_reference(const scenario& s, render::gl_context& context
         ref.frame_ms.push_back(record.frame_ms);
         ref.images.push_back(box_downsample(player.capture(), spec.samples));
         if (!settings.frames_dir.empty())
-            save_frame(ref.images.back(), settings.frames_dir / (lighting.empty() ? "_reference" : "_reference_" + lighting), f);
+            save_frame(
+                ref.images.back(),
+                settings.frames_dir / (lighting.empty() ? "_reference" : "_reference_" + lighting),
+                f);
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         ref.masks.push_back(plant_mask(ids));
         ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
@@ -293,9 +297,10 @@ bench_configuration_spec billboard_clouds(const std::string& lighting) {
     bench_configuration_spec c;
     c.name = lighting == "normal_mapped" ? "billboard_clouds" : "billboard_clouds_" + lighting;
     c.family = "billboard_clouds";
-    c.description = "billboard clouds (Behrendt 2005), " + lighting +
-                    ": full mesh nearer than 30 m x plant scale, cloud beyond, crossed billboard beyond "
-                    "the far distance, sort-free fades";
+    c.description =
+        "billboard clouds (Behrendt 2005), " + lighting +
+        ": full mesh nearer than 30 m x plant scale, cloud beyond, crossed billboard beyond "
+        "the far distance, sort-free fades";
     c.options.policy.mode = lod_policy::kind::billboard_clouds;
     c.options.lighting = lighting;
     return c;
@@ -348,12 +353,14 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     // Behrendt 2005 §4: the same representations lit by precomputed radiance transfer.
     bench_configuration_spec mesh_sh = mesh_lod(1.0);
     mesh_sh.name = "mesh_lod_sh";
-    mesh_sh.description = "the runtime's distance levels, every species lit by SH transfer (Behrendt 2005 §4)";
+    mesh_sh.description =
+        "the runtime's distance levels, every species lit by SH transfer (Behrendt 2005 §4)";
     mesh_sh.options.lighting = "sh";
     list.push_back(mesh_sh);
     bench_configuration_spec points_sh = points_lines(1.0f);
     points_sh.name = "points_lines_sh";
-    points_sh.description = "points and lines, d' = 1 px, every species lit by SH transfer (Behrendt 2005 §4)";
+    points_sh.description =
+        "points and lines, d' = 1 px, every species lit by SH transfer (Behrendt 2005 §4)";
     points_sh.options.lighting = "sh";
     list.push_back(points_sh);
     return list;
@@ -388,24 +395,30 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     // A configuration that lights every species another way is compared with a reference lit
     // that way too (full geometry, 3x3 samples), so its errors are its representation's alone.
     // Full geometry draws no clouds, so pre-lit and normal-mapped references are one image.
-    auto reference_lighting = [](const std::string& l) { return l == "sh" ? l : std::string("normal_mapped"); };
-    const bool scenario_all_sh = std::all_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
-        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
-    });
-    const bool scenario_no_sh = std::none_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
-        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
-    });
+    auto reference_lighting = [](const std::string& l) {
+        return l == "sh" ? l : std::string("normal_mapped");
+    };
+    const bool scenario_all_sh =
+        std::all_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+            return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+        });
+    const bool scenario_no_sh =
+        std::none_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+            return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+        });
     std::map<std::string, reference_frames> lit_references;
     for (std::size_t i = 0; i < selected.size(); ++i) {
-        const std::string lighting =
-            selected[i]->options.lighting.empty() ? std::string() : reference_lighting(selected[i]->options.lighting);
+        const std::string lighting = selected[i]->options.lighting.empty()
+                                         ? std::string()
+                                         : reference_lighting(selected[i]->options.lighting);
         const bool own = lighting.empty() || (lighting == "sh" && scenario_all_sh) ||
                          (lighting == "normal_mapped" && scenario_no_sh);
         if (!own && !lit_references.contains(lighting))
-            lit_references.emplace(lighting,
-                                   render_reference(s, context, cache, settings, selected.size(), lighting));
-        report.configurations.push_back(run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting),
-                                                          context, cache, settings, int(i), selected.size()));
+            lit_references.emplace(
+                lighting, render_reference(s, context, cache, settings, selected.size(), lighting));
+        report.configurations.push_back(
+            run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting), context,
+                              cache, settings, int(i), selected.size()));
     }
     if (settings.costs)
         report.primitive_costs = {{"triangle", settings.costs->triangle},

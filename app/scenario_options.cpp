@@ -8,10 +8,11 @@
 namespace sylva {
 
 void add_scenario_options(CLI::App& command, scenario_options& options) {
-    command.add_option("scenario", options.path,
-                       "Scenario JSON file (see README: scenario format), or the name of a bundled "
-                       "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day); default: "
-                       "the bundled default");
+    command.add_option(
+        "scenario", options.path,
+        "Scenario JSON file (see README: scenario format), or the name of a bundled "
+        "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day); default: "
+        "the bundled default");
     command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")
         ->check(CLI::Range(1u, 1000000u));
     command.add_option("--width", options.width, "Image width in pixels (overrides the scenario)")
@@ -30,11 +31,13 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "lod.cloud_distance_m, crossed billboards far)")
         ->check(CLI::IsMember({"mesh_levels", "points_lines", "billboard_clouds"}));
     command
-        .add_option("--lighting", options.lighting,
-                    "How every species is lit (overrides lod.lighting and each species' own): normal_mapped "
-                    "(by its normals), pre_lit (billboard clouds from the page lit at bake time) or sh "
-                    "(precomputed radiance transfer with self-shadowing in every representation, Behrendt "
-                    "2005 §4; the first run bakes the transfer into the cache)")
+        .add_option(
+            "--lighting", options.lighting,
+            "How every species is lit (overrides lod.lighting and each species' own): "
+            "normal_mapped "
+            "(by its normals), pre_lit (billboard clouds from the page lit at bake time) or sh "
+            "(precomputed radiance transfer with self-shadowing in every representation, Behrendt "
+            "2005 §4; the first run bakes the transfer into the cache)")
         ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh"}));
     command
         .add_option("--sample-distance", options.sample_distance_px,

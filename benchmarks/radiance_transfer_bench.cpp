@@ -45,7 +45,12 @@ void bm_transfer_broadleaf_200k(benchmark::State& state) {
     state.counters["rays_per_second"] =
         benchmark::Counter(rays * double(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(bm_transfer_broadleaf_200k)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(bm_transfer_broadleaf_200k)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 }  // namespace
 

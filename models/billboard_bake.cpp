@@ -364,7 +364,9 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
             float nearest = -std::numeric_limits<float>::infinity();
             std::uint32_t covered = 0;
             const std::size_t texel_index = std::size_t(ty) * settings.width + tx;
-            float* transfer = source.transfer ? &out.transfer[texel_index * k_billboard_transfer_floats] : nullptr;
+            float* transfer = source.transfer
+                                  ? &out.transfer[texel_index * k_billboard_transfer_floats]
+                                  : nullptr;
             for (std::uint32_t j = 0; j < s; ++j)
                 for (std::uint32_t i = 0; i < s; ++i) {
                     const sample& smp = samples[std::size_t(ty * s + j) * raster.columns() + tx * s + i];
@@ -380,7 +382,8 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
             out.covered[texel] = std::uint16_t(covered);
             if (covered == 0) continue;
             if (transfer)
-                for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i) transfer[i] /= float(covered);
+                for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i)
+                    transfer[i] /= float(covered);
             const float n_length = glm::length(normal);
             normal = n_length > 0.0f ? normal / n_length : raster.plane_normal();
             const std::uint32_t total = s * s;
@@ -462,14 +465,16 @@ void fill_uncovered_transfer(billboard_image& image) {
     std::size_t covered = 0;
     for (std::size_t t = 0; t < image.covered.size(); ++t)
         if (image.covered[t]) {
-            for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += image.transfer[t * k_billboard_transfer_floats + i];
+            for (std::size_t i = 0; i < sum.size(); ++i)
+                sum[i] += image.transfer[t * k_billboard_transfer_floats + i];
             ++covered;
         }
     if (covered == 0) return;
     for (std::size_t t = 0; t < image.covered.size(); ++t)
         if (!image.covered[t])
             for (std::size_t i = 0; i < sum.size(); ++i)
-                image.transfer[t * k_billboard_transfer_floats + i] = float(sum[i] / double(covered));
+                image.transfer[t * k_billboard_transfer_floats + i] =
+                    float(sum[i] / double(covered));
 }
 
 void validate(const billboard_source& source, const billboard_plane& plane, const billboard_bake_settings& settings) {
@@ -488,7 +493,8 @@ void validate(const billboard_source& source, const billboard_plane& plane, cons
     if (source.transfer && (source.transfer->bands < 2 || source.transfer->bands > 3 ||
                             source.transfer->receiver_count() != source.mesh->vertices.size() ||
                             source.transfer->back.size() != source.transfer->front.size()))
-        throw std::invalid_argument("bake_billboard: the transfer must have 2 or 3 bands and one receiver per vertex");
+        throw std::invalid_argument(
+            "bake_billboard: the transfer must have 2 or 3 bands and one receiver per vertex");
     const float lu = glm::length(plane.axis_u);
     const float lv = glm::length(plane.axis_v);
     if (!(lu > 0.0f) || !(lv > 0.0f) || std::abs(glm::dot(plane.axis_u, plane.axis_v)) > 1e-4f * lu * lv)

@@ -224,7 +224,8 @@ void blit(image_rgba8& dst, const image_rgba8& src, std::uint32_t x0, std::uint3
 // The rectangle's edge colours copied `ring` texels outward at alpha 0, so filtering and the
 // first mips near an edge average with the billboard's own colours, not the atlas background.
 // `data_alpha`: the alpha channel is data (transfer pages) and is copied like the colour.
-void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring, bool data_alpha = false) {
+void extend_edges(image_rgba8& page, const atlas_rect& r, std::uint32_t ring,
+                  bool data_alpha = false) {
     const auto x0 = std::int64_t(r.x) - ring, x1 = std::int64_t(r.x + r.width) + ring;
     const auto y0 = std::int64_t(r.y) - ring, y1 = std::int64_t(r.y + r.height) + ring;
     for (std::int64_t y = std::max<std::int64_t>(y0, 0); y < std::min<std::int64_t>(y1, page.height); ++y)
@@ -246,7 +247,8 @@ void fill_transfer_background(billboard_cloud& cloud, std::uint32_t ring) {
     const image_rgba8& albedo = cloud.pages[std::size_t(cloud_atlas_page::albedo)];
     std::vector<std::uint8_t> used(std::size_t(albedo.width) * albedo.height, 0);
     for (const cloud_billboard& b : cloud.billboards) {
-        const std::uint32_t x0 = b.rect.x > ring ? b.rect.x - ring : 0, y0 = b.rect.y > ring ? b.rect.y - ring : 0;
+        const std::uint32_t x0 = b.rect.x > ring ? b.rect.x - ring : 0,
+                            y0 = b.rect.y > ring ? b.rect.y - ring : 0;
         const std::uint32_t x1 = std::min(albedo.width, b.rect.x + b.rect.width + ring);
         const std::uint32_t y1 = std::min(albedo.height, b.rect.y + b.rect.height + ring);
         for (std::uint32_t y = y0; y < y1; ++y)
@@ -263,10 +265,12 @@ void fill_transfer_background(billboard_cloud& cloud, std::uint32_t ring) {
                 }
         if (covered == 0) continue;
         std::array<std::uint8_t, 4> mean{};
-        for (int c = 0; c < 4; ++c) mean[std::size_t(c)] = std::uint8_t(std::lround(sum[std::size_t(c)] / double(covered)));
+        for (int c = 0; c < 4; ++c)
+            mean[std::size_t(c)] = std::uint8_t(std::lround(sum[std::size_t(c)] / double(covered)));
         for (std::uint32_t y = 0; y < albedo.height; ++y)
             for (std::uint32_t x = 0; x < albedo.width; ++x)
-                if (!used[std::size_t(y) * albedo.width + x]) std::memcpy(page.at(x, y), mean.data(), 4);
+                if (!used[std::size_t(y) * albedo.width + x])
+                    std::memcpy(page.at(x, y), mean.data(), 4);
     }
 }
 
@@ -371,7 +375,8 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
     return layout;
 }
 
-billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings,
+billboard_cloud bake_billboard_cloud(const plant_model& model,
+                                     const billboard_cloud_settings& settings,
                                      const radiance_transfer* transfer) {
     billboard_cloud_layout layout = plan_billboard_cloud(model, settings);
     billboard_cloud cloud;
@@ -386,7 +391,8 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         page.height = settings.atlas_height;
         page.texels.assign(std::size_t(page.width) * page.height * 4, 0);
     }
-    if (transfer) cloud.transfer_pages = blank_transfer_pages(settings.atlas_width, settings.atlas_height);
+    if (transfer)
+        cloud.transfer_pages = blank_transfer_pages(settings.atlas_width, settings.atlas_height);
     std::vector<atlas_rect> rects;
     cloud.texels_per_metre = fit_density(cloud.billboards, settings, rects);
     for (std::size_t i = 0; i < rects.size(); ++i) cloud.billboards[i].rect = rects[i];
@@ -400,7 +406,8 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
         bake.width = b.rect.width / 2;
         bake.height = b.rect.height;
         bake.supersampling = settings.supersampling;
-        const billboard_source source{&mesh, &model.leaf_texture, &model.bark_texture, members[b.cluster], transfer};
+        const billboard_source source{&mesh, &model.leaf_texture, &model.bark_texture,
+                                      members[b.cluster], transfer};
         for (const bool back : {false, true}) {
             const billboard_plane side = back ? back_side(b.plane) : b.plane;
             billboard_image image = bake_billboard(source, side, bake);
@@ -416,7 +423,8 @@ billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_c
     });
     for (const cloud_billboard& b : cloud.billboards) {
         for (image_rgba8& page : cloud.pages) extend_edges(page, b.rect, settings.gutter / 2);
-        for (image_rgba8& page : cloud.transfer_pages) extend_edges(page, b.rect, settings.gutter / 2, true);
+        for (image_rgba8& page : cloud.transfer_pages)
+            extend_edges(page, b.rect, settings.gutter / 2, true);
         add_billboard_quads(cloud.mesh, b, cloud.atlas_width, cloud.atlas_height);
     }
     if (transfer) fill_transfer_background(cloud, settings.gutter / 2);

@@ -45,19 +45,20 @@
 
 #include "models/atlas_packing.h"
 #include "models/billboard_bake.h"
-#include "models/radiance_transfer.h"
-#include "models/transfer_pages.h"
 #include "models/image.h"
 #include "models/mesh.h"
 #include "models/oriented_box.h"
 #include "models/plant_model.h"
+#include "models/radiance_transfer.h"
+#include "models/transfer_pages.h"
 #include "models/vertex_clustering.h"
 
 namespace sylva {
 
 // Bump whenever the clustering, the boxes, the billboard rule, the bake or the layout change
 // what a bake produces.
-constexpr std::uint32_t k_billboard_cloud_format = 4;  // 2: the pre-lit page; 3: transfer pages; 4: their background
+constexpr std::uint32_t k_billboard_cloud_format =
+    4;  // 2: the pre-lit page; 3: transfer pages; 4: their background
 
 // Behrendt 2005 §2.2: "We found that f = 0.5 produces visibly pleasing results."
 constexpr float k_billboard_shape_factor = 0.5f;
@@ -123,7 +124,7 @@ struct billboard_cloud {
     std::uint32_t atlas_width = 0;
     std::uint32_t atlas_height = 0;
     std::array<image_rgba8, k_cloud_atlas_pages> pages;  // cloud_atlas_page order
-    std::vector<image_rgba8> transfer_pages;  // k_transfer_pages, or none (see above)
+    std::vector<image_rgba8> transfer_pages;             // k_transfer_pages, or none (see above)
     float texels_per_metre = 0.0f;  // the density every billboard was baked at
 
     const image_rgba8& page(cloud_atlas_page p) const { return pages[std::size_t(p)]; }
@@ -146,9 +147,9 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
 // shape factor or sigma that is not positive and finite, or a model with no triangles, and
 // std::runtime_error when even 2-texel billboards do not fit the atlas.
 // With `transfer` (lods[0]'s, one receiver per vertex) the transfer pages are baked too.
-billboard_cloud bake_billboard_cloud(const plant_model& model, const billboard_cloud_settings& settings = {},
+billboard_cloud bake_billboard_cloud(const plant_model& model,
+                                     const billboard_cloud_settings& settings = {},
                                      const radiance_transfer* transfer = nullptr);
-
 
 // The normal page in the tangent space of each billboard side, for formats that want it (glTF):
 // x along the side's axis_u, y along its axis_v (the image's up), z its normal toward its viewer

@@ -126,13 +126,14 @@ billboard_cloud deserialize_billboard_cloud(std::span<const std::byte> bytes) {
     }
     const auto transfer_pages = in.pod<std::uint32_t>();
     if (transfer_pages != 0 && transfer_pages != k_transfer_pages)
-        throw std::runtime_error("bake cache entry: billboard cloud has " + std::to_string(transfer_pages) +
-                                 " transfer pages");
+        throw std::runtime_error("bake cache entry: billboard cloud has " +
+                                 std::to_string(transfer_pages) + " transfer pages");
     cloud.transfer_pages.resize(transfer_pages);
     for (image_rgba8& page : cloud.transfer_pages) {
         page = read_image(in);
         if (page.width != cloud.atlas_width || page.height != cloud.atlas_height)
-            throw std::runtime_error("bake cache entry: billboard cloud transfer pages differ in size");
+            throw std::runtime_error(
+                "bake cache entry: billboard cloud transfer pages differ in size");
     }
     if (!in.at_end()) throw std::runtime_error("bake cache entry: trailing bytes");
     return cloud;

@@ -40,12 +40,14 @@ crossed_billboard deserialize_crossed_billboard(std::span<const std::byte> bytes
         throw std::runtime_error("bake cache entry: billboard albedo and normal atlases differ in size");
     const auto pages = in.pod<std::uint32_t>();
     if (pages != 0 && pages != k_transfer_pages)
-        throw std::runtime_error("bake cache entry: crossed billboard has " + std::to_string(pages) + " transfer pages");
+        throw std::runtime_error("bake cache entry: crossed billboard has " +
+                                 std::to_string(pages) + " transfer pages");
     billboard.transfer_pages.resize(pages);
     for (image_rgba8& page : billboard.transfer_pages) {
         page = read_image(in);
         if (page.width != billboard.albedo.width || page.height != billboard.albedo.height)
-            throw std::runtime_error("bake cache entry: crossed billboard transfer pages differ in size");
+            throw std::runtime_error(
+                "bake cache entry: crossed billboard transfer pages differ in size");
     }
     if (!in.at_end()) throw std::runtime_error("bake cache entry: trailing bytes");
     return billboard;

@@ -65,7 +65,8 @@ std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(
     }};
 }
 
-crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings,
+crossed_billboard bake_crossed_billboard(const plant_model& model,
+                                         const crossed_billboard_settings& settings,
                                          const radiance_transfer* transfer) {
     const mesh_data& full = model.lods[0];
     const auto planes = crossed_billboard_planes(full);
@@ -86,7 +87,8 @@ crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed
         const billboard_image image = bake_billboard(source, planes[q], bake);
         blit(out.albedo, image.albedo, std::uint32_t(q) * settings.resolution);
         blit(out.normal, image.normal, std::uint32_t(q) * settings.resolution);
-        if (transfer) blit_transfer(out.transfer_pages, image, std::uint32_t(q) * settings.resolution, 0);
+        if (transfer)
+            blit_transfer(out.transfer_pages, image, std::uint32_t(q) * settings.resolution, 0);
         add_quad(out.mesh, planes[q], q);
     }
     out.mesh.submeshes.push_back({0, std::uint32_t(out.mesh.indices.size()), material_kind::billboard});

@@ -56,7 +56,8 @@ std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(
 
 // Bakes lods[0] with the model's leaf and bark textures, and with `transfer` (lods[0]'s, one
 // receiver per vertex) its transfer pages. Deterministic.
-crossed_billboard bake_crossed_billboard(const plant_model& model, const crossed_billboard_settings& settings = {},
+crossed_billboard bake_crossed_billboard(const plant_model& model,
+                                         const crossed_billboard_settings& settings = {},
                                          const radiance_transfer* transfer = nullptr);
 
 }  // namespace sylva

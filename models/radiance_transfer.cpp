@@ -103,10 +103,12 @@ void filter_hits(const RTCFilterFunctionNArguments* args) {
         const float u = RTCHitN_u(args->hit, args->N, i);
         const float v = RTCHitN_v(args->hit, args->N, i);
         if (d.kind == surface::alpha_tested) {
-            if (bilinear_alpha(*d.texture, interpolate_uv(d, prim, u, v)) < k_alpha_cutoff) args->valid[i] = 0;
+            if (bilinear_alpha(*d.texture, interpolate_uv(d, prim, u, v)) < k_alpha_cutoff)
+                args->valid[i] = 0;
             continue;
         }
-        const glm::vec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+        const glm::vec3 dir(RTCRayN_dir_x(args->ray, args->N, i),
+                            RTCRayN_dir_y(args->ray, args->N, i),
                             RTCRayN_dir_z(args->ray, args->N, i));
         if (glm::dot(dir, interpolate_normal(d, prim, u, v)) > 0.0f) args->valid[i] = 0;
     }
@@ -170,14 +172,15 @@ struct transfer_occluders::scene {
     void attach(filter_data& data) {
         if (data.indices.empty()) return;
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                              3 * sizeof(float), vertices.size()));
+        auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             p[3 * i] = vertices[i].position.x, p[3 * i + 1] = vertices[i].position.y;
             p[3 * i + 2] = vertices[i].position.z;
         }
-        auto* t = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), data.indices.size() / 3));
+        auto* t = static_cast<std::uint32_t*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(std::uint32_t), data.indices.size() / 3));
         std::copy(data.indices.begin(), data.indices.end(), t);
         data.vertices = &vertices;
         rtcSetGeometryUserData(g, &data);
@@ -193,8 +196,10 @@ struct transfer_occluders::scene {
     bool occluded(glm::vec3 origin, glm::vec3 dir) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        RTCRay ray{origin.x, origin.y, origin.z, 0.0f, dir.x, dir.y, dir.z, 0.0f,
-                   std::numeric_limits<float>::infinity(), ~0u, 0u, 0u};
+        RTCRay ray{origin.x, origin.y, origin.z,
+                   0.0f,     dir.x,    dir.y,
+                   dir.z,    0.0f,     std::numeric_limits<float>::infinity(),
+                   ~0u,      0u,       0u};
         rtcOccluded1(rtc, &context, &ray);
         return ray.tfar < 0.0f;  // Embree sets tfar to -inf on an occlusion
     }
@@ -204,8 +209,10 @@ struct transfer_occluders::scene {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         RTCRayHit rh{};
-        rh.ray = RTCRay{origin.x, origin.y, origin.z, 0.0f, dir.x, dir.y, dir.z, 0.0f,
-                        std::numeric_limits<float>::infinity(), ~0u, 0u, 0u};
+        rh.ray = RTCRay{origin.x, origin.y, origin.z,
+                        0.0f,     dir.x,    dir.y,
+                        dir.z,    0.0f,     std::numeric_limits<float>::infinity(),
+                        ~0u,      0u,       0u};
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(rtc, &context, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
@@ -228,7 +235,8 @@ transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8&
     s.leaf.albedo = mean_albedo(leaf_texture, true);
     s.opaque.albedo = mean_albedo(bark_texture, false);
     for (const submesh& sm : full.submeshes) {
-        std::vector<std::uint32_t>& dst = sm.material == material_kind::leaf ? s.leaf.indices : s.opaque.indices;
+        std::vector<std::uint32_t>& dst =
+            sm.material == material_kind::leaf ? s.leaf.indices : s.opaque.indices;
         const auto first = full.indices.begin() + sm.first_index;
         dst.insert(dst.end(), first, first + sm.index_count);
     }
@@ -239,7 +247,8 @@ transfer_occluders::transfer_occluders(const mesh_data& full, const image_rgba8&
     s.attach(s.leaf);
     rtcCommitScene(s.rtc);
     if (const RTCError e = rtcGetDeviceError(s.device); e != RTC_ERROR_NONE)
-        throw std::runtime_error("radiance transfer: Embree error " + std::to_string(int(e)) + " building the scene");
+        throw std::runtime_error("radiance transfer: Embree error " + std::to_string(int(e)) +
+                                 " building the scene");
 }
 
 transfer_occluders::~transfer_occluders() = default;
@@ -254,8 +263,8 @@ struct side_sums {
 
 // The bounce source's transfer at a hit, interpolated over the hit triangle, on the side the
 // ray meets (the front when it travels against the interpolated normal).
-void add_bounce(const ray_hit& hit, glm::vec3 dir, const radiance_transfer& source, std::size_t count,
-                double weight, std::array<double, 9>& sum) {
+void add_bounce(const ray_hit& hit, glm::vec3 dir, const radiance_transfer& source,
+                std::size_t count, double weight, std::array<double, 9>& sum) {
     const std::uint32_t* t = &hit.data->indices[std::size_t(hit.prim) * 3];
     const bool front = glm::dot(dir, interpolate_normal(*hit.data, hit.prim, hit.u, hit.v)) < 0.0f;
     const std::vector<float>& side = front ? source.front : source.back;
@@ -272,7 +281,8 @@ void add_bounce(const ray_hit& hit, glm::vec3 dir, const radiance_transfer& sour
 
 }  // namespace
 
-radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receivers, const transfer_settings& settings,
+radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receivers,
+                                                const transfer_settings& settings,
                                                 const radiance_transfer* bounce_source) const {
     const std::size_t count = std::size_t(settings.bands) * settings.bands;
     radiance_transfer out;
@@ -310,8 +320,10 @@ radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receiver
         const sh9 y_front = sh_basis(n);
         const sh9 y_back = sh_basis(-n);
         for (std::size_t k = 0; k < count; ++k) {
-            out.front[r * count + k] = float(k_clamped_cosine[k] * y_front[k] - front.occluded[k] + front.bounce[k]);
-            out.back[r * count + k] = float(k_clamped_cosine[k] * y_back[k] - back.occluded[k] + back.bounce[k]);
+            out.front[r * count + k] =
+                float(k_clamped_cosine[k] * y_front[k] - front.occluded[k] + front.bounce[k]);
+            out.back[r * count + k] =
+                float(k_clamped_cosine[k] * y_back[k] - back.occluded[k] + back.bounce[k]);
         }
     };
     tbb::parallel_for(
@@ -323,10 +335,13 @@ radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receiver
     return out;
 }
 
-radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, const transfer_settings& settings) const {
+radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers,
+                                           const transfer_settings& settings) const {
     if (settings.bands != 2 && settings.bands != 3)
-        throw std::invalid_argument("radiance transfer: bands must be 2 or 3, not " + std::to_string(settings.bands));
-    if (settings.rays_per_receiver == 0) throw std::invalid_argument("radiance transfer: zero rays per receiver");
+        throw std::invalid_argument("radiance transfer: bands must be 2 or 3, not " +
+                                    std::to_string(settings.bands));
+    if (settings.rays_per_receiver == 0)
+        throw std::invalid_argument("radiance transfer: zero rays per receiver");
     if (!settings.interreflection) return bake_pass(receivers, settings, nullptr);
     scene& s = *m_scene;
     transfer_settings direct = settings;
@@ -335,10 +350,12 @@ radiance_transfer transfer_occluders::bake(std::span<const vertex> receivers, co
     {
         const std::lock_guard lock(s.bounce_mutex);
         const auto same = [&](const transfer_settings& b) {
-            return b.bands == direct.bands && b.rays_per_receiver == direct.rays_per_receiver && b.seed == direct.seed;
+            return b.bands == direct.bands && b.rays_per_receiver == direct.rays_per_receiver &&
+                   b.seed == direct.seed;
         };
         if (!s.bounce_settings || !same(*s.bounce_settings)) {
-            s.bounce_source = std::make_shared<const radiance_transfer>(bake_pass(s.vertices, direct, nullptr));
+            s.bounce_source =
+                std::make_shared<const radiance_transfer>(bake_pass(s.vertices, direct, nullptr));
             s.bounce_settings = direct;
         }
         source = s.bounce_source;

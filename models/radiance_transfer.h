@@ -72,14 +72,16 @@ public:
     // Throws std::invalid_argument on bands other than 2 or 3, or zero rays. With
     // settings.interreflection, first bakes the occluder's own vertices (shadowed only; kept
     // for later bakes with the same bands, rays and seed) for the bounce.
-    radiance_transfer bake(std::span<const vertex> receivers, const transfer_settings& settings) const;
+    radiance_transfer bake(std::span<const vertex> receivers,
+                           const transfer_settings& settings) const;
 
     struct scene;  // the Embree device, scene and the filters' data (radiance_transfer.cpp)
 
 private:
     // One pass over `receivers`; with `bounce_source` (the occluder's own vertices' shadowed
     // transfer) each hit also adds the light the hit surface reflects.
-    radiance_transfer bake_pass(std::span<const vertex> receivers, const transfer_settings& settings,
+    radiance_transfer bake_pass(std::span<const vertex> receivers,
+                                const transfer_settings& settings,
                                 const radiance_transfer* bounce_source) const;
 
     std::unique_ptr<scene> m_scene;

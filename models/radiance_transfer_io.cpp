@@ -23,7 +23,8 @@ void write_radiance_transfer(binary_writer& out, const radiance_transfer& transf
 radiance_transfer read_radiance_transfer(binary_reader& in) {
     radiance_transfer t;
     t.bands = in.pod<std::uint32_t>();
-    if (t.bands != 2 && t.bands != 3) fail("has " + std::to_string(t.bands) + " bands (2 or 3 expected)");
+    if (t.bands != 2 && t.bands != 3)
+        fail("has " + std::to_string(t.bands) + " bands (2 or 3 expected)");
     t.front = in.array<float>();
     t.back = in.array<float>();
     if (t.front.size() != t.back.size()) fail("front and back sizes differ");
@@ -44,7 +45,8 @@ std::vector<radiance_transfer> deserialize_radiance_transfers(std::span<const st
     binary_reader in(bytes);
     if (in.pod<std::uint32_t>() != k_magic) fail("has the wrong magic number");
     if (const auto format = in.pod<std::uint32_t>(); format != k_radiance_transfer_format)
-        fail("has format " + std::to_string(format) + ", expected " + std::to_string(k_radiance_transfer_format));
+        fail("has format " + std::to_string(format) + ", expected " +
+             std::to_string(k_radiance_transfer_format));
     const auto count = in.pod<std::uint32_t>();
     std::vector<radiance_transfer> transfers;
     for (std::uint32_t i = 0; i < count; ++i) transfers.push_back(read_radiance_transfer(in));

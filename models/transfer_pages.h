@@ -27,6 +27,7 @@ std::vector<image_rgba8> blank_transfer_pages(std::uint32_t width, std::uint32_t
 
 // One billboard image's transfer (billboard_image::transfer, from a bake with a transfer
 // source) into `pages` with its top-left texel at (x0, y0).
-void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image, std::uint32_t x0, std::uint32_t y0);
+void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image, std::uint32_t x0,
+                   std::uint32_t y0);
 
 }  // namespace sylva

@@ -15,7 +15,9 @@ namespace {
 struct vertex_cloud {
     const std::vector<vertex>* vertices;
     std::size_t kdtree_get_point_count() const { return vertices->size(); }
-    float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*vertices)[i].position[int(dim)]; }
+    float kdtree_get_pt(std::size_t i, std::size_t dim) const {
+        return (*vertices)[i].position[int(dim)];
+    }
     template <class Box>
     bool kdtree_get_bbox(Box&) const {
         return false;
@@ -23,7 +25,8 @@ struct vertex_cloud {
 };
 
 using vertex_tree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, vertex_cloud>, vertex_cloud, 3>;
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, vertex_cloud>,
+                                        vertex_cloud, 3>;
 
 // Fixed chunks: the result never depends on how many threads ran them.
 constexpr std::size_t k_chunk = 1024;
@@ -35,7 +38,8 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
     const std::size_t n = std::size_t(full_transfer.bands) * full_transfer.bands;
     if (k == 0 || n == 0 || full_transfer.receiver_count() != full.vertices.size() ||
         full_transfer.back.size() != full_transfer.front.size())
-        throw std::invalid_argument("resample_transfer: the full transfer must have one receiver per vertex, k > 0");
+        throw std::invalid_argument(
+            "resample_transfer: the full transfer must have one receiver per vertex, k > 0");
     radiance_transfer out;
     out.bands = full_transfer.bands;
     out.front.assign(receivers.size() * n, 0.0f);
@@ -53,7 +57,8 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
         const std::size_t end = std::min(receivers.size(), (chunk + 1) * k_chunk);
         for (std::size_t r = chunk * k_chunk; r < end; ++r) {
             const vertex& receiver = receivers[r];
-            const std::size_t found = tree.knnSearch(&receiver.position.x, count, nearest.data(), distances.data());
+            const std::size_t found =
+                tree.knnSearch(&receiver.position.x, count, nearest.data(), distances.data());
             float* front = &out.front[r * n];
             float* back = &out.back[r * n];
             for (std::size_t j = 0; j < found; ++j) {

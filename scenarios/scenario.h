@@ -10,11 +10,11 @@
 // file; the loaded scenario holds them as absolute paths.
 //
 //   name           string           default: the file name without extension
-//   seed           integer          1            0 .. 2^64-1; seeds the plant generators and placement
-//   resolution     [width, height]  [960, 540]   each 1 .. 16384 pixels
-//   frames         integer          48           1 .. 1000000
-//   fps            number           24           1 .. 1000; frame i is shown at time i / fps
-//   world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world position
+//   seed           integer          1            0 .. 2^64-1; seeds the plant generators and
+//   placement resolution     [width, height]  [960, 540]   each 1 .. 16384 pixels frames integer 48
+//   1 .. 1000000 fps            number           24           1 .. 1000; frame i is shown at time i
+//   / fps world_offset   [x, y, z]        [0, 0, 0]    each -1e9 .. 1e9 m; added to every world
+//   position
 //                                                (stress-tests double-precision handling)
 //   terrain {
 //     size_m         number       400          1 .. 100000; square, centred on the origin
@@ -56,7 +56,8 @@
 //     min_spacing_m  number     3            0 .. 1000
 //     scale_min      number     0.8          0.01 .. 100; scale_min <= scale_max
 //     scale_max      number     1.2          0.01 .. 100
-//     area           [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2, size/2];
+//     area           [x0, z0, x1, z1]  default: the whole terrain [-size/2, -size/2, size/2,
+//     size/2];
 //                                      each -1e9 .. 1e9 m, x0 < x1 and z0 < z1
 //     max_slope_deg  number     35           0 .. 90
 //     min_altitude_m number     -1e9         -1e9 .. 1e9; no plants where the terrain is lower
@@ -299,7 +300,8 @@ inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_lev
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
 inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
 // A species' `lighting`: "scenario" takes the lod section's.
-inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped", "pre_lit", "sh"};
+inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped",
+                                                                     "pre_lit", "sh"};
 
 struct lod_settings {
     std::string representation = "mesh_levels";

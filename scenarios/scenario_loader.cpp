@@ -327,8 +327,10 @@ const field_table<eco_tile_settings>& eco_tile_fields() {
 const field_table<lod_settings>& lod_fields() {
     using t = lod_settings;
     static const auto table = field_table<t>()
-                                  .choice("representation", &t::representation, k_lod_representations)
-                                  .number("sample_distance_px", &t::sample_distance_px, {0.05, 64.0})
+                                  .choice("representation", &t::representation,
+                                          k_lod_representations)
+                                  .number("sample_distance_px", &t::sample_distance_px,
+                                          {0.05, 64.0})
                                   .number("splat_factor", &t::splat_factor, {1.0, 4.0})
                                   .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
                                   .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})

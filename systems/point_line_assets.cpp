@@ -17,8 +17,8 @@ material_kind sample_material(material_kind m) {
 
 }  // namespace
 
-mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive, material_kind material,
-                         std::vector<vertex_transfer> transfer) {
+mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive,
+                         material_kind material, std::vector<vertex_transfer> transfer) {
     if (!transfer.empty() && transfer.size() != vertices.size())
         throw std::logic_error("primitive_mesh: transfer records must match the vertices");
     mesh_data mesh;
@@ -61,8 +61,9 @@ mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, st
 namespace {
 
 // Adds the parts of one cell to the library; returns the index of the first.
-std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model, const lod_cell& cell, float scale,
-                             float importance, const point_line_model& with_transfer,
+std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model,
+                             const lod_cell& cell, float scale, float importance,
+                             const point_line_model& with_transfer,
                              const point_line_records* transfer) {
     if (cell.part_count > k_max_cell_parts) throw std::runtime_error("point/line model: too many parts in a cell");
     const auto first = std::uint32_t(assets.library.lod_parts.size());
@@ -77,15 +78,18 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
         e.line_length_m = part.line_length_m * scale;
         e.line_error_m = part.line_error_m * scale;
 
-        mesh_data triangles =
-            extract_triangles(with_transfer.triangles, part.first_index, 3 * part.triangle_count, part.material);
+        mesh_data triangles = extract_triangles(with_transfer.triangles, part.first_index,
+                                                3 * part.triangle_count, part.material);
         scale_vertices(triangles.vertices, scale);
         e.mesh_triangles = add_sample_mesh(assets, std::move(triangles), part.triangle_count);
 
         std::vector<vertex> vertices;
         std::vector<vertex_transfer> records;
-        auto records_of = [&](const std::vector<vertex_transfer>& all, std::size_t first, std::size_t count) {
-            if (transfer) records.assign(all.begin() + std::ptrdiff_t(first), all.begin() + std::ptrdiff_t(first + count));
+        auto records_of = [&](const std::vector<vertex_transfer>& all, std::size_t first,
+                              std::size_t count) {
+            if (transfer)
+                records.assign(all.begin() + std::ptrdiff_t(first),
+                               all.begin() + std::ptrdiff_t(first + count));
         };
         if (part.primitive == lod_primitive::points) {
             e.primitive_count = part.point_count;
@@ -100,16 +104,20 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
             e.primitive_count = part.line_count;
             vertices.assign(model.lines.begin() + 2 * part.first_line,
                             model.lines.begin() + 2 * (part.first_line + part.line_count));
-            if (transfer) records_of(transfer->lines, 2 * std::size_t(part.first_line), 2 * std::size_t(part.line_count));
+            if (transfer)
+                records_of(transfer->lines, 2 * std::size_t(part.first_line),
+                           2 * std::size_t(part.line_count));
         }
         scale_vertices(vertices, scale);
         if (part.primitive == lod_primitive::lines)  // the same vertices, drawn as splats
             e.mesh_splats = add_sample_mesh(
-                assets, primitive_mesh(vertices, primitive_kind::points, part.material, records), 2 * e.primitive_count);
+                assets, primitive_mesh(vertices, primitive_kind::points, part.material, records),
+                2 * e.primitive_count);
         const primitive_kind kind =
             part.primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
         e.mesh_primitives = add_sample_mesh(
-            assets, primitive_mesh(std::move(vertices), kind, part.material, std::move(records)), e.primitive_count);
+            assets, primitive_mesh(std::move(vertices), kind, part.material, std::move(records)),
+            e.primitive_count);
         assets.library.lod_parts.push_back(e);
     }
     return first;
@@ -117,16 +125,18 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
 
 }  // namespace
 
-void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
-                          float importance, const point_line_records* transfer) {
+void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model,
+                          float scale, float importance, const point_line_records* transfer) {
     if (model.cells.empty()) return;
     // The triangles' records ride on a copy of their mesh, so extract_triangles carries them.
     point_line_model with_transfer_storage;
     const point_line_model* with_transfer = &model;
     if (transfer) {
         if (transfer->triangles.size() != model.triangles.vertices.size() ||
-            transfer->points.size() != model.points.size() || transfer->lines.size() != model.lines.size())
-            throw std::logic_error("add_point_line_parts: transfer records must match the model's vertices");
+            transfer->points.size() != model.points.size() ||
+            transfer->lines.size() != model.lines.size())
+            throw std::logic_error(
+                "add_point_line_parts: transfer records must match the model's vertices");
         with_transfer_storage.triangles = model.triangles;
         with_transfer_storage.triangles.transfer = transfer->triangles;
         with_transfer = &with_transfer_storage;
@@ -134,7 +144,8 @@ void add_point_line_parts(scene_assets& assets, species_entry& entry, const poin
     entry.first_cell = std::uint32_t(assets.library.cells.size());
     entry.cell_count = std::uint32_t(model.cells.size());
     for (const lod_cell& cell : model.cells) {
-        const std::uint32_t first = add_cell_parts(assets, model, cell, scale, importance, *with_transfer, transfer);
+        const std::uint32_t first =
+            add_cell_parts(assets, model, cell, scale, importance, *with_transfer, transfer);
         assets.library.cells.push_back({first, cell.part_count});
     }
     // One cell: the plant itself carries its parts' prefixes. Several (§6.1): its cells do.

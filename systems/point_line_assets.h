@@ -17,8 +17,9 @@ struct point_line_records {
     std::vector<vertex_transfer> points;
     std::vector<vertex_transfer> lines;
 };
-void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model, float scale,
-                          float importance, const point_line_records* transfer = nullptr);
+void add_point_line_parts(scene_assets& assets, species_entry& entry, const point_line_model& model,
+                          float scale, float importance,
+                          const point_line_records* transfer = nullptr);
 
 // The triangles [first_index, first_index + index_count) of `mesh` as a mesh of their own, with
 // only the vertices they use (the order of the triangles kept), and their transfer records when
@@ -28,8 +29,8 @@ mesh_data extract_triangles(const mesh_data& mesh, std::uint32_t first_index, st
 
 // A mesh that lists `vertices` in order as points (one index each) or lines (two each).
 // `transfer`: none, or one record per vertex.
-mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive, material_kind material,
-                         std::vector<vertex_transfer> transfer = {});
+mesh_data primitive_mesh(std::vector<vertex> vertices, primitive_kind primitive,
+                         material_kind material, std::vector<vertex_transfer> transfer = {});
 
 // Adds a point or line mesh drawn by prefix (drawn_as points, `primitives` of them) to the scene
 // and returns its id; throws when the scene would pass the 65,535 meshes a sort key can name.

@@ -39,12 +39,17 @@ sh9_rgb analytic_sky_radiance(environment& env, const sun& light) {
     sky_projection_cache& cache = env.sky_cache;
     if (!cache_matches(cache, env, light)) {
         sky_model sky;
-        sky.sun_direction = sun_direction_from_angles(light.elevation_deg, env.reference_azimuth_deg);
+        sky.sun_direction =
+            sun_direction_from_angles(light.elevation_deg, env.reference_azimuth_deg);
         sky.turbidity = env.turbidity;
         sky.sky_intensity = env.sky_intensity;
         sky.ground_albedo = env.ground_albedo;
-        cache = {true,          light.elevation_deg, env.turbidity, env.sky_intensity,
-                 env.ground_albedo, project_sky(sky).c};
+        cache = {true,
+                 light.elevation_deg,
+                 env.turbidity,
+                 env.sky_intensity,
+                 env.ground_albedo,
+                 project_sky(sky).c};
     }
     return turned(to_sh(cache.radiance_sh), light.azimuth_deg - env.reference_azimuth_deg);
 }
@@ -53,11 +58,13 @@ sh9_rgb analytic_sky_radiance(environment& env, const sun& light) {
 // moving sun turns the environment with it.
 sh9_rgb map_radiance(const environment& env, const sun& light) {
     constexpr double k_max = double(std::numeric_limits<float>::max());
-    const double scale = std::isnan(env.sky_intensity) ? 0.0 : std::max(double(env.sky_intensity), 0.0);
+    const double scale =
+        std::isnan(env.sky_intensity) ? 0.0 : std::max(double(env.sky_intensity), 0.0);
     sh9_rgb scaled;
     for (std::size_t i = 0; i < 9; ++i)
         for (int ch = 0; ch < 3; ++ch)
-            scaled.c[i][ch] = float(std::clamp(double(env.map_radiance_sh[i][ch]) * scale, -k_max, k_max));
+            scaled.c[i][ch] =
+                float(std::clamp(double(env.map_radiance_sh[i][ch]) * scale, -k_max, k_max));
     return turned(scaled, environment_map_turn_deg(env, light));
 }
 
@@ -68,7 +75,8 @@ float environment_map_turn_deg(const environment& env, const sun& light) {
 }
 
 void project_environment(environment& env, const sun& light) {
-    const sh9_rgb radiance = env.has_map ? map_radiance(env, light) : analytic_sky_radiance(env, light);
+    const sh9_rgb radiance =
+        env.has_map ? map_radiance(env, light) : analytic_sky_radiance(env, light);
     const sh9_rgb irradiance = irradiance_from_radiance(radiance);
     env.radiance_sh = radiance.c;
     env.irradiance_sh = irradiance.c;

@@ -1,8 +1,9 @@
 #include "systems/spawn_scenario.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <glm/geometric.hpp>
-#include <spdlog/spdlog.h>
 #include <stdexcept>
 #include <string>
 
@@ -109,7 +110,8 @@ float transfer_radius(const species_entry& entry, std::initializer_list<const me
     const glm::vec3 center{0.0f, entry.center_height, 0.0f};
     float radius = entry.bounding_radius;
     for (const mesh_data* mesh : meshes)
-        for (const vertex& v : mesh->vertices) radius = std::max(radius, glm::length(v.position - center));
+        for (const vertex& v : mesh->vertices)
+            radius = std::max(radius, glm::length(v.position - center));
     return radius;
 }
 
@@ -134,17 +136,22 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     if (by_transfer) {
         transfer = load_species_transfer(settings, seed, model, transfer_config, cache);
         if (needs.point_lines)
-            sample_transfer = load_species_point_line_transfer(settings, seed, model, point_lines, transfer_config, cache);
+            sample_transfer = load_species_point_line_transfer(settings, seed, model, point_lines,
+                                                               transfer_config, cache);
     }
-    const std::uint64_t transfer_key = by_transfer ? species_transfer_key(settings, seed, transfer_config) : 0;
+    const std::uint64_t transfer_key =
+        by_transfer ? species_transfer_key(settings, seed, transfer_config) : 0;
     const radiance_transfer* full_transfer = by_transfer ? &transfer[0] : nullptr;
     // Baked from the unscaled model, so the cache entries do not depend on height_m.
-    crossed_billboard billboard = load_species_billboard(settings, seed, model, cache, full_transfer, transfer_key);
+    crossed_billboard billboard =
+        load_species_billboard(settings, seed, model, cache, full_transfer, transfer_key);
     billboard_cloud cloud;
     if (needs.billboard_clouds)
-        cloud = load_species_billboard_cloud(settings, seed, model, cache, full_transfer, transfer_key);
+        cloud =
+            load_species_billboard_cloud(settings, seed, model, cache, full_transfer, transfer_key);
     if (by_transfer)
-        for (std::size_t k = 0; k < model.lods.size(); ++k) model.lods[k].transfer = pack_transfer(transfer[k]);
+        for (std::size_t k = 0; k < model.lods.size(); ++k)
+            model.lods[k].transfer = pack_transfer(transfer[k]);
     // Every species is scaled to the scenario's height_m, generated or imported alike; the
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
@@ -164,10 +171,13 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     entry.texture_layer = float(index);
     fit_bounds(model.lods[0], entry);
     if (by_transfer) {
-        entry.transfer_radius = transfer_radius(entry, {&model.lods[1], &model.lods[2], &billboard.mesh, &cloud.mesh});
+        entry.transfer_radius =
+            transfer_radius(entry, {&model.lods[1], &model.lods[2], &billboard.mesh, &cloud.mesh});
         entry.transfer_layer = float(assets.billboard_transfer.size());
-        for (image_rgba8& page : billboard.transfer_pages) assets.billboard_transfer.push_back(std::move(page));
-        for (image_rgba8& page : cloud.transfer_pages) assets.cloud_transfer.push_back(std::move(page));
+        for (image_rgba8& page : billboard.transfer_pages)
+            assets.billboard_transfer.push_back(std::move(page));
+        for (image_rgba8& page : cloud.transfer_pages)
+            assets.cloud_transfer.push_back(std::move(page));
     }
     add_mesh(assets, std::move(model.lods[0]), representation::mesh_full, entry.mesh_full, entry.triangles_full);
     add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
@@ -180,12 +190,14 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         if (by_transfer) {
             // model.triangles keeps the full mesh's vertex array (models/point_line_model.h).
             if (point_lines.triangles.vertices.size() != transfer[0].receiver_count())
-                throw std::logic_error("species '" + settings.name +
-                                       "': the point/line triangles do not share the full mesh's vertices");
+                throw std::logic_error(
+                    "species '" + settings.name +
+                    "': the point/line triangles do not share the full mesh's vertices");
             records = {pack_transfer(transfer[0]), pack_transfer(sample_transfer.points),
                        pack_transfer(sample_transfer.lines)};
         }
-        add_point_line_parts(assets, entry, point_lines, scale, settings.importance, by_transfer ? &records : nullptr);
+        add_point_line_parts(assets, entry, point_lines, scale, settings.importance,
+                             by_transfer ? &records : nullptr);
     }
     if (needs.billboard_clouds) {
         add_mesh(assets, std::move(cloud.mesh), representation::billboard_cloud, entry.mesh_cloud,
@@ -195,7 +207,8 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         assets.cloud_pre_lit.push_back(std::move(cloud.pages[std::size_t(cloud_atlas_page::pre_lit)]));
     }
     entry.lighting = lighting;
-    for (std::size_t m = first_mesh; m < assets.meshes.size(); ++m) assets.library.meshes[m].lighting = entry.lighting;
+    for (std::size_t m = first_mesh; m < assets.meshes.size(); ++m)
+        assets.library.meshes[m].lighting = entry.lighting;
     assets.leaf_textures.push_back(std::move(model.leaf_texture));
     assets.bark_textures.push_back(std::move(model.bark_texture));
     assets.billboard_albedo.push_back(std::move(billboard.albedo));
@@ -224,8 +237,8 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
             spdlog::warn("environment map {}: {} texels were NaN, infinite or negative; set to 0",
                          s.environment.map, map.sanitised_texels);
         assets.environment_map_sh = project_environment_map(map).c;
-        assets.environment_sky = downsample_environment_map(map, k_environment_sky_width,
-                                                            k_environment_sky_width / 2);
+        assets.environment_sky =
+            downsample_environment_map(map, k_environment_sky_width, k_environment_sky_width / 2);
     }
     for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
     match_cloud_atlas_sizes(assets.cloud_albedo);

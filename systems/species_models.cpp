@@ -12,8 +12,8 @@
 #include "models/point_line_bake.h"
 #include "models/point_line_io.h"
 #include "models/radiance_transfer_io.h"
-#include "models/transfer_resampling.h"
 #include "models/random.h"
+#include "models/transfer_resampling.h"
 
 namespace sylva {
 namespace {
@@ -35,20 +35,22 @@ T load_cached(bake_cache* cache, std::string_view kind, std::uint64_t key, const
 
 std::string transfer_settings_text(const transfer_settings& s) {
     return std::to_string(k_radiance_transfer_format) + "/" + std::to_string(s.bands) + "/" +
-           std::to_string(s.rays_per_receiver) + "/" + std::to_string(s.interreflection ? 1 : 0) + "/" +
-           std::to_string(s.seed);
+           std::to_string(s.rays_per_receiver) + "/" + std::to_string(s.interreflection ? 1 : 0) +
+           "/" + std::to_string(s.seed);
 }
 
 // An entry must hold one transfer per expected receiver set, each of the right size and bands;
 // anything else (a hash collision, a hand-edited file) is a damaged entry and is re-baked.
-std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes, std::span<const std::size_t> receivers,
+std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes,
+                                              std::span<const std::size_t> receivers,
                                               std::uint32_t bands) {
     std::vector<radiance_transfer> transfers = deserialize_radiance_transfers(bytes);
     if (transfers.size() != receivers.size())
         throw std::runtime_error("bake cache entry: radiance transfer count does not match");
     for (std::size_t i = 0; i < transfers.size(); ++i)
         if (transfers[i].bands != bands || transfers[i].receiver_count() != receivers[i])
-            throw std::runtime_error("bake cache entry: radiance transfer does not match its receivers");
+            throw std::runtime_error(
+                "bake cache entry: radiance transfer does not match its receivers");
     return transfers;
 }
 
@@ -86,9 +88,11 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
                                          const plant_model& model, bake_cache* cache,
-                                         const radiance_transfer* transfer, std::uint64_t transfer_key) {
+                                         const radiance_transfer* transfer,
+                                         std::uint64_t transfer_key) {
     auto bake = [&] {
-        return serialize_crossed_billboard(bake_crossed_billboard(model, k_billboard_settings, transfer));
+        return serialize_crossed_billboard(
+            bake_crossed_billboard(model, k_billboard_settings, transfer));
     };
     std::uint64_t key = species_billboard_key(species, seed);
     if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
@@ -104,9 +108,11 @@ std::uint64_t species_billboard_cloud_key(const species_settings& species, std::
 
 billboard_cloud load_species_billboard_cloud(const species_settings& species, std::uint64_t seed,
                                              const plant_model& model, bake_cache* cache,
-                                             const radiance_transfer* transfer, std::uint64_t transfer_key) {
+                                             const radiance_transfer* transfer,
+                                             std::uint64_t transfer_key) {
     auto bake = [&] {
-        return serialize_billboard_cloud(bake_billboard_cloud(model, default_billboard_cloud_settings(model), transfer));
+        return serialize_billboard_cloud(
+            bake_billboard_cloud(model, default_billboard_cloud_settings(model), transfer));
     };
     std::uint64_t key = species_billboard_cloud_key(species, seed);
     if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
@@ -141,9 +147,10 @@ std::uint64_t species_transfer_key(const species_settings& species, std::uint64_
     return hash_string(transfer_settings_text(settings), key);
 }
 
-std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species, std::uint64_t seed,
-                                                       const plant_model& model,
-                                                       const transfer_settings& settings, bake_cache* cache) {
+std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species,
+                                                       std::uint64_t seed, const plant_model& model,
+                                                       const transfer_settings& settings,
+                                                       bake_cache* cache) {
     auto bake = [&] {
         const transfer_occluders occluders(model.lods[0], model.leaf_texture, model.bark_texture);
         std::array<radiance_transfer, 3> levels;
@@ -153,39 +160,45 @@ std::array<radiance_transfer, 3> load_species_transfer(const species_settings& s
             levels[i] = resample_transfer(model.lods[0], levels[0], model.lods[i].vertices);
         return serialize_radiance_transfers(levels);
     };
-    const std::array<std::size_t, 3> receivers = {model.lods[0].vertices.size(), model.lods[1].vertices.size(),
+    const std::array<std::size_t, 3> receivers = {model.lods[0].vertices.size(),
+                                                  model.lods[1].vertices.size(),
                                                   model.lods[2].vertices.size()};
     auto read = [&](std::span<const std::byte> bytes) {
         std::vector<radiance_transfer> t = read_transfers(bytes, receivers, settings.bands);
         return std::array<radiance_transfer, 3>{std::move(t[0]), std::move(t[1]), std::move(t[2])};
     };
-    return load_cached<std::array<radiance_transfer, 3>>(cache, "radiance_transfer",
-                                                         species_transfer_key(species, seed, settings), bake, read);
+    return load_cached<std::array<radiance_transfer, 3>>(
+        cache, "radiance_transfer", species_transfer_key(species, seed, settings), bake, read);
 }
 
 std::uint64_t species_point_line_transfer_key(const species_settings& species, std::uint64_t seed,
                                               const transfer_settings& settings) {
-    const std::uint64_t key = hash_string("point_line_transfer", species_point_line_key(species, seed));
+    const std::uint64_t key =
+        hash_string("point_line_transfer", species_point_line_key(species, seed));
     return hash_string(transfer_settings_text(settings), key);
 }
 
-point_line_transfer load_species_point_line_transfer(const species_settings& species, std::uint64_t seed,
-                                                     const plant_model& model,
+point_line_transfer load_species_point_line_transfer(const species_settings& species,
+                                                     std::uint64_t seed, const plant_model& model,
                                                      const point_line_model& point_lines,
-                                                     const transfer_settings& settings, bake_cache* cache) {
+                                                     const transfer_settings& settings,
+                                                     bake_cache* cache) {
     auto bake = [&] {
         const transfer_occluders occluders(model.lods[0], model.leaf_texture, model.bark_texture);
-        const std::array<radiance_transfer, 2> parts = {occluders.bake(point_lines.points, settings),
-                                                        occluders.bake(point_lines.lines, settings)};
+        const std::array<radiance_transfer, 2> parts = {
+            occluders.bake(point_lines.points, settings),
+            occluders.bake(point_lines.lines, settings)};
         return serialize_radiance_transfers(parts);
     };
-    const std::array<std::size_t, 2> receivers = {point_lines.points.size(), point_lines.lines.size()};
+    const std::array<std::size_t, 2> receivers = {point_lines.points.size(),
+                                                  point_lines.lines.size()};
     auto read = [&](std::span<const std::byte> bytes) {
         std::vector<radiance_transfer> t = read_transfers(bytes, receivers, settings.bands);
         return point_line_transfer{std::move(t[0]), std::move(t[1])};
     };
-    return load_cached<point_line_transfer>(cache, "radiance_transfer",
-                                            species_point_line_transfer_key(species, seed, settings), bake, read);
+    return load_cached<point_line_transfer>(
+        cache, "radiance_transfer", species_point_line_transfer_key(species, seed, settings), bake,
+        read);
 }
 
 }  // namespace sylva

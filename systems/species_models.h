@@ -38,7 +38,8 @@ std::uint64_t species_billboard_key(const species_settings& species, std::uint64
 // entry is keyed on `transfer_key` (species_transfer_key) as well.
 crossed_billboard load_species_billboard(const species_settings& species, std::uint64_t seed,
                                          const plant_model& model, bake_cache* cache,
-                                         const radiance_transfer* transfer = nullptr, std::uint64_t transfer_key = 0);
+                                         const radiance_transfer* transfer = nullptr,
+                                         std::uint64_t transfer_key = 0);
 
 // The cache key of a species' billboard cloud: its model's key and the cloud's format version
 // (the settings are default_billboard_cloud_settings of that model, fixed by the two).
@@ -70,9 +71,10 @@ std::uint64_t species_transfer_key(const species_settings& species, std::uint64_
 // mesh's vertices ray-cast against the full mesh, the coarser levels' resampled from it
 // (models/transfer_resampling.h), through the cache ("radiance_transfer") when `cache` is not
 // null.
-std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species, std::uint64_t seed,
-                                                       const plant_model& model,
-                                                       const transfer_settings& settings, bake_cache* cache);
+std::array<radiance_transfer, 3> load_species_transfer(const species_settings& species,
+                                                       std::uint64_t seed, const plant_model& model,
+                                                       const transfer_settings& settings,
+                                                       bake_cache* cache);
 
 // The transfer of a point/line representation: one vector per point_line_model::points vertex
 // and one per point_line_model::lines vertex.
@@ -88,9 +90,10 @@ std::uint64_t species_point_line_transfer_key(const species_settings& species, s
 
 // The radiance transfer of `point_lines` (load_species_point_lines of `model`), shadowed by
 // `model`'s full mesh, through the cache ("radiance_transfer") when `cache` is not null.
-point_line_transfer load_species_point_line_transfer(const species_settings& species, std::uint64_t seed,
-                                                     const plant_model& model,
+point_line_transfer load_species_point_line_transfer(const species_settings& species,
+                                                     std::uint64_t seed, const plant_model& model,
                                                      const point_line_model& point_lines,
-                                                     const transfer_settings& settings, bake_cache* cache);
+                                                     const transfer_settings& settings,
+                                                     bake_cache* cache);
 
 }  // namespace sylva

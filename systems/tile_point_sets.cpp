@@ -35,8 +35,9 @@ std::uint32_t vertices_per(lod_primitive p) { return p == lod_primitive::lines ?
 // Takes `share` (rounded) of `from`'s samples (a prefix: a random subset), moved by `offset`.
 // Transfer records (when `from_transfer` has them) turn with the plant's yaw into the tile's
 // frame, as its normals do.
-void take(sample_set& into, const std::vector<vertex>& from, const std::vector<vertex_transfer>& from_transfer,
-          std::uint32_t per, double share, glm::vec3 offset, float yaw, float scale) {
+void take(sample_set& into, const std::vector<vertex>& from,
+          const std::vector<vertex_transfer>& from_transfer, std::uint32_t per, double share,
+          glm::vec3 offset, float yaw, float scale) {
     const auto available = std::uint32_t(from.size() / per);
     const auto n = std::min(available, std::uint32_t(std::lround(share)));
     const float c = std::cos(yaw), s = std::sin(yaw);
@@ -47,7 +48,8 @@ void take(sample_set& into, const std::vector<vertex>& from, const std::vector<v
         v.normal = rotate(v.normal);
         into.vertices.push_back(v);
         if (!from_transfer.empty())
-            into.transfer.push_back(yaw == 0.0f ? from_transfer[i] : rotate_about_y(from_transfer[i], yaw));
+            into.transfer.push_back(yaw == 0.0f ? from_transfer[i]
+                                                : rotate_about_y(from_transfer[i], yaw));
     }
 }
 
@@ -123,8 +125,8 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     set.line_error = std::max(set.line_error, part.line_error_m * w.scale);
                     set.full_length += double(part.line_length_m) * w.scale;
                     set.stands_for += part.primitive_count;
-                    take(set, mesh.vertices, mesh.transfer, vertices_per(part.primitive), density[key] * a, offset, w.yaw,
-                         w.scale);
+                    take(set, mesh.vertices, mesh.transfer, vertices_per(part.primitive),
+                         density[key] * a, offset, w.yaw, w.scale);
                 });
             }
         } else {
@@ -148,8 +150,8 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                     merged.line_error = std::max(merged.line_error, set.line_error);
                     merged.full_length += set.full_length;
                     merged.stands_for += set.stands_for;
-                    take(merged, set.vertices, set.transfer, vertices_per(std::get<2>(key)), density[key] * set.area,
-                         offset, 0.0f, 1.0f);
+                    take(merged, set.vertices, set.transfer, vertices_per(std::get<2>(key)),
+                         density[key] * set.area, offset, 0.0f, 1.0f);
                 }
             }
         }
@@ -186,9 +188,13 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
                 primitive == lod_primitive::points ? primitive_kind::points : primitive_kind::lines;
             if (primitive == lod_primitive::lines)
                 part.mesh_splats = add_sample_mesh(
-                    assets, primitive_mesh(set.vertices, primitive_kind::points, material, set.transfer), 2 * set.samples);
+                    assets,
+                    primitive_mesh(set.vertices, primitive_kind::points, material, set.transfer),
+                    2 * set.samples);
             part.mesh = add_sample_mesh(
-                assets, primitive_mesh(std::move(set.vertices), kind, material, std::move(set.transfer)), set.samples);
+                assets,
+                primitive_mesh(std::move(set.vertices), kind, material, std::move(set.transfer)),
+                set.samples);
             for (const std::uint16_t m : {part.mesh, part.mesh_splats})
                 if (m) assets.library.meshes[m].lighting = library.species[species].lighting;
             out.parts.push_back(part);

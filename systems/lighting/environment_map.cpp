@@ -102,14 +102,14 @@ std::array<double, 9> texel_basis_integrals(const theta_moments& t, const phi_mo
     const double y2_zonal = std::sqrt(5.0 / (16.0 * k_pi));
     const double y2_sectoral = std::sqrt(15.0 / (16.0 * k_pi));
     return {y0 * t.s1 * p.one,
-            y1 * t.s1c1 * p.one,                                 // y
-            -y1 * t.s2 * p.c,                                    // z
-            y1 * t.s2 * p.s,                                     // x
-            y2_mixed * t.s2c1 * p.s,                             // x y
-            -y2_mixed * t.s2c1 * p.c,                            // y z
-            y2_zonal * (3.0 * t.s3 * p.cc - t.s1 * p.one),       // 3 z^2 - 1
-            -y2_mixed * t.s3 * p.sc,                             // x z
-            y2_sectoral * (t.s3 * p.ss - t.s1c2 * p.one)};       // x^2 - y^2
+            y1 * t.s1c1 * p.one,                            // y
+            -y1 * t.s2 * p.c,                               // z
+            y1 * t.s2 * p.s,                                // x
+            y2_mixed * t.s2c1 * p.s,                        // x y
+            -y2_mixed * t.s2c1 * p.c,                       // y z
+            y2_zonal * (3.0 * t.s3 * p.cc - t.s1 * p.one),  // 3 z^2 - 1
+            -y2_mixed * t.s3 * p.sc,                        // x z
+            y2_sectoral * (t.s3 * p.ss - t.s1c2 * p.one)};  // x^2 - y^2
 }
 
 }  // namespace
@@ -157,7 +157,8 @@ sh9_rgb project_environment_map(const environment_map& map) {
             const float* texel =
                 &map.rgb[(std::size_t(j) * std::size_t(map.width) + std::size_t(i)) * 3];
             const glm::dvec3 l(texel[0], texel[1], texel[2]);
-            const std::array<double, 9> y = texel_basis_integrals(rows[std::size_t(j)], columns[std::size_t(i)]);
+            const std::array<double, 9> y =
+                texel_basis_integrals(rows[std::size_t(j)], columns[std::size_t(i)]);
             for (std::size_t k = 0; k < 9; ++k) sum[k] += l * y[k];
         }
     }
@@ -182,7 +183,8 @@ environment_map downsample_environment_map(const environment_map& map, int width
         const auto row = std::size_t(std::int64_t(j) * height / map.height);
         for (int i = 0; i < map.width; ++i) {
             const auto column = std::size_t(std::int64_t(i) * width / map.width);
-            const float* texel = &map.rgb[(std::size_t(j) * std::size_t(map.width) + std::size_t(i)) * 3];
+            const float* texel =
+                &map.rgb[(std::size_t(j) * std::size_t(map.width) + std::size_t(i)) * 3];
             sum[row * std::size_t(width) + column] +=
                 glm::dvec4(glm::dvec3(texel[0], texel[1], texel[2]) * weight, weight);
         }

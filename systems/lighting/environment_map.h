@@ -25,7 +25,7 @@
 namespace sylva {
 
 struct environment_map {
-    int width = 0;   // = 2 * height
+    int width = 0;  // = 2 * height
     int height = 0;
     std::vector<float> rgb;  // linear radiance, 3 floats per texel, rows top (zenith) down
     // Texels that were NaN, infinite or negative in the file and were set to 0 (radiance is

@@ -51,7 +51,8 @@ std::vector<vertex_transfer> pack_transfer(const radiance_transfer& t) {
 }
 
 vertex_transfer rotate_about_y(const vertex_transfer& t, float yaw) {
-    return pack_transfer(rotate_about_y(transfer_side(t, 0), yaw), rotate_about_y(transfer_side(t, 1), yaw));
+    return pack_transfer(rotate_about_y(transfer_side(t, 0), yaw),
+                         rotate_about_y(transfer_side(t, 1), yaw));
 }
 
 }  // namespace sylva

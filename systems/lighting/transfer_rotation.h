@@ -34,7 +34,8 @@ sh9 rotate_about_y(const sh9& t, float yaw);
 vertex_transfer rotate_about_y(const vertex_transfer& t, float yaw);
 
 // The two 9-coefficient vectors of a streamed transfer, and back.
-sh9 transfer_side(const vertex_transfer& t, int side);  // 0: the side the normal faces, 1: the other
+sh9 transfer_side(const vertex_transfer& t,
+                  int side);  // 0: the side the normal faces, 1: the other
 vertex_transfer pack_transfer(const sh9& front, const sh9& back);
 // Every receiver of a bake as streamed records (2 bands: coefficients 4..8 zero).
 std::vector<vertex_transfer> pack_transfer(const radiance_transfer& t);

@@ -35,7 +35,8 @@ mesh_pool::mesh_pool() : m_vao(make_vertex_array()) {
     }
     // vertex_transfer: five vec4s of half floats (shaders/surface.vert locations 5..9).
     for (GLuint a = 0; a < 5; ++a) {
-        glVertexArrayAttribFormat(vao, k_first_transfer_attribute + a, 4, GL_HALF_FLOAT, GL_FALSE, a * 8);
+        glVertexArrayAttribFormat(vao, k_first_transfer_attribute + a, 4, GL_HALF_FLOAT, GL_FALSE,
+                                  a * 8);
         glVertexArrayAttribBinding(vao, k_first_transfer_attribute + a, k_transfer_binding);
     }
     reserve(1 << 16, 1 << 18);
@@ -46,9 +47,12 @@ void mesh_pool::enable_transfer() {
     m_transfer = grow({}, 0, m_vertex_capacity * sizeof(vertex_transfer));
     std::vector<vertex_transfer> zeros(m_vertex_count);
     if (!zeros.empty())
-        glNamedBufferSubData(m_transfer.id(), 0, GLsizeiptr(zeros.size() * sizeof(vertex_transfer)), zeros.data());
-    glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0, sizeof(vertex_transfer));
-    for (GLuint a = 0; a < 5; ++a) glEnableVertexArrayAttrib(m_vao.id(), k_first_transfer_attribute + a);
+        glNamedBufferSubData(m_transfer.id(), 0, GLsizeiptr(zeros.size() * sizeof(vertex_transfer)),
+                             zeros.data());
+    glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0,
+                              sizeof(vertex_transfer));
+    for (GLuint a = 0; a < 5; ++a)
+        glEnableVertexArrayAttrib(m_vao.id(), k_first_transfer_attribute + a);
 }
 
 void mesh_pool::reserve(std::size_t vertex_count, std::size_t index_count) {
@@ -59,7 +63,8 @@ void mesh_pool::reserve(std::size_t vertex_count, std::size_t index_count) {
         if (m_transfer) {
             m_transfer = grow(std::move(m_transfer), m_vertex_count * sizeof(vertex_transfer),
                               capacity * sizeof(vertex_transfer));
-            glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0, sizeof(vertex_transfer));
+            glVertexArrayVertexBuffer(m_vao.id(), k_transfer_binding, m_transfer.id(), 0,
+                                      sizeof(vertex_transfer));
         }
         m_vertex_capacity = capacity;
         glVertexArrayVertexBuffer(m_vao.id(), k_vertex_binding, m_vertices.id(), 0, sizeof(vertex));
@@ -98,8 +103,8 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
         if (mesh.transfer.empty()) zeros.resize(mesh.vertices.size());
         const auto& records = mesh.transfer.empty() ? zeros : mesh.transfer;
         const auto transfer_bytes = GLsizeiptr(records.size() * sizeof(vertex_transfer));
-        glNamedBufferSubData(m_transfer.id(), GLintptr(m_vertex_count * sizeof(vertex_transfer)), transfer_bytes,
-                             records.data());
+        glNamedBufferSubData(m_transfer.id(), GLintptr(m_vertex_count * sizeof(vertex_transfer)),
+                             transfer_bytes, records.data());
         m_uploaded_bytes += std::uint64_t(transfer_bytes);
     }
 

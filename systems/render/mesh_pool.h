@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "models/mesh.h"
-#include "systems/scene_assets.h"
 #include "systems/render/gl_objects.h"
+#include "systems/scene_assets.h"
 
 namespace sylva::render {
 
@@ -31,7 +31,8 @@ public:
     mesh_pool();
     // Uploads the mesh; the returned id is its index (stable for the pool's lifetime).
     // `lighting` chooses the shader its submeshes are drawn with; sh needs mesh.transfer.
-    std::uint16_t add(const mesh_data& mesh, lighting_variant lighting = lighting_variant::normal_mapped);
+    std::uint16_t add(const mesh_data& mesh,
+                      lighting_variant lighting = lighting_variant::normal_mapped);
     const gpu_mesh& get(std::uint16_t id) const { return m_meshes.at(id); }
     std::size_t size() const { return m_meshes.size(); }
     GLuint vertex_array() const { return m_vao.id(); }

@@ -113,8 +113,9 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     }
     for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
         // Scenes built by hand (tests) may leave the library's mesh table empty: normal-lit.
-        const lighting_variant lighting =
-            i < assets.library.meshes.size() ? assets.library.meshes[i].lighting : lighting_variant::normal_mapped;
+        const lighting_variant lighting = i < assets.library.meshes.size()
+                                              ? assets.library.meshes[i].lighting
+                                              : lighting_variant::normal_mapped;
         std::uint16_t id = m_meshes.add(assets.meshes[i], lighting);
         if (id != i) throw std::logic_error("renderer: mesh ids must follow scene_assets order");
     }
@@ -134,18 +135,22 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         // Pre-lit clouds read the page lit at bake time in its place (same layout and alpha).
         m_cloud_albedo = make_texture_array(assets.cloud_albedo, false);
         m_cloud_normal = make_texture_array(assets.cloud_normal, false, true);
-        if (!assets.cloud_pre_lit.empty()) m_cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
-        if (!assets.cloud_transfer.empty()) m_cloud_transfer = make_texture_array(assets.cloud_transfer, false);
+        if (!assets.cloud_pre_lit.empty())
+            m_cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
+        if (!assets.cloud_transfer.empty())
+            m_cloud_transfer = make_texture_array(assets.cloud_transfer, false);
     }
     write_species_block(assets);
     if (assets.environment_sky.width > 0)
-        m_map_sky = downsample_environment_map(assets.environment_sky, k_sky_width, k_sky_height).rgb;
+        m_map_sky =
+            downsample_environment_map(assets.environment_sky, k_sky_width, k_sky_height).rgb;
     if (settings.shadows)
         m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes();
-    for (const auto* images : {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
-                               &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal,
-                               &assets.cloud_pre_lit, &assets.cloud_transfer, &assets.billboard_transfer})
+    for (const auto* images :
+         {&assets.leaf_textures, &assets.bark_textures, &assets.billboard_albedo,
+          &assets.billboard_normal, &assets.cloud_albedo, &assets.cloud_normal,
+          &assets.cloud_pre_lit, &assets.cloud_transfer, &assets.billboard_transfer})
         for (const auto& image : *images) m_static_upload_bytes += image.texels.size();
     m_static_upload_bytes += assets.ground_texture.texels.size();
     glEnable(GL_DEPTH_TEST);
@@ -162,17 +167,24 @@ void renderer::write_species_block(const scene_assets& assets) {
     for (const species_entry& e : assets.library.species) {
         if (e.lighting != lighting_variant::sh) continue;
         if (e.texture_layer >= float(k_max_species_spheres))
-            throw std::runtime_error("renderer: species '" + e.name + "' is lit by SH transfer, which supports the first " +
-                                     std::to_string(k_max_species_spheres) + " species of a scene only");
-        spheres[std::size_t(e.texture_layer)] = glm::vec4(e.center_height, e.transfer_radius, e.transfer_layer, 0.0f);
+            throw std::runtime_error("renderer: species '" + e.name +
+                                     "' is lit by SH transfer, which supports the first " +
+                                     std::to_string(k_max_species_spheres) +
+                                     " species of a scene only");
+        spheres[std::size_t(e.texture_layer)] =
+            glm::vec4(e.center_height, e.transfer_radius, e.transfer_layer, 0.0f);
     }
-    // Billboards read their transfer from pages: a scene that lights them by transfer must have them.
+    // Billboards read their transfer from pages: a scene that lights them by transfer must have
+    // them.
     for (std::size_t i = 0; i < assets.meshes.size() && i < assets.library.meshes.size(); ++i) {
-        if (assets.library.meshes[i].lighting != lighting_variant::sh || assets.meshes[i].submeshes.empty()) continue;
+        if (assets.library.meshes[i].lighting != lighting_variant::sh ||
+            assets.meshes[i].submeshes.empty())
+            continue;
         const material_kind m = assets.meshes[i].submeshes[0].material;
         if ((m == material_kind::billboard && assets.billboard_transfer.empty()) ||
             (m == material_kind::billboard_cloud && assets.cloud_transfer.empty()))
-            throw std::logic_error("renderer: mesh " + std::to_string(i) + " is lit by SH transfer but has no transfer pages");
+            throw std::logic_error("renderer: mesh " + std::to_string(i) +
+                                   " is lit by SH transfer but has no transfer pages");
     }
     m_species_block = make_buffer();
     glNamedBufferStorage(m_species_block.id(), sizeof(spheres), spheres.data(), 0);
@@ -198,7 +210,8 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
         if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
     }
-    if (lighting == lighting_variant::sh && material != material_kind::ground) source.defines.push_back("SH_TRANSFER");
+    if (lighting == lighting_variant::sh && material != material_kind::ground)
+        source.defines.push_back("SH_TRANSFER");
     // Partners of a transition are drawn in the view only, and only as whole meshes.
     if (!shadow && m_settings.fade_dissolve && primitive == primitive_kind::triangles &&
         material != material_kind::ground && material != material_kind::billboard_cloud)
@@ -216,7 +229,8 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
 void renderer::update_sky_texture(const frame_view& view) {
     if (!m_map_sky.empty()) {
         // An environment map: only its turn and brightness change while the scene plays.
-        const std::pair key{environment_map_turn_deg(*view.sky, *view.sun_light), view.sky->sky_intensity};
+        const std::pair key{environment_map_turn_deg(*view.sky, *view.sun_light),
+                            view.sky->sky_intensity};
         if (m_sky_texture && m_map_drawn == key) return;
         fill_map_sky_grid(m_map_sky, key.first, key.second > 0.0f ? key.second : 0.0f, m_sky_grid);
         upload_sky_grid();
@@ -238,8 +252,8 @@ void renderer::upload_sky_grid() {
     if (!m_sky_texture)
         m_sky_texture = make_float_texture(k_sky_width, k_sky_height, grid.data());
     else  // the sun moved: same texture, new texels (no GL allocation in the frame loop)
-        glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB, GL_FLOAT,
-                            grid.data());
+        glTextureSubImage2D(m_sky_texture.id(), 0, 0, 0, k_sky_width, k_sky_height, GL_RGB,
+                            GL_FLOAT, grid.data());
     m_frame_upload_bytes += grid.size() * sizeof(float);
 }
 
@@ -261,7 +275,8 @@ void renderer::write_uniforms(const frame_view& view) {
     u.sun_direction = glm::vec4(s.direction, m_cascade_count > 0 && sun_up ? 1.0f : 0.0f);
     u.sun_radiance = glm::vec4(sun_up ? s.color * s.intensity : glm::vec3(0.0f), float(m_cascade_count));
     for (int i = 0; i < 9; ++i) u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
-    for (int i = 0; i < 9; ++i) u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
+    for (int i = 0; i < 9; ++i)
+        u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
     const sh9 sun_basis = sh_basis(s.direction);
     for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
@@ -304,8 +319,9 @@ void renderer::write_commands(const frame_view& view) {
         const std::uint32_t per = vertices_per(mesh.primitive);
         for (const auto& sub : mesh.submeshes) {
             const std::uint32_t indices = primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
-            groups[std::size_t(pass) * k_groups_per_pass + group_of(sub.material, mesh.primitive, sub.lighting)].push_back(
-                {indices, count, sub.first_index, sub.base_vertex, first});
+            groups[std::size_t(pass) * k_groups_per_pass +
+                   group_of(sub.material, mesh.primitive, sub.lighting)]
+                .push_back({indices, count, sub.first_index, sub.base_vertex, first});
         }
     };
     for (const auto& batch : draws.batches) {
@@ -372,18 +388,21 @@ void renderer::draw_shadow_cascades() {
             const GLuint bark = surface_program(material_kind::bark, true);
             glUseProgram(bark);
             glUniform1i(glGetUniformLocation(bark, "u_cascade"), c);
-            draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles, l)], bark, false);
+            draw_group(groups[group_of(material_kind::bark, primitive_kind::triangles, l)], bark,
+                       false);
             const GLuint leaf = surface_program(material_kind::leaf, true);
             glUseProgram(leaf);
             glUniform1i(glGetUniformLocation(leaf, "u_cascade"), c);
             glBindTextureUnit(0, m_leaf_textures.id());
-            draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles, l)], leaf, false);
+            draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles, l)], leaf,
+                       false);
             if (groups[group_of(material_kind::billboard, primitive_kind::triangles, l)].count) {
                 const GLuint billboard = surface_program(material_kind::billboard, true);
                 glUseProgram(billboard);
                 glUniform1i(glGetUniformLocation(billboard, "u_cascade"), c);
                 glBindTextureUnit(0, m_billboard_albedo.id());
-                draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)], billboard, false);
+                draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)],
+                           billboard, false);
             }
         }
         draw_clouds(groups, c);
@@ -415,13 +434,16 @@ void renderer::draw_opaque() {
                    surface_program(material_kind::bark, false, primitive_kind::triangles, l), true);
         glBindTextureUnit(0, m_leaf_textures.id());
         draw_group(groups[group_of(material_kind::leaf, primitive_kind::triangles, l)],
-                   surface_program(material_kind::leaf, false, primitive_kind::triangles, l), false);
+                   surface_program(material_kind::leaf, false, primitive_kind::triangles, l),
+                   false);
         if (groups[group_of(material_kind::billboard, primitive_kind::triangles, l)].count) {
             glBindTextureUnit(0, m_billboard_albedo.id());
             glBindTextureUnit(2, m_billboard_normal.id());
             if (l == lighting_variant::sh) glBindTextureUnit(3, m_billboard_transfer.id());
-            draw_group(groups[group_of(material_kind::billboard, primitive_kind::triangles, l)],
-                       surface_program(material_kind::billboard, false, primitive_kind::triangles, l), false);
+            draw_group(
+                groups[group_of(material_kind::billboard, primitive_kind::triangles, l)],
+                surface_program(material_kind::billboard, false, primitive_kind::triangles, l),
+                false);
         }
     }
     draw_clouds(groups, -1);
@@ -434,31 +456,36 @@ void renderer::draw_opaque() {
 void renderer::draw_samples(const pass_commands& groups, int cascade) {
     const bool shadow = cascade >= 0;
     for (const lighting_variant lighting : k_all_lightings)
-    for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
-        for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
-            const command_range& range = groups[group_of(material, primitive, lighting)];
-            if (range.count == 0) continue;
-            const GLuint program = surface_program(material, shadow, primitive, shadow ? lighting_variant::normal_mapped : lighting);
-            glUseProgram(program);
-            if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
-            if (primitive == primitive_kind::points) {
-                glEnable(GL_PROGRAM_POINT_SIZE);
-                glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
-                glUniform1f(glGetUniformLocation(program, "u_splat_plane"),
-                            shadow ? float(k_shadow_sample_spacing) * m_splat_plane : m_splat_plane);
-                // compute_shadow_prefix counts splats of c_p·s² texels' area where s, the sample
-                // distance, is k_shadow_sample_texels texels: s·√c_p = s·splat / d'.
-                glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
-                            float(k_shadow_sample_texels) * std::max(1.0f, m_splat_px / std::max(m_line_width_px, 1e-6f)));
-            } else if (!shadow && m_line_width_px > k_native_line_width_px) {
-                glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
-                glUniform2f(glGetUniformLocation(program, "u_viewport_px"), float(m_settings.width),
-                            float(m_settings.height));
+        for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
+            for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
+                const command_range& range = groups[group_of(material, primitive, lighting)];
+                if (range.count == 0) continue;
+                const GLuint program =
+                    surface_program(material, shadow, primitive,
+                                    shadow ? lighting_variant::normal_mapped : lighting);
+                glUseProgram(program);
+                if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
+                if (primitive == primitive_kind::points) {
+                    glEnable(GL_PROGRAM_POINT_SIZE);
+                    glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
+                    glUniform1f(
+                        glGetUniformLocation(program, "u_splat_plane"),
+                        shadow ? float(k_shadow_sample_spacing) * m_splat_plane : m_splat_plane);
+                    // compute_shadow_prefix counts splats of c_p·s² texels' area where s, the
+                    // sample distance, is k_shadow_sample_texels texels: s·√c_p = s·splat / d'.
+                    glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
+                                float(k_shadow_sample_texels) *
+                                    std::max(1.0f, m_splat_px / std::max(m_line_width_px, 1e-6f)));
+                } else if (!shadow && m_line_width_px > k_native_line_width_px) {
+                    glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
+                    glUniform2f(glGetUniformLocation(program, "u_viewport_px"),
+                                float(m_settings.width), float(m_settings.height));
+                }
+                glBindTextureUnit(0, material == material_kind::leaf ? m_leaf_textures.id()
+                                                                     : m_bark_textures.id());
+                draw_group(range, program, false, primitive);
             }
-            glBindTextureUnit(0, material == material_kind::leaf ? m_leaf_textures.id() : m_bark_textures.id());
-            draw_group(range, program, false, primitive);
         }
-    }
 }
 
 // Billboard-cloud quads (models/billboard_cloud.h) of every lighting variant, in a shadow
@@ -469,15 +496,18 @@ void renderer::draw_samples(const pass_commands& groups, int cascade) {
 void renderer::draw_clouds(const pass_commands& groups, int cascade) {
     const bool shadow = cascade >= 0;
     for (const lighting_variant l : k_all_lightings) {
-        const command_range& range = groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
+        const command_range& range =
+            groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
         if (range.count == 0) continue;
-        const GLuint program = surface_program(material_kind::billboard_cloud, shadow, primitive_kind::triangles,
-                                               shadow ? lighting_variant::normal_mapped : l);
+        const GLuint program =
+            surface_program(material_kind::billboard_cloud, shadow, primitive_kind::triangles,
+                            shadow ? lighting_variant::normal_mapped : l);
         glUseProgram(program);
         if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
         // Pre-lit clouds read the page lit at bake time in the colour page's place (same layout
         // and alpha); SH clouds add their transfer pages.
-        glBindTextureUnit(0, !shadow && l == lighting_variant::pre_lit ? m_cloud_pre_lit.id() : m_cloud_albedo.id());
+        glBindTextureUnit(0, !shadow && l == lighting_variant::pre_lit ? m_cloud_pre_lit.id()
+                                                                       : m_cloud_albedo.id());
         glBindTextureUnit(2, m_cloud_normal.id());
         if (!shadow && l == lighting_variant::sh) glBindTextureUnit(3, m_cloud_transfer.id());
         draw_group(range, program, true);

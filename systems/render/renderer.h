@@ -94,7 +94,8 @@ private:
     // lighting variant. material_kind: bark, leaf, ground, billboard, billboard_cloud
     static constexpr std::size_t k_materials = 5;
     static constexpr std::size_t k_primitives = 3;  // primitive_kind: triangles, points, lines
-    static constexpr std::size_t k_groups_per_pass = k_materials * k_primitives * k_lighting_variants;
+    static constexpr std::size_t k_groups_per_pass =
+        k_materials * k_primitives * k_lighting_variants;
     using pass_commands = std::array<command_range, k_groups_per_pass>;
     // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
     struct indirect_command {

@@ -16,8 +16,9 @@ namespace {
 std::vector<bench_configuration_spec> some_configurations() {
     std::vector<bench_configuration_spec> chosen;
     for (const auto& c : default_bench_configurations())
-        if (c.name == "reference" || c.name == "brute_force" || c.name == "mesh_lod" || c.name == "baseline" ||
-            c.name == "points_lines_d2" || c.name == "billboard_clouds" || c.name == "billboard_clouds_sh")
+        if (c.name == "reference" || c.name == "brute_force" || c.name == "mesh_lod" ||
+            c.name == "baseline" || c.name == "points_lines_d2" || c.name == "billboard_clouds" ||
+            c.name == "billboard_clouds_sh")
             chosen.push_back(c);
     return chosen;
 }

@@ -14,8 +14,10 @@ namespace sylva::testing {
 // A square of side 2·half at height y, normal up, wound counter-clockwise seen from above.
 inline mesh_data horizontal_quad(float half, float y, material_kind material) {
     mesh_data m;
-    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}}, {{half, y, -half}, {0, 1, 0}, {1, 0}},
-                  {{half, y, half}, {0, 1, 0}, {1, 1}}, {{-half, y, half}, {0, 1, 0}, {0, 1}}};
+    m.vertices = {{{-half, y, -half}, {0, 1, 0}, {0, 0}},
+                  {{half, y, -half}, {0, 1, 0}, {1, 0}},
+                  {{half, y, half}, {0, 1, 0}, {1, 1}},
+                  {{-half, y, half}, {0, 1, 0}, {0, 1}}};
     m.indices = {0, 2, 1, 0, 3, 2};
     m.submeshes = {{0, 6, material}};
     m.bounds_min = {-half, y, -half};
@@ -32,7 +34,8 @@ inline image_rgba8 solid(std::uint8_t v) {
 
 // Rec. 709 luminance (0..255) of the pixel where `cam` sees `world`.
 inline float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec3 world) {
-    const glm::vec4 clip = cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
+    const glm::vec4 clip =
+        cam.projection * cam.view * glm::vec4(glm::vec3(world - cam.position), 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     const auto px = std::uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
     const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));

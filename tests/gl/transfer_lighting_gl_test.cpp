@@ -34,7 +34,8 @@ sh9 clamped_cosine(glm::vec3 n, float scale) {
 }
 
 mesh_data with_transfer(mesh_data m, float scale) {
-    const vertex_transfer t = pack_transfer(clamped_cosine({0, 1, 0}, scale), clamped_cosine({0, -1, 0}, scale));
+    const vertex_transfer t =
+        pack_transfer(clamped_cosine({0, 1, 0}, scale), clamped_cosine({0, -1, 0}, scale));
     m.transfer.assign(m.vertices.size(), t);
     return m;
 }
@@ -52,16 +53,23 @@ transfer_scene make_scene() {
     transfer_scene s;
     s.assets.meshes.push_back(horizontal_quad(60.0f, 0.0f, material_kind::ground));
     s.assets.meshes.push_back(horizontal_quad(1.5f, 1.0f, material_kind::bark));
-    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
-    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 0.5f));
-    s.assets.meshes.push_back(with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
+    s.assets.meshes.push_back(
+        with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
+    s.assets.meshes.push_back(
+        with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 0.5f));
+    s.assets.meshes.push_back(
+        with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
     s.assets.meshes.push_back(horizontal_quad(2.5f, 6.0f, material_kind::bark));
-    const lighting_variant lit[] = {lighting_variant::normal_mapped, lighting_variant::normal_mapped,
-                                    lighting_variant::sh, lighting_variant::sh, lighting_variant::sh,
+    const lighting_variant lit[] = {lighting_variant::normal_mapped,
+                                    lighting_variant::normal_mapped,
+                                    lighting_variant::sh,
+                                    lighting_variant::sh,
+                                    lighting_variant::sh,
                                     lighting_variant::normal_mapped};
     for (std::size_t i = 0; i < s.assets.meshes.size(); ++i)
         s.assets.library.meshes.push_back({std::uint32_t(s.assets.meshes[i].triangle_count()),
-                                           representation::mesh_full, primitive_kind::triangles, lit[i]});
+                                           representation::mesh_full, primitive_kind::triangles,
+                                           lit[i]});
     // The cards' species sphere: 1.5 m about their centre, so the roof 5 m up is another object.
     species_entry card;
     card.center_height = 1.0f;
@@ -122,8 +130,9 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
         draws.batches.push_back({render_pass::opaque, m, std::uint32_t(m - 1), 1});
         draws.batches.push_back({render_pass::shadow_cascade_0, m, std::uint32_t(m - 1), 1});
     }
-    const cascade_set cascades = fit_cascades(s.cam.view, s.cam.fov_y, s.cam.aspect, s.cam.near_plane, 60.0f,
-                                              s.light.direction, 1, 0.5f, 2048, 50.0f, s.cam.position);
+    const cascade_set cascades =
+        fit_cascades(s.cam.view, s.cam.fov_y, s.cam.aspect, s.cam.near_plane, 60.0f,
+                     s.light.direction, 1, 0.5f, 2048, 50.0f, s.cam.position);
     render::frame_view view;
     view.view_camera = &s.cam;
     view.sun_light = &s.light;

@@ -269,7 +269,8 @@ TEST(billboard_bake, transfer_is_interpolated_over_the_covered_subsamples_seen_s
     // A leaf seen from its back: its back transfer is the side the viewer sees.
     add_rect(s.mesh, 4.0f, 0.0f, 8.0f, 8.0f, 0.0f, material_kind::leaf, {0.0f, 0.0f, -1.0f}, true);
     const radiance_transfer t = linear_transfer(s.mesh);
-    const billboard_image image = bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings());
+    const billboard_image image =
+        bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings());
     ASSERT_EQ(image.transfer.size(), 64u * k_billboard_transfer_floats);
     auto at = [&](std::uint32_t x, std::uint32_t y, std::size_t i) {
         return image.transfer[(std::size_t(y) * 8 + x) * k_billboard_transfer_floats + i];
@@ -288,7 +289,8 @@ TEST(billboard_bake, transfer_must_match_the_mesh) {
     radiance_transfer t = linear_transfer(s.mesh);
     t.front.resize(9);
     t.back.resize(9);
-    EXPECT_THROW(bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings()), std::invalid_argument);
+    EXPECT_THROW(bake_billboard({&s.mesh, &s.leaf, &s.bark, {}, &t}, k_plane, small_settings()),
+                 std::invalid_argument);
 }
 
 }  // namespace

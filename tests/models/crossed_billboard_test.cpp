@@ -1,10 +1,10 @@
 #include "models/crossed_billboard.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <unistd.h>
 
 #include "models/bake_cache.h"
 #include "models/billboard_io.h"
@@ -184,8 +184,10 @@ TEST(crossed_billboard, with_transfer_bakes_five_pages_that_round_trip) {
                 EXPECT_GE(seen, -0.005f);
                 EXPECT_LE(seen, 0.8910f);
                 // The other side's first coefficient is the complement: 0.886 - seen.
-                EXPECT_NEAR(decode_transfer(b.transfer_pages[2].at(x, y)[1]), 0.886227f - seen, 0.011f);
-                EXPECT_EQ(b.transfer_pages[1].at(x, y)[0], encode_transfer(0.0f));  // coefficient 4: 2 bands
+                EXPECT_NEAR(decode_transfer(b.transfer_pages[2].at(x, y)[1]), 0.886227f - seen,
+                            0.011f);
+                EXPECT_EQ(b.transfer_pages[1].at(x, y)[0],
+                          encode_transfer(0.0f));  // coefficient 4: 2 bands
             }
     EXPECT_GT(covered, 100u);
     const crossed_billboard back = deserialize_crossed_billboard(serialize_crossed_billboard(b));

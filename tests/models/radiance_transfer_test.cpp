@@ -4,7 +4,6 @@
 #include <tbb/global_control.h>
 
 #include <glm/geometric.hpp>
-
 #include <stdexcept>
 
 #include "models/radiance_transfer_io.h"
@@ -33,7 +32,9 @@ constexpr float k_t8 = -0.429043f;
 // so T_0 loses 0.282095 * 1.740840 = 0.491082.
 constexpr float k_cube_face_t0_loss = 0.491082f;
 
-vertex receiver_at(glm::vec3 p, glm::vec3 n) { return vertex{p, n, glm::vec2(0.0f)}; }
+vertex receiver_at(glm::vec3 p, glm::vec3 n) {
+    return vertex{p, n, glm::vec2(0.0f)};
+}
 
 // A square of half-size `half` at height y, facing `normal_y` (+1 up, -1 down), as one submesh.
 mesh_data quad(float y, float half, float normal_y, material_kind material) {
@@ -102,7 +103,8 @@ TEST(radiance_transfer, leaf_quad_shadows_from_either_side_unless_its_texels_are
     for (const float facing : {1.0f, -1.0f}) {
         const mesh_data leaf = quad(1.0f, 1.0f, facing, material_kind::leaf);
         const transfer_occluders solid(leaf, flat_texture(255));
-        EXPECT_NEAR(solid.bake(std::span(&k_up, 1), rays(4096)).front[0], k_t0 - k_cube_face_t0_loss, 0.01f);
+        EXPECT_NEAR(solid.bake(std::span(&k_up, 1), rays(4096)).front[0],
+                    k_t0 - k_cube_face_t0_loss, 0.01f);
         const transfer_occluders cut_out(leaf, flat_texture(0));
         expect_unoccluded_front(cut_out.bake(std::span(&k_up, 1), rays(1024)));
     }
@@ -126,14 +128,18 @@ struct scattered_scene {
             const glm::vec3 c(random.uniform(-2, 2), random.uniform(0, 3), random.uniform(-2, 2));
             const auto base = std::uint32_t(mesh.vertices.size());
             const glm::vec3 n(0.0f, random.uniform() < 0.5f ? 1.0f : -1.0f, 0.0f);
-            for (glm::vec2 d : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
-                mesh.vertices.push_back({c + 0.3f * glm::vec3(d.x, 0.0f, d.y), n, (d + 1.0f) * 0.5f});
+            for (glm::vec2 d :
+                 {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+                mesh.vertices.push_back(
+                    {c + 0.3f * glm::vec3(d.x, 0.0f, d.y), n, (d + 1.0f) * 0.5f});
             for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
         }
         mesh.submeshes = {{0, 60, material_kind::bark}, {60, 180, material_kind::leaf}};
         for (int r = 0; r < 300; ++r) {
-            const glm::vec3 n = glm::normalize(glm::vec3(random.uniform(-1, 1), 1.0f, random.uniform(-1, 1)));
-            receivers.push_back(receiver_at({random.uniform(-2, 2), random.uniform(-1, 2), random.uniform(-2, 2)}, n));
+            const glm::vec3 n =
+                glm::normalize(glm::vec3(random.uniform(-1, 1), 1.0f, random.uniform(-1, 1)));
+            receivers.push_back(receiver_at(
+                {random.uniform(-2, 2), random.uniform(-1, 2), random.uniform(-2, 2)}, n));
         }
     }
 };
@@ -188,7 +194,8 @@ TEST(radiance_transfer, interreflection_adds_the_light_the_occluder_reflects) {
     EXPECT_NEAR(t.front[0], 0.780308f, 0.01f);
     EXPECT_NEAR(t.back[0], k_t0, 1e-5);
     // Nothing to bounce from: still the exact projection.
-    expect_unoccluded_front(transfer_occluders(mesh_data{}, image_rgba8{}).bake(std::span(&k_up, 1), s));
+    expect_unoccluded_front(
+        transfer_occluders(mesh_data{}, image_rgba8{}).bake(std::span(&k_up, 1), s));
 }
 
 TEST(radiance_transfer, rejects_bands_other_than_two_or_three_and_zero_rays) {
@@ -214,8 +221,11 @@ TEST(radiance_transfer_io, round_trip_keeps_every_bit_and_truncation_throws) {
         EXPECT_EQ(back[i].front, transfers[i].front);
         EXPECT_EQ(back[i].back, transfers[i].back);
     }
-    for (std::size_t cut : {std::size_t(0), std::size_t(3), std::size_t(12), bytes.size() / 2, bytes.size() - 1})
-        EXPECT_THROW(deserialize_radiance_transfers(std::span(bytes).first(cut)), std::runtime_error) << cut;
+    for (std::size_t cut :
+         {std::size_t(0), std::size_t(3), std::size_t(12), bytes.size() / 2, bytes.size() - 1})
+        EXPECT_THROW(deserialize_radiance_transfers(std::span(bytes).first(cut)),
+                     std::runtime_error)
+            << cut;
 }
 
 TEST(radiance_transfer_io, other_format_and_mismatched_sizes_throw) {
@@ -226,7 +236,8 @@ TEST(radiance_transfer_io, other_format_and_mismatched_sizes_throw) {
     bytes[4] = std::byte(0xff);  // the format number follows the 4-byte magic
     EXPECT_THROW(deserialize_radiance_transfers(bytes), std::runtime_error);
     t.back.pop_back();
-    EXPECT_THROW(deserialize_radiance_transfers(serialize_radiance_transfers(std::span(&t, 1))), std::runtime_error);
+    EXPECT_THROW(deserialize_radiance_transfers(serialize_radiance_transfers(std::span(&t, 1))),
+                 std::runtime_error);
 }
 
 }  // namespace

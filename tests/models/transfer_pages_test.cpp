@@ -21,7 +21,8 @@ TEST(transfer_pages, blit_writes_eighteen_coefficients_across_five_pages) {
     billboard_image image;
     image.albedo = {2, 1, std::vector<std::uint8_t>(8, 0)};
     image.transfer.assign(2 * k_billboard_transfer_floats, 0.0f);
-    for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i) image.transfer[k_billboard_transfer_floats + i] = 0.05f * float(i);
+    for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i)
+        image.transfer[k_billboard_transfer_floats + i] = 0.05f * float(i);
     std::vector<image_rgba8> pages = blank_transfer_pages(4, 2);
     blit_transfer(pages, image, 2, 1);
     // Texel (3, 1) holds the second image texel: coefficient 9 (the other side's first) is page

@@ -20,8 +20,8 @@ struct two_vertices {
 
 TEST(transfer_resampling, takes_the_nearest_vertex_and_turns_it_to_the_receivers_side) {
     const two_vertices s;
-    const std::vector<vertex> receivers = {{{1, 0, 0}, {0, 1, 0}, {0, 0}},    // near A, same side
-                                           {{1, 0, 0}, {0, -1, 0}, {0, 0}},   // near A, facing away
+    const std::vector<vertex> receivers = {{{1, 0, 0}, {0, 1, 0}, {0, 0}},   // near A, same side
+                                           {{1, 0, 0}, {0, -1, 0}, {0, 0}},  // near A, facing away
                                            {{9, 0, 0}, {0.6f, 0.8f, 0}, {0, 0}}};  // near B
     const radiance_transfer t = resample_transfer(s.full, s.transfer, receivers, 1);
     ASSERT_EQ(t.receiver_count(), 3u);
@@ -49,7 +49,8 @@ TEST(transfer_resampling, rejects_a_transfer_of_another_mesh) {
     s.transfer.front.resize(4);
     s.transfer.back.resize(4);
     EXPECT_THROW(resample_transfer(s.full, s.transfer, {}, 1), std::invalid_argument);
-    EXPECT_THROW(resample_transfer(two_vertices().full, two_vertices().transfer, {}, 0), std::invalid_argument);
+    EXPECT_THROW(resample_transfer(two_vertices().full, two_vertices().transfer, {}, 0),
+                 std::invalid_argument);
 }
 
 }  // namespace

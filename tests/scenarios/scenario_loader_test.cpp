@@ -320,8 +320,9 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/environment/rotation_deg", "map, map_rotation_deg"},
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
-        {"/lod/d", "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
-                   "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
+        {"/lod/d",
+         "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
+         "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -655,9 +656,11 @@ TEST(scenario_loader, paths_are_resolved_against_the_scenario_folder_and_stored_
 TEST(scenario_loader, environment_map_rotation_is_in_range_and_needs_a_map) {
     const scenario_folder folder("environment");
     const json with_map = set(minimal(), "/environment/map", "maps/sky.hdr");
-    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", 360)).environment.map_rotation_deg,
+    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", 360))
+                  .environment.map_rotation_deg,
               360.0f);
-    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", -360)).environment.map_rotation_deg,
+    EXPECT_EQ(folder.load(set(with_map, "/environment/map_rotation_deg", -360))
+                  .environment.map_rotation_deg,
               -360.0f);
     for (double outside : {-360.5, 360.5}) {
         try {
@@ -668,15 +671,15 @@ TEST(scenario_loader, environment_map_rotation_is_in_range_and_needs_a_map) {
             EXPECT_EQ(e.problem(), "out of range; expected a number from -360 to 360");
         }
     }
-    expect_error(set(minimal(), "/environment/map_rotation_deg", 45),
-                 {"/environment/map_rotation_deg", "turns the environment map; give map too", "45"});
+    expect_error(
+        set(minimal(), "/environment/map_rotation_deg", 45),
+        {"/environment/map_rotation_deg", "turns the environment map; give map too", "45"});
 }
 
 TEST(scenario_loader, missing_files_are_named_at_their_json_path) {
     const scenario_folder folder("missing");
-    for (const std::string pointer :
-         {"/terrain/heightmap", "/species/0/model", "/populations/0/density_map",
-          "/environment/map"}) {
+    for (const std::string pointer : {"/terrain/heightmap", "/species/0/model",
+                                      "/populations/0/density_map", "/environment/map"}) {
         SCOPED_TRACE(pointer);
         try {
             folder.load(set(minimal(), pointer, "nope.glb"));
@@ -731,7 +734,8 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
 
 TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {
     json j = minimal();
-    j["lod"] = {{"representation", "billboard_clouds"}, {"cloud_distance_m", 45}, {"lighting", "pre_lit"}};
+    j["lod"] = {
+        {"representation", "billboard_clouds"}, {"cloud_distance_m", 45}, {"lighting", "pre_lit"}};
     const scenario s = load(j);
     EXPECT_EQ(s.lod.representation, "billboard_clouds");
     EXPECT_EQ(s.lod.cloud_distance_m, 45.0f);
@@ -763,10 +767,14 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
                  {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});
     expect_error(set(minimal(), "/lod/lighting", "shiny"),
-                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh", "\"shiny\""});
-    expect_error(set(minimal(), "/lod/sh_bands", 4), {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
-    expect_error(set(minimal(), "/species/0/lighting", "sh3"),
-                 {"/species/0/lighting", "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh", "\"sh3\""});
+                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh",
+                  "\"shiny\""});
+    expect_error(set(minimal(), "/lod/sh_bands", 4),
+                 {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
+    expect_error(
+        set(minimal(), "/species/0/lighting", "sh3"),
+        {"/species/0/lighting",
+         "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh", "\"sh3\""});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),
                  {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
     expect_error(set(minimal(), "/lod/splat_factor", 0.5),

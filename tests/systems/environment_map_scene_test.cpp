@@ -2,9 +2,9 @@
 // hands it to the environment, and project_environment turns it with the sun's azimuth.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
-#include <unistd.h>
 
 #include "components/environment.h"
 #include "components/sun.h"
@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 // A 64 x 32 map lit only in columns 40..55: the lune of azimuths 45..135 degrees around east
 // (systems/lighting/environment_map.h orientation).
 fs::path write_map(const std::string& name, int width, int height) {
-    const fs::path dir = fs::temp_directory_path() / ("sylva_environment_scene_" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("sylva_environment_scene_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const fs::path path = dir / name;
     std::vector<float> pixels;
@@ -29,7 +30,8 @@ fs::path write_map(const std::string& name, int width, int height) {
         for (int i = 0; i < width; ++i)
             for (int c = 0; c < 3; ++c) pixels.push_back(i >= 40 && i < 56 ? 1.0f : 0.0f);
     auto out = OIIO::ImageOutput::create(path.string());
-    EXPECT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT)));
+    EXPECT_TRUE(out &&
+                out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT)));
     EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
     out->close();
     return path;
@@ -79,7 +81,8 @@ TEST(environment_map_scene, a_map_that_is_not_two_to_one_fails_naming_the_file) 
         build_scene_assets(s, nullptr);
         ADD_FAILURE() << "built";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("square.exr: is 64x64 pixels"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("square.exr: is 64x64 pixels"), std::string::npos)
+            << e.what();
     }
 }
 

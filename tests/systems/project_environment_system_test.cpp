@@ -65,7 +65,8 @@ TEST(project_environment, azimuth_change_turns_the_last_integration_to_match_rep
         const float tolerance = 2e-5f * largest_coefficient(direct.c);
         for (std::size_t i = 0; i < 9; ++i) {
             for (int ch = 0; ch < 3; ++ch) {
-                EXPECT_NEAR(env.radiance_sh[i][ch], direct.c[i][ch], tolerance) << azimuth << " " << i;
+                EXPECT_NEAR(env.radiance_sh[i][ch], direct.c[i][ch], tolerance)
+                    << azimuth << " " << i;
                 EXPECT_NEAR(env.irradiance_sh[i][ch], direct_irradiance.c[i][ch], 4.0f * tolerance);
             }
         }

@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <unistd.h>
 
 #include "models/bake_cache.h"
 #include "models/radiance_transfer_io.h"
@@ -15,7 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct species_transfer : ::testing::Test {
-    fs::path root = fs::temp_directory_path() / ("sylva_species_transfer_" + std::to_string(::getpid()));
+    fs::path root =
+        fs::temp_directory_path() / ("sylva_species_transfer_" + std::to_string(::getpid()));
     species_settings grass;
     transfer_settings settings;
     void SetUp() override {
@@ -29,7 +30,8 @@ struct species_transfer : ::testing::Test {
 
 std::vector<std::byte> file_bytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
-    const std::vector<char> chars((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<char> chars((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
     const auto b = std::as_bytes(std::span(chars));
     return {b.begin(), b.end()};
 }
@@ -37,11 +39,14 @@ std::vector<std::byte> file_bytes(const fs::path& path) {
 TEST_F(species_transfer, levels_have_one_vector_per_vertex_and_a_cache_hit_gives_identical_bytes) {
     const plant_model model = load_species_model(grass, 5, nullptr);
     bake_cache cache(root);
-    const std::array<radiance_transfer, 3> baked = load_species_transfer(grass, 5, model, settings, &cache);
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(baked[i].receiver_count(), model.lods[i].vertices.size()) << i;
+    const std::array<radiance_transfer, 3> baked =
+        load_species_transfer(grass, 5, model, settings, &cache);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(baked[i].receiver_count(), model.lods[i].vertices.size()) << i;
     EXPECT_EQ(cache.misses(), 1u);
 
-    const std::array<radiance_transfer, 3> loaded = load_species_transfer(grass, 5, model, settings, &cache);
+    const std::array<radiance_transfer, 3> loaded =
+        load_species_transfer(grass, 5, model, settings, &cache);
     EXPECT_EQ(cache.hits(), 1u);
     const std::vector<std::byte> stored =
         file_bytes(cache.path_of("radiance_transfer", species_transfer_key(grass, 5, settings)));
@@ -67,10 +72,12 @@ TEST_F(species_transfer, points_and_line_vertices_get_one_vector_each_through_th
     const plant_model model = load_species_model(grass, 5, nullptr);
     const point_line_model point_lines = load_species_point_lines(grass, 5, model, nullptr);
     bake_cache cache(root);
-    const point_line_transfer baked = load_species_point_line_transfer(grass, 5, model, point_lines, settings, &cache);
+    const point_line_transfer baked =
+        load_species_point_line_transfer(grass, 5, model, point_lines, settings, &cache);
     EXPECT_EQ(baked.points.receiver_count(), point_lines.points.size());
     EXPECT_EQ(baked.lines.receiver_count(), point_lines.lines.size());
-    const point_line_transfer loaded = load_species_point_line_transfer(grass, 5, model, point_lines, settings, &cache);
+    const point_line_transfer loaded =
+        load_species_point_line_transfer(grass, 5, model, point_lines, settings, &cache);
     EXPECT_EQ(cache.hits(), 1u);
     EXPECT_EQ(loaded.points.front, baked.points.front);
     EXPECT_EQ(loaded.lines.back, baked.lines.back);

@@ -105,15 +105,16 @@ TEST(environment_map, nan_infinite_and_negative_texels_are_zeroed_and_counted) {
         if (i == 60 && j == 2) return glm::vec3(1.0f, 1.0f, -2.0f);
         return glm::vec3(1.0f);
     };
-    const environment_map map = load_environment_map(write_map("bad.exr", k_width, k_height, 3, bad));
+    const environment_map map =
+        load_environment_map(write_map("bad.exr", k_width, k_height, 3, bad));
     EXPECT_EQ(map.sanitised_texels, 3u);
     const auto zeroed = [&](int i, int j) {
         const glm::vec3 v = bad(i, j);
         return std::isfinite(v.x + v.y + v.z) && v.z >= 0.0f ? v : glm::vec3(0.0f);
     };
     const sh9_rgb got = project_environment_map(map);
-    const sh9_rgb expected =
-        project_environment_map(load_environment_map(write_map("zeroed.exr", k_width, k_height, 3, zeroed)));
+    const sh9_rgb expected = project_environment_map(
+        load_environment_map(write_map("zeroed.exr", k_width, k_height, 3, zeroed)));
     for (std::size_t i = 0; i < 9; ++i) EXPECT_EQ(got.c[i], expected.c[i]) << i;
 }
 

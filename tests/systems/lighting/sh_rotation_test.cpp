@@ -46,7 +46,8 @@ std::vector<glm::vec3> probe_directions() {
 
 void expect_coefficients_near(const sh9_rgb& a, const sh9_rgb& b, float tolerance) {
     for (std::size_t i = 0; i < 9; ++i)
-        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(a.c[i][ch], b.c[i][ch], tolerance) << i << "/" << ch;
+        for (int ch = 0; ch < 3; ++ch)
+            EXPECT_NEAR(a.c[i][ch], b.c[i][ch], tolerance) << i << "/" << ch;
 }
 
 TEST(rotate, moves_the_function_exactly_for_bands_zero_to_two) {
@@ -133,7 +134,8 @@ TEST(rotate, quarter_turn_about_up_by_hand) {
     sh9 xz{};
     xz[7] = 1.0f;
     const sh9 turned_xz = rotate(xz, r);
-    for (std::size_t i = 0; i < 9; ++i) EXPECT_NEAR(turned_xz[i], i == 7 ? -1.0f : 0.0f, 1e-6f) << i;
+    for (std::size_t i = 0; i < 9; ++i)
+        EXPECT_NEAR(turned_xz[i], i == 7 ? -1.0f : 0.0f, 1e-6f) << i;
 }
 
 TEST(rotate, stays_finite_for_extreme_coefficients) {
@@ -146,9 +148,12 @@ TEST(rotate, stays_finite_for_extreme_coefficients) {
         const sh9_rgb g = rotate(f, r);
         const sh9_rgb unit = rotate(asymmetric_coefficients(), r);
         for (std::size_t i = 0; i < 9; ++i) {
-            ASSERT_TRUE(std::isfinite(g.c[i].x) && std::isfinite(g.c[i].y) && std::isfinite(g.c[i].z));
-            if (scale > 0.0f) EXPECT_NEAR(g.c[i].x / scale, unit.c[i].x, 1e-5f) << scale << " " << i;
-            else EXPECT_EQ(g.c[i], glm::vec3(0.0f));
+            ASSERT_TRUE(std::isfinite(g.c[i].x) && std::isfinite(g.c[i].y) &&
+                        std::isfinite(g.c[i].z));
+            if (scale > 0.0f)
+                EXPECT_NEAR(g.c[i].x / scale, unit.c[i].x, 1e-5f) << scale << " " << i;
+            else
+                EXPECT_EQ(g.c[i], glm::vec3(0.0f));
         }
     }
     sh9 wild = {inf, -inf, nan, 3.4e38f, -3.4e38f, nan, inf, 1.0f, -inf};

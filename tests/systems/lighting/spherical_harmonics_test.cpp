@@ -125,15 +125,16 @@ TEST(project_radiance, first_four_coefficients_are_the_best_two_band_fit) {
     double gram[4][5] = {};  // augmented [G | b]
     for (int j = 0; j < n_theta; ++j) {
         const double theta = (j + 0.5) * std::numbers::pi / n_theta;
-        const double weight = std::sin(theta) * (std::numbers::pi / n_theta) *
-                              (2.0 * std::numbers::pi / n_phi);
+        const double weight =
+            std::sin(theta) * (std::numbers::pi / n_theta) * (2.0 * std::numbers::pi / n_phi);
         for (int i = 0; i < n_phi; ++i) {
             const double phi = (i + 0.5) * 2.0 * std::numbers::pi / n_phi;
             const glm::vec3 w(float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)),
                               float(-std::sin(theta) * std::cos(phi)));
             const sh9 y = sh_basis(w);
             for (int r = 0; r < 4; ++r) {
-                for (int k = 0; k < 4; ++k) gram[r][k] += weight * y[std::size_t(r)] * y[std::size_t(k)];
+                for (int k = 0; k < 4; ++k)
+                    gram[r][k] += weight * y[std::size_t(r)] * y[std::size_t(k)];
                 gram[r][4] += weight * y[std::size_t(r)] * f(w);
             }
         }

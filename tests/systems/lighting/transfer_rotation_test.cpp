@@ -33,7 +33,8 @@ TEST(transfer_rotation, matches_reprojecting_the_rotated_function) {
         };
         const sh9_rgb expected = project_radiance(rotated, 64, 128);
         const sh9 got = rotate_about_y(k_coefficients, yaw);
-        for (std::size_t i = 0; i < 9; ++i) EXPECT_NEAR(got[i], expected.c[i].x, 2e-3f) << "yaw " << yaw << " i " << i;
+        for (std::size_t i = 0; i < 9; ++i)
+            EXPECT_NEAR(got[i], expected.c[i].x, 2e-3f) << "yaw " << yaw << " i " << i;
     }
 }
 
