@@ -60,12 +60,20 @@ transfer_scene make_scene() {
     s.assets.meshes.push_back(
         with_transfer(horizontal_quad(1.5f, 1.0f, material_kind::bark), 1.0f));
     s.assets.meshes.push_back(horizontal_quad(2.5f, 6.0f, material_kind::bark));
+    // Mesh 6: a leaf card whose front faces down, seen from above on its back face. Nothing
+    // reaches its front; its back is unoccluded: lit only if the back transfer is the one used.
+    mesh_data leaf = horizontal_quad(1.5f, 1.0f, material_kind::leaf);
+    for (vertex& v : leaf.vertices) v.normal = {0.0f, -1.0f, 0.0f};
+    leaf.indices = {0, 1, 2, 0, 2, 3};
+    leaf.transfer.assign(leaf.vertices.size(), pack_transfer(sh9{}, clamped_cosine({0, 1, 0}, 1.0f)));
+    s.assets.meshes.push_back(leaf);
     const lighting_variant lit[] = {lighting_variant::normal_mapped,
                                     lighting_variant::normal_mapped,
                                     lighting_variant::sh,
                                     lighting_variant::sh,
                                     lighting_variant::sh,
-                                    lighting_variant::normal_mapped};
+                                    lighting_variant::normal_mapped,
+                                    lighting_variant::sh};
     for (std::size_t i = 0; i < s.assets.meshes.size(); ++i)
         s.assets.library.meshes.push_back({std::uint32_t(s.assets.meshes[i].triangle_count()),
                                            representation::mesh_full, primitive_kind::triangles,
@@ -119,14 +127,15 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
     // shadow); the roof 5 m higher and 2.9 m east of the last card, so the sun (60° up in the
     // east) throws its shadow onto that card while the camera, looking straight down, still
     // sees the card's western half.
-    const glm::dvec3 at[] = {{-8, 0, 0}, {-3, 0, 0}, {2, 0, 0}, {8, 0, 0}, {10.9, 0, 0}};
+    // The back-facing leaf card at (-3, 6).
+    const glm::dvec3 at[] = {{-8, 0, 0}, {-3, 0, 0}, {2, 0, 0}, {8, 0, 0}, {10.9, 0, 0}, {-3, 0, 6}};
     draw_list draws;
     for (const glm::dvec3& p : at) {
         instance_gpu i;
         i.position = glm::vec3(p - s.cam.position);
         draws.instances.push_back(i);
     }
-    for (std::uint16_t m = 1; m <= 5; ++m) {
+    for (std::uint16_t m = 1; m <= 6; ++m) {
         draws.batches.push_back({render_pass::opaque, m, std::uint32_t(m - 1), 1});
         draws.batches.push_back({render_pass::shadow_cascade_0, m, std::uint32_t(m - 1), 1});
     }
@@ -154,6 +163,11 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
     // The roof, outside the card's 2.2 m sphere, is another object: its shadow darkens the card.
     const float in_roof_shadow = luminance_at(image, s.cam, {7.0, 1.0, 0.6});
     EXPECT_LT(in_roof_shadow, 0.8f * by_transfer);
+    // A leaf seen on its back face is lit by its back transfer (gl_FrontFacing), here the
+    // unoccluded one: about as bright as the card with unoccluded transfer (its front, which
+    // receives nothing, transmits nothing either).
+    const float leaf_back = luminance_at(image, s.cam, {-3.0, 1.0, 6.6});
+    EXPECT_NEAR(leaf_back, by_transfer, 0.08f * by_transfer);
 }
 
 }  // namespace
