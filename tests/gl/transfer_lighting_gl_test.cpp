@@ -14,6 +14,7 @@
 #include "systems/lighting/sky_model.h"
 #include "systems/lighting/transfer_rotation.h"
 #include "systems/render/renderer.h"
+#include "models/transfer_pages.h"
 #include "systems/update_camera_system.h"
 
 namespace sylva {
@@ -127,7 +128,7 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
     // shadow); the roof 5 m higher and 2.9 m east of the last card, so the sun (60° up in the
     // east) throws its shadow onto that card while the camera, looking straight down, still
     // sees the card's western half.
-    // The back-facing leaf card at (-3, 6).
+    // The leaf card seen on its back face at (-3, 6).
     const glm::dvec3 at[] = {{-8, 0, 0}, {-3, 0, 0}, {2, 0, 0}, {8, 0, 0}, {10.9, 0, 0}, {-3, 0, 6}};
     draw_list draws;
     for (const glm::dvec3& p : at) {
@@ -168,6 +169,84 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
     // receives nothing, transmits nothing either).
     const float leaf_back = luminance_at(image, s.cam, {-3.0, 1.0, 6.6});
     EXPECT_NEAR(leaf_back, by_transfer, 0.08f * by_transfer);
+}
+
+// A crossed billboard's quad seen from behind shows its front image mirrored, so its transfer
+// must be mirrored through the quad's plane too: with the sun behind the viewer, the back view
+// is lit as the front view is with the sun behind that viewer.
+TEST(transfer_lighting, a_billboard_seen_from_behind_is_lit_by_its_mirrored_transfer) {
+    SYLVA_REQUIRE_GL();
+    render::context_options options;
+    options.width = options.height = 128;
+    auto context = render::create_context(options);
+    scene_assets assets;
+    assets.meshes.push_back(horizontal_quad(60.0f, -0.5f, material_kind::ground));
+    mesh_data quad;  // the x-y plane, front toward +z, as crossed_billboard's first quad
+    quad.vertices = {{{-1, 0, 0}, {0, 0, 1}, {0, 1}}, {{1, 0, 0}, {0, 0, 1}, {1, 1}},
+                     {{1, 2, 0}, {0, 0, 1}, {1, 0}}, {{-1, 2, 0}, {0, 0, 1}, {0, 0}}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    quad.submeshes = {{0, 6, material_kind::billboard}};
+    assets.meshes.push_back(quad);
+    assets.terrain_meshes = {0};
+    for (std::size_t i = 0; i < 2; ++i)
+        assets.library.meshes.push_back({2, representation::crossed_billboard, primitive_kind::triangles,
+                                         i == 0 ? lighting_variant::normal_mapped : lighting_variant::sh});
+    species_entry plant;
+    plant.lighting = lighting_variant::sh;
+    assets.library.species = {plant};
+    assets.leaf_textures = assets.bark_textures = assets.billboard_albedo = {solid(60)};
+    image_rgba8 normal = solid(128);
+    for (std::size_t i = 2; i < normal.texels.size(); i += 4) normal.texels[i] = 255;  // model +z
+    assets.billboard_normal = {normal};
+    assets.ground_texture = solid(60);
+    // The front side's transfer: unoccluded, facing +z; nothing from behind.
+    billboard_image image;
+    image.albedo = solid(60);
+    const sh9 front = clamped_cosine({0, 0, 1}, 1.0f);
+    for (std::size_t t = 0; t < 16 * 16; ++t)
+        for (std::size_t i = 0; i < k_billboard_transfer_floats; ++i) image.transfer.push_back(i < 9 ? front[i] : 0.0f);
+    assets.billboard_transfer = blank_transfer_pages(16, 16);
+    blit_transfer(assets.billboard_transfer, image, 0, 0);
+    render::renderer_settings settings;
+    settings.width = settings.height = 128;
+    settings.shadows = false;
+    render::renderer renderer(settings, assets);
+
+    environment sky;  // no sky light: the sun alone
+    sun light;
+    light.color = glm::vec3(1.0f);
+    light.intensity = 2.0f;
+    auto view_from = [&](double z, float sun_azimuth_deg) {
+        camera cam;
+        cam.position = {0.0, 1.0, z};
+        cam.forward = {0.0f, 0.0f, z > 0.0 ? -1.0f : 1.0f};
+        cam.aspect = 1.0f;
+        cam.fov_y = glm::radians(30.0f);
+        cam.viewport_height_px = 128.0f;
+        derive_camera_matrices(cam);
+        light.direction = sun_direction_from_angles(10.0f, sun_azimuth_deg);
+        const cascade_set cascades{};
+        draw_list draws;
+        instance_gpu i;
+        i.position = glm::vec3(-cam.position);
+        draws.instances = {i};
+        draws.batches = {{render_pass::opaque, 1, 0, 1}};
+        render::frame_view view;
+        view.view_camera = &cam;
+        view.sun_light = &light;
+        view.sky = &sky;
+        view.cascades = &cascades;
+        view.draws = &draws;
+        view.terrain_position = glm::vec3(-cam.position);
+        renderer.render(view);
+        renderer.finish();
+        return luminance_at(renderer.read_color(), cam, {0.0, 1.0, 0.0});
+    };
+    // Azimuth 180 is south (+z), 0 north (-z): each time the sun is behind the viewer.
+    const float front_view = view_from(6.0, 180.0f);
+    const float back_view = view_from(-6.0, 0.0f);
+    ASSERT_GT(front_view, 40.0f);
+    EXPECT_NEAR(back_view, front_view, 0.05f * front_view);
 }
 
 }  // namespace
