@@ -306,6 +306,14 @@ bench_configuration_spec billboard_clouds(const std::string& lighting) {
     return c;
 }
 
+// `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`.
+bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
+    c.name += "_sh";
+    c.description += ", every species lit by SH transfer (Behrendt 2005 §4)";
+    c.options.lighting = "sh";
+    return c;
+}
+
 }  // namespace
 
 std::vector<bench_configuration_spec> default_bench_configurations() {
@@ -351,18 +359,8 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     plants_only.options.policy.tile_sets = false;
     list.push_back(plants_only);
     // Behrendt 2005 §4: the same representations lit by precomputed radiance transfer.
-    bench_configuration_spec mesh_sh = mesh_lod(1.0);
-    mesh_sh.name = "mesh_lod_sh";
-    mesh_sh.description =
-        "the runtime's distance levels, every species lit by SH transfer (Behrendt 2005 §4)";
-    mesh_sh.options.lighting = "sh";
-    list.push_back(mesh_sh);
-    bench_configuration_spec points_sh = points_lines(1.0f);
-    points_sh.name = "points_lines_sh";
-    points_sh.description =
-        "points and lines, d' = 1 px, every species lit by SH transfer (Behrendt 2005 §4)";
-    points_sh.options.lighting = "sh";
-    list.push_back(points_sh);
+    list.push_back(lit_by_transfer(mesh_lod(1.0)));
+    list.push_back(lit_by_transfer(points_lines(1.0f)));
     return list;
 }
 

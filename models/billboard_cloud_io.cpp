@@ -70,8 +70,7 @@ std::vector<std::byte> serialize_billboard_cloud(const billboard_cloud& cloud) {
     out.pod(cloud.atlas_height);
     out.pod(k_cloud_atlas_pages);
     for (const image_rgba8& page : cloud.pages) write_image(out, page);
-    out.pod(std::uint32_t(cloud.transfer_pages.size()));
-    for (const image_rgba8& page : cloud.transfer_pages) write_image(out, page);
+    write_transfer_pages(out, cloud.transfer_pages);
     return std::move(out.bytes());
 }
 
@@ -124,17 +123,7 @@ billboard_cloud deserialize_billboard_cloud(std::span<const std::byte> bytes) {
         if (page.width != cloud.atlas_width || page.height != cloud.atlas_height)
             throw std::runtime_error("bake cache entry: billboard cloud atlas pages differ in size");
     }
-    const auto transfer_pages = in.pod<std::uint32_t>();
-    if (transfer_pages != 0 && transfer_pages != k_transfer_pages)
-        throw std::runtime_error("bake cache entry: billboard cloud has " +
-                                 std::to_string(transfer_pages) + " transfer pages");
-    cloud.transfer_pages.resize(transfer_pages);
-    for (image_rgba8& page : cloud.transfer_pages) {
-        page = read_image(in);
-        if (page.width != cloud.atlas_width || page.height != cloud.atlas_height)
-            throw std::runtime_error(
-                "bake cache entry: billboard cloud transfer pages differ in size");
-    }
+    cloud.transfer_pages = read_transfer_pages(in, cloud.atlas_width, cloud.atlas_height, "billboard cloud");
     if (!in.at_end()) throw std::runtime_error("bake cache entry: trailing bytes");
     return cloud;
 }

@@ -21,8 +21,7 @@ std::vector<std::byte> serialize_crossed_billboard(const crossed_billboard& bill
     write_mesh(out, billboard.mesh);
     write_image(out, billboard.albedo);
     write_image(out, billboard.normal);
-    out.pod(std::uint32_t(billboard.transfer_pages.size()));
-    for (const image_rgba8& page : billboard.transfer_pages) write_image(out, page);
+    write_transfer_pages(out, billboard.transfer_pages);
     return std::move(out.bytes());
 }
 
@@ -38,17 +37,8 @@ crossed_billboard deserialize_crossed_billboard(std::span<const std::byte> bytes
     billboard.normal = read_image(in);
     if (billboard.albedo.width != billboard.normal.width || billboard.albedo.height != billboard.normal.height)
         throw std::runtime_error("bake cache entry: billboard albedo and normal atlases differ in size");
-    const auto pages = in.pod<std::uint32_t>();
-    if (pages != 0 && pages != k_transfer_pages)
-        throw std::runtime_error("bake cache entry: crossed billboard has " +
-                                 std::to_string(pages) + " transfer pages");
-    billboard.transfer_pages.resize(pages);
-    for (image_rgba8& page : billboard.transfer_pages) {
-        page = read_image(in);
-        if (page.width != billboard.albedo.width || page.height != billboard.albedo.height)
-            throw std::runtime_error(
-                "bake cache entry: crossed billboard transfer pages differ in size");
-    }
+    billboard.transfer_pages =
+        read_transfer_pages(in, billboard.albedo.width, billboard.albedo.height, "crossed billboard");
     if (!in.at_end()) throw std::runtime_error("bake cache entry: trailing bytes");
     return billboard;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/mesh_io.h"
+
 namespace sylva {
 
 std::uint8_t encode_transfer(float t) {
@@ -41,6 +43,25 @@ void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image
                 pages[i / 4].at(x0 + x, y0 + y)[i % 4] = encode_transfer(value);
             }
         }
+}
+
+void write_transfer_pages(binary_writer& out, const std::vector<image_rgba8>& pages) {
+    out.pod(std::uint32_t(pages.size()));
+    for (const image_rgba8& page : pages) write_image(out, page);
+}
+
+std::vector<image_rgba8> read_transfer_pages(binary_reader& in, std::uint32_t width, std::uint32_t height,
+                                             const std::string& owner) {
+    const auto count = in.pod<std::uint32_t>();
+    if (count != 0 && count != k_transfer_pages)
+        throw std::runtime_error("bake cache entry: " + owner + " has " + std::to_string(count) + " transfer pages");
+    std::vector<image_rgba8> pages(count);
+    for (image_rgba8& page : pages) {
+        page = read_image(in);
+        if (page.width != width || page.height != height)
+            throw std::runtime_error("bake cache entry: " + owner + " transfer pages differ in size from its atlas");
+    }
+    return pages;
 }
 
 }  // namespace sylva

@@ -6,8 +6,10 @@
 // the transfer of the side the billboard's viewer sees, 9..17 of the other side, each encoded
 // (T / k_transfer_page_range) * 0.5 + 0.5 in 8 bits. Zero transfer is byte 128.
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "models/bake_cache.h"
 #include "models/billboard_bake.h"
 #include "models/image.h"
 
@@ -29,5 +31,11 @@ std::vector<image_rgba8> blank_transfer_pages(std::uint32_t width, std::uint32_t
 // source) into `pages` with its top-left texel at (x0, y0).
 void blit_transfer(std::vector<image_rgba8>& pages, const billboard_image& image, std::uint32_t x0,
                    std::uint32_t y0);
+
+// Bake-cache form: a count (0 or k_transfer_pages), then the pages. read_transfer_pages throws
+// std::runtime_error naming `owner` on another count or a page not width x height.
+void write_transfer_pages(binary_writer& out, const std::vector<image_rgba8>& pages);
+std::vector<image_rgba8> read_transfer_pages(binary_reader& in, std::uint32_t width, std::uint32_t height,
+                                             const std::string& owner);
 
 }  // namespace sylva

@@ -20,6 +20,11 @@ namespace {
 
 constexpr crossed_billboard_settings k_billboard_settings{k_species_billboard_resolution, 4};
 
+// A billboard bake with transfer pages depends on the transfer too (species_transfer_key).
+std::uint64_t keyed_on_transfer(std::uint64_t key, const radiance_transfer* transfer, std::uint64_t transfer_key) {
+    return transfer ? hash_string("transfer/" + std::to_string(transfer_key), key) : key;
+}
+
 // Loads through the cache; a damaged or outdated entry is baked again and replaced.
 template <class T, class Bake, class Read>
 T load_cached(bake_cache* cache, std::string_view kind, std::uint64_t key, const Bake& bake, const Read& read) {
@@ -94,8 +99,7 @@ crossed_billboard load_species_billboard(const species_settings& species, std::u
         return serialize_crossed_billboard(
             bake_crossed_billboard(model, k_billboard_settings, transfer));
     };
-    std::uint64_t key = species_billboard_key(species, seed);
-    if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
+    const std::uint64_t key = keyed_on_transfer(species_billboard_key(species, seed), transfer, transfer_key);
     return load_cached<crossed_billboard>(
         cache, "billboards", key, bake,
         [](std::span<const std::byte> bytes) { return deserialize_crossed_billboard(bytes); });
@@ -114,8 +118,8 @@ billboard_cloud load_species_billboard_cloud(const species_settings& species, st
         return serialize_billboard_cloud(
             bake_billboard_cloud(model, default_billboard_cloud_settings(model), transfer));
     };
-    std::uint64_t key = species_billboard_cloud_key(species, seed);
-    if (transfer) key = hash_string("transfer/" + std::to_string(transfer_key), key);
+    const std::uint64_t key =
+        keyed_on_transfer(species_billboard_cloud_key(species, seed), transfer, transfer_key);
     return load_cached<billboard_cloud>(
         cache, "billboard_clouds", key, bake,
         [](std::span<const std::byte> bytes) { return deserialize_billboard_cloud(bytes); });

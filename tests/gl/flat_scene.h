@@ -1,6 +1,6 @@
 #pragma once
-// Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, and
-// the luminance the camera sees at a world point.
+// Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, one
+// rendered frame, and the luminance the camera sees at a world point.
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <vector>
@@ -8,6 +8,7 @@
 #include "components/camera.h"
 #include "models/image.h"
 #include "models/mesh.h"
+#include "systems/render/renderer.h"
 
 namespace sylva::testing {
 
@@ -41,6 +42,21 @@ inline float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec
     const auto py = std::uint32_t((0.5f - ndc.y * 0.5f) * float(image.height));
     const std::uint8_t* p = image.at(px, py);
     return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+// Renders one frame of `draws` (the terrain instance at the world origin) and reads it back.
+inline image_rgba8 render_frame(render::renderer& renderer, const camera& cam, const sun& light, const environment& sky,
+                                const cascade_set& cascades, const draw_list& draws) {
+    render::frame_view view;
+    view.view_camera = &cam;
+    view.sun_light = &light;
+    view.sky = &sky;
+    view.cascades = &cascades;
+    view.draws = &draws;
+    view.terrain_position = glm::vec3(-cam.position);
+    renderer.render(view);
+    renderer.finish();
+    return renderer.read_color();
 }
 
 }  // namespace sylva::testing

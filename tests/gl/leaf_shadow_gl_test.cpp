@@ -18,6 +18,7 @@ namespace {
 
 using testing::horizontal_quad;
 using testing::luminance_at;
+using testing::render_frame;
 using testing::solid;
 
 // Opaque where u < 0.5 (west, -x), fully transparent where u >= 0.5.
@@ -69,16 +70,7 @@ TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
     draws.instances = {leaf};
     draws.batches = {{render_pass::opaque, 1, 0, 1}, {render_pass::shadow_cascade_0, 1, 0, 1}};
 
-    render::frame_view view;
-    view.view_camera = &cam;
-    view.sun_light = &light;
-    view.sky = &sky;
-    view.cascades = &cascades;
-    view.draws = &draws;
-    view.terrain_position = glm::vec3(-cam.position);
-    renderer.render(view);
-    renderer.finish();
-    const image_rgba8 image = renderer.read_color();
+    const image_rgba8 image = render_frame(renderer, cam, light, sky, cascades, draws);
 
     // The card's shadow falls 5 m west (-x): x in [-7, -3], its opaque half's in [-7, -5].
     const float open_ground = luminance_at(image, cam, {-12.0, 0.0, 0.0});
@@ -88,9 +80,8 @@ TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
     EXPECT_GT(under_transparent_half, 0.95f * open_ground);
     // And the same card without its shadow pass batch casts nothing.
     draws.batches = {{render_pass::opaque, 1, 0, 1}};
-    renderer.render(view);
-    renderer.finish();
-    EXPECT_GT(luminance_at(renderer.read_color(), cam, {-6.0, 0.0, 0.0}), 0.95f * open_ground);
+    EXPECT_GT(luminance_at(render_frame(renderer, cam, light, sky, cascades, draws), cam, {-6.0, 0.0, 0.0}),
+              0.95f * open_ground);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ namespace {
 
 using testing::horizontal_quad;
 using testing::luminance_at;
+using testing::render_frame;
 using testing::solid;
 
 // Ramamoorthi & Hanrahan 2001, Eqs. 7-9: the clamped cosine about n has band-l coefficients
@@ -143,16 +144,7 @@ TEST(transfer_lighting, unoccluded_transfer_matches_normal_lighting_and_less_tra
     const cascade_set cascades =
         fit_cascades(s.cam.view, s.cam.fov_y, s.cam.aspect, s.cam.near_plane, 60.0f,
                      s.light.direction, 1, 0.5f, 2048, 50.0f, s.cam.position);
-    render::frame_view view;
-    view.view_camera = &s.cam;
-    view.sun_light = &s.light;
-    view.sky = &s.sky;
-    view.cascades = &cascades;
-    view.draws = &draws;
-    view.terrain_position = glm::vec3(-s.cam.position);
-    renderer.render(view);
-    renderer.finish();
-    const image_rgba8 image = renderer.read_color();
+    const image_rgba8 image = render_frame(renderer, s.cam, s.light, s.sky, cascades, draws);
 
     const float normal_lit = luminance_at(image, s.cam, {-8.0, 1.0, 0.6});
     const float by_transfer = luminance_at(image, s.cam, {-3.0, 1.0, 0.6});
@@ -231,16 +223,7 @@ TEST(transfer_lighting, a_billboard_seen_from_behind_is_lit_by_its_mirrored_tran
         i.position = glm::vec3(-cam.position);
         draws.instances = {i};
         draws.batches = {{render_pass::opaque, 1, 0, 1}};
-        render::frame_view view;
-        view.view_camera = &cam;
-        view.sun_light = &light;
-        view.sky = &sky;
-        view.cascades = &cascades;
-        view.draws = &draws;
-        view.terrain_position = glm::vec3(-cam.position);
-        renderer.render(view);
-        renderer.finish();
-        return luminance_at(renderer.read_color(), cam, {0.0, 1.0, 0.0});
+        return luminance_at(render_frame(renderer, cam, light, sky, cascades, draws), cam, {0.0, 1.0, 0.0});
     };
     // Azimuth 180 is south (+z), 0 north (-z): each time the sun is behind the viewer.
     const float front_view = view_from(6.0, 180.0f);
