@@ -45,6 +45,13 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "lod.sample_distance_px; larger is faster and coarser)")
         ->check(CLI::Range(0.05f, 64.0f));
     command
+        .add_option(
+            "--splats", options.splats,
+            "How point samples are drawn (overrides lod.splats): soft (Gaussian splats that "
+            "each deposit the leaf area they stand for, over a visibility pass; smoother and "
+            "steadier far foliage) or opaque (Deussen 2002's opaque squares)")
+        ->check(CLI::IsMember({"soft", "opaque"}));
+    command
         .add_option("--primitive-budget", options.primitive_budget,
                     "Adapt d' every frame to draw about this many triangle equivalents (points_lines; "
                     "Deussen 2002 §5.4; overrides lod.primitive_budget)")
@@ -73,6 +80,7 @@ scenario load_with_overrides(const scenario_options& options) {
         for (species_settings& species : s.species) species.lighting = "scenario";
     }
     if (options.sample_distance_px) s.lod.sample_distance_px = *options.sample_distance_px;
+    if (options.splats) s.lod.splats = *options.splats;
     if (options.primitive_budget) {
         s.lod.primitive_budget = *options.primitive_budget;
         s.lod.target_frame_ms = 0.0;

@@ -19,6 +19,7 @@ struct scenario_options {
     std::optional<std::string> representation;
     std::optional<std::string> lighting;
     std::optional<float> sample_distance_px;
+    std::optional<std::string> splats;
     std::optional<double> primitive_budget;
     std::optional<double> target_frame_ms;
 };

@@ -69,7 +69,8 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
     if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels &&
         s.lod.representation == "points_lines") {
         policy.mode = lod_policy::kind::points_lines;
-        policy.points = {s.lod.sample_distance_px, s.lod.splat_factor};
+        policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
+                         s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft};
     }
     if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels &&
         s.lod.representation == "billboard_clouds") {
@@ -85,11 +86,15 @@ primitive_costs device_costs(render::renderer& r, const render::gl_context& cont
     render::calibration_settings settings;
     settings.sample_distance_px = policy.points.sample_distance_px;
     settings.splat_factor = policy.points.splat_factor;
+    settings.splats = policy.points.splats;
     std::uint64_t key = hash_string("primitive_costs/1");
     key = hash_string(context.renderer() + "/" + context.version(), key);
-    key = hash_string(std::to_string(r.settings().width) + "x" + std::to_string(r.settings().height) + "/" +
-                          std::to_string(settings.sample_distance_px) + "/" + std::to_string(settings.splat_factor),
-                      key);
+    key =
+        hash_string(std::to_string(r.settings().width) + "x" + std::to_string(r.settings().height) +
+                        "/" + std::to_string(settings.sample_distance_px) + "/" +
+                        std::to_string(settings.splat_factor) +
+                        (settings.splats == splat_style::soft ? "/soft" : ""),
+                    key);
     auto measure = [&] {
         const render::calibration_result result = render::calibrate_primitive_costs(r, settings);
         binary_writer out;

@@ -134,6 +134,9 @@
 //                                               cross-faded without sorting over ±15 %)
 //     sample_distance_px number  1      0.05 .. 64; d', the screen distance between samples
 //     splat_factor       number  1.3    1 .. 4; c_p of Eq. 1 (the paper: 1.2 .. 1.5)
+//     splats             string  "soft" "soft" (Gaussian splats that each deposit the leaf area
+//                                       they stand for, composited over a visibility pass;
+//                                       our extension) or "opaque" (the paper's opaque squares)
 //     primitive_budget   number  0      0 .. 1e9; with points_lines, d' is adapted every frame
 //                                       to draw about this many triangle equivalents (points
 //                                       and lines weighed by their cost; Deussen 2002 §5.4);
@@ -299,6 +302,8 @@ inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_lev
                                                                         "billboard_clouds"};
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
 inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
+// How `lod.splats` may draw point samples (systems/point_line_lod.h splat_style).
+inline constexpr std::array<std::string_view, 2> k_splat_styles{"soft", "opaque"};
 // A species' `lighting`: "scenario" takes the lod section's.
 inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped",
                                                                      "pre_lit", "sh"};
@@ -307,6 +312,7 @@ struct lod_settings {
     std::string representation = "mesh_levels";
     float sample_distance_px = 1.0f;
     float splat_factor = 1.3f;
+    std::string splats = "soft";  // one of k_splat_styles
     double primitive_budget = 0.0;
     double target_frame_ms = 0.0;
     float cloud_distance_m = 30.0f;

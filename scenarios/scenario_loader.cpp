@@ -332,6 +332,7 @@ const field_table<lod_settings>& lod_fields() {
                                   .number("sample_distance_px", &t::sample_distance_px,
                                           {0.05, 64.0})
                                   .number("splat_factor", &t::splat_factor, {1.0, 4.0})
+                                  .choice("splats", &t::splats, k_splat_styles)
                                   .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
                                   .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
                                   .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})

@@ -13,6 +13,9 @@
 // and lines from the per-vertex dot products surface.vert made, billboard clouds and crossed
 // billboards from the transfer pages of their atlases ("Gouraud-interpolated vectors in an
 // extra texture").
+// SPLAT_VISIBILITY (depth only, and the instance for the ID buffer) and SOFT_SPLATS (a Gaussian
+// of peak opacity u_soft_alpha, blended) are the two passes of soft splats
+// (systems/point_line_lod.h soft_splat_peak_alpha).
 // PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
 // each sample takes the texture's colour where it was baked (a slightly filtered level: a
 // splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
@@ -99,8 +102,11 @@ layout(binding = 0) uniform sampler2DArray u_albedo;
 #include "shading.glsl"
 layout(location = 0) out vec4 out_color;
 #endif
-#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS) && !defined(SPLAT_VISIBILITY)
 flat in vec3 v_color;  // shaded per point in surface.vert
+#endif
+#ifdef SOFT_SPLATS
+uniform float u_soft_alpha;  // the Gaussian's peak opacity
 #endif
 
 #if defined(PRIMITIVE_POINTS) || defined(PRIMITIVE_LINES)
@@ -118,10 +124,23 @@ void main() {
 #endif
     if (dissolve_hash(cell, floatBitsToUint(v_tint)) >= v_fade) discard;
 #endif
-#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+#ifdef SPLAT_VISIBILITY
+#ifdef WRITE_ID
+    out_id = v_instance + 1u;
+#endif
+    return;
+#endif
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS) && !defined(SPLAT_VISIBILITY)
+#ifdef SOFT_SPLATS
+    // exp(-2·|pc|²) over pc in [-1, 1]²: σ is a quarter of the splat's side; its mean over the
+    // square is k_soft_splat_kernel_mean (systems/point_line_lod.h).
+    vec2 pc = gl_PointCoord * 2.0 - 1.0;
+    out_color = vec4(v_color, u_soft_alpha * exp(-2.0 * dot(pc, pc)));
+#else
     out_color = vec4(v_color, 1.0);
 #ifdef WRITE_ID
     out_id = v_instance + 1u;
+#endif
 #endif
     return;
 #endif

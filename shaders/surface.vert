@@ -5,6 +5,8 @@
 // PRIMITIVE_POINTS draws the point representation (Deussen 2002 §5.1): each point a square
 // splat of u_splat_px pixels on screen; in a shadow cascade the same world footprint (the
 // splat's image-plane size times the distance from the eye) in shadow-map texels.
+// SPLAT_VISIBILITY draws them as opaque splats into depth only, pushed back along the view ray,
+// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h).
 // PRIMITIVE_LINES hands lines to line.geom, which widens them to d' pixels.
 // SH_TRANSFER lights by the precomputed radiance transfer streamed with the vertices
 // (transfer.glsl, Behrendt 2005 §4): here the transfer is turned by the instance's yaw and
@@ -47,7 +49,7 @@ out vec3 v_sh_sky_back;
 #ifdef SHADOW_PASS
 uniform int u_cascade;
 #endif
-#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS)
+#if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS) && !defined(SPLAT_VISIBILITY)
 // A splat is one sample: shaded here once (shading.glsl), flat across its pixels.
 #include "shading.glsl"
 layout(binding = 0) uniform sampler2DArray u_albedo;
@@ -57,6 +59,11 @@ flat out vec3 v_color;
 uniform float u_splat_px;     // splat side on screen, pixels
 uniform float u_splat_plane;  // the same on the image plane at distance one
 uniform float u_splat_texels; // smallest splat in a shadow map, texels (√c_p: c_p texels' area)
+#endif
+#ifdef SPLAT_VISIBILITY
+// ε / distance: k_soft_splat_depth_offset splat sides on the image plane at distance one, so the
+// splat moves back ε = that x its distance along its view ray.
+uniform float u_depth_push;
 #endif
 
 out vec3 v_position;  // camera-relative world position
@@ -119,7 +126,10 @@ void main() {
 #endif
 #endif
 #endif
-#ifdef SHADOW_PASS
+#if defined(SPLAT_VISIBILITY)
+    gl_Position = u_view_projection * vec4(world * (1.0 + u_depth_push), 1.0);
+    gl_PointSize = u_splat_px;
+#elif defined(SHADOW_PASS)
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
     gl_PointSize = max(u_splat_texels, u_splat_plane * length(world) / u_cascade_texel_world[u_cascade]);

@@ -7,7 +7,7 @@
 namespace sylva {
 
 struct frame_stats {
-    std::array<double, 3> gpu_pass_ms{};  // shadow, opaque, sky (render::k_gpu_pass_names)
+    std::array<double, 4> gpu_pass_ms{};  // shadow, opaque, sky, splats (render::k_gpu_pass_names)
     double gpu_ms = 0.0;
     double submit_cpu_ms = 0.0;  // issuing the frame's GL commands (includes driver work)
     // Sylva's own part of it: uniforms, instance records and indirect commands written to the

@@ -100,4 +100,14 @@ float splat_size_px(const point_line_quality& q) {
     return q.sample_distance_px * std::sqrt(std::max(q.splat_factor, 0.0f));
 }
 
+float soft_splat_size_px(const point_line_quality& q) {
+    return k_soft_splat_footprint * splat_size_px(q);
+}
+
+float soft_splat_peak_alpha(const point_line_quality& q) {
+    const double c_p = std::max(double(q.splat_factor), 1e-6);
+    const double k = double(k_soft_splat_footprint);
+    return float(std::min(1.0, 1.0 / (k_soft_splat_kernel_mean * k * k * c_p * c_p)));
+}
+
 }  // namespace sylva

@@ -12,6 +12,11 @@
 
 namespace sylva {
 
+// Opaque: §5.1's splats, squares of side d'·√c_p drawn opaque with depth writes. Soft (our
+// extension, see soft_splat_peak_alpha): Gaussian splats that each deposit the projected leaf
+// area they stand for, composited over a visibility pass.
+enum class splat_style : std::uint8_t { soft, opaque };
+
 // What the viewer asks of the point/line representation.
 struct point_line_quality {
     float sample_distance_px = 1.0f;  // d': mean distance between neighbouring samples on screen
@@ -19,6 +24,8 @@ struct point_line_quality {
     // Round each plant's counts with its own offset (sample_dither) instead of down: a field of
     // small plants then draws the samples Eq. 1 asks for in total, not fewer.
     bool dither = true;
+    // How a splat is drawn: soft (our extension, below) or opaque squares as in the paper.
+    splat_style splats = splat_style::soft;
 };
 
 // d' in image-plane units (the image plane at distance one) from d' in pixels.
@@ -117,5 +124,30 @@ inline constexpr double k_shadow_sample_spacing = 2.0;
 // Splat side in pixels: each splat covers c_p·d'² (the splat factor enlarges splats so the
 // random samples leave no holes, §5.1 and §5.4, Fig. 5c).
 float splat_size_px(const point_line_quality& q);
+
+// Soft splats (our extension of §5.1). An opaque splat of c_p·d'² pixels stands for only d'²/c_p
+// of projected leaf area (Eq. 1: p = c_p·A'/d'²), so an opaque far crown is a hard-edged
+// binary pattern of whichever leaf each splat landed on, and it flickers as splats snap to pixel
+// centres. A soft splat instead spreads exactly its own leaf area, d'²/c_p, over a Gaussian
+// footprint K times the opaque side (σ = a quarter of the footprint), as opacity. Composited
+// "over" each other, n such splats leave 1 − Π(1 − α_i) ≈ 1 − exp(−Σα_i) of a pixel covered:
+// the gap fraction of randomly placed leaves (Beer–Lambert), which is what the pixel's
+// supersampled reference averages. Which splats composite is decided first by a depth-only
+// visibility pass of opaque splats pushed back by ε along the view ray, as in two-pass surface
+// splatting (Pfister et al. 2000 "Surfels" §5.1; Botsch, Hornung, Zwicker, Kobbelt 2005 §3):
+// splats within ε of the nearest surface blend, those behind it do not.
+inline constexpr float k_soft_splat_footprint = 2.0f;     // K: soft splat side / opaque splat side
+inline constexpr float k_soft_splat_depth_offset = 5.0f;  // ε, in opaque splat sides
+// ∫∫ exp(−2(u² + v²)) du dv over u, v in [−1, 1] divided by its square's area 4: the Gaussian's
+// mean over its square footprint, (√(π/8)·erf(√2))², as the shader evaluates it (surface.frag).
+inline constexpr double k_soft_splat_kernel_mean = 0.3577763;
+
+// Soft splat side in pixels: K·d'·√c_p.
+float soft_splat_size_px(const point_line_quality& q);
+
+// The Gaussian's peak opacity such that a soft splat deposits d'²/c_p pixels of coverage:
+// α₀ = (d'²/c_p) / (k_soft_splat_kernel_mean·S²) with S = K·d'·√c_p, i.e. 1/(mean·K²·c_p²)
+// (0.4135 for K = 2, c_p = 1.3), at most 1.
+float soft_splat_peak_alpha(const point_line_quality& q);
 
 }  // namespace sylva

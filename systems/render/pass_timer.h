@@ -9,9 +9,10 @@
 
 namespace sylva::render {
 
-enum class gpu_pass : int { shadow = 0, opaque, sky, count };
+// `splats`: soft point splats (visibility and blend), drawn after the sky they composite over.
+enum class gpu_pass : int { shadow = 0, opaque, sky, splats, count };
 constexpr std::array<std::string_view, static_cast<int>(gpu_pass::count)> k_gpu_pass_names = {
-    "shadow", "opaque", "sky"};
+    "shadow", "opaque", "sky", "splats"};
 
 class pass_timer {
 public:

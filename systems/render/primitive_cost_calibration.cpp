@@ -81,7 +81,12 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     view.cascades = &cascades;
     view.draws = &list;
     view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
-    view.splat_px = splat_size_px({settings.sample_distance_px, settings.splat_factor});
+    const point_line_quality quality{settings.sample_distance_px, settings.splat_factor, true,
+                                     settings.splats};
+    view.splat_px = splat_size_px(quality);
+    view.soft_splats = settings.splats == splat_style::soft;
+    view.soft_splat_px = soft_splat_size_px(quality);
+    view.soft_splat_alpha = soft_splat_peak_alpha(quality);
     view.splat_plane = float(image_plane_units(view.splat_px, cam.fov_y, cam.viewport_height_px));
     view.line_width_px = settings.sample_distance_px;
 
@@ -93,7 +98,9 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
             list.batches.push_back({render_pass::opaque, meshes[std::size_t(which)], 0, 1, 0});
         }
         r.render(view);
-        return r.finish().gpu_pass_ms[std::size_t(gpu_pass::opaque)];
+        const frame_stats stats = r.finish();
+        return stats.gpu_pass_ms[std::size_t(gpu_pass::opaque)] +
+               stats.gpu_pass_ms[std::size_t(gpu_pass::splats)];
     };
     time_opaque(0);  // compile the programs and touch the buffers before timing anything
     time_opaque(1);

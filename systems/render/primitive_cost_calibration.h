@@ -5,7 +5,8 @@
 // selection that trusted the paper would pick representations that are slower where Sylva runs.
 //
 // The calibration draws the same number of leaf-sized triangles, d'-sized splats and d'-wide
-// lines through the renderer's own opaque pass (the programs every frame uses), in front of a
+// lines through the renderer's own opaque pass (the programs every frame uses; soft splats add
+// their visibility and blend passes, drawn after the sky), in front of a
 // camera like the scenario's, times each on the GPU timer, subtracts an empty frame, and takes
 // the median of a few repetitions. Ratios are rounded to quarter steps so noise does not move
 // thresholds from run to run; the result is cached per device and setting by the caller.
@@ -19,6 +20,7 @@ struct calibration_settings {
     int repetitions = 5;
     float sample_distance_px = 1.0f;  // d': splat and line size
     float splat_factor = 1.3f;
+    splat_style splats = splat_style::soft;  // soft splats are timed with their two passes
     float triangle_px = 4.0f;  // edge length of the calibration triangles on screen
 };
 

@@ -11,6 +11,7 @@
 #include "systems/cull_system.h"
 #include "systems/lighting/environment_map.h"
 #include "systems/lighting/sky_model.h"
+#include "systems/point_line_lod.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/frame_uniforms.h"
 #include "systems/render/textures.h"
@@ -191,9 +192,19 @@ void renderer::write_species_block(const scene_assets& assets) {
 }
 
 GLuint renderer::surface_program(material_kind material, bool shadow, primitive_kind primitive,
-                                 lighting_variant lighting) {
+                                 lighting_variant lighting, sample_pass samples) {
     program_source source{"surface.vert", "surface.frag", {}, {}};
     if (primitive == primitive_kind::points) source.defines.push_back("PRIMITIVE_POINTS");
+    if (samples == sample_pass::splat_visibility) {
+        // Depth only (and the ID buffer's instance, which the blend pass does not write).
+        source.defines.push_back("SPLAT_VISIBILITY");
+        if (m_settings.id_buffer)
+            source.defines.push_back("WRITE_ID");
+        else
+            source.fragment.clear();
+        return m_shaders.program(source);
+    }
+    if (samples == sample_pass::soft_splats) source.defines.push_back("SOFT_SPLATS");
     if (primitive == primitive_kind::lines) {
         source.defines.push_back("PRIMITIVE_LINES");
         // d'-wide quads; GL's own one-pixel lines where d' is about a pixel, and in the shadow
@@ -406,7 +417,7 @@ void renderer::draw_shadow_cascades() {
             }
         }
         draw_clouds(groups, c);
-        draw_samples(groups, c);
+        draw_samples(groups, sample_pass::cascade, c);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     m_timer.end();
@@ -447,27 +458,68 @@ void renderer::draw_opaque() {
         }
     }
     draw_clouds(groups, -1);
-    draw_samples(groups, -1);
+    draw_samples(groups, sample_pass::view);
+    m_timer.end();
+}
+
+// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it: opaque
+// splats pushed back by ε into depth only, then the Gaussians, depth-tested against that and
+// blended without writing depth. Only the first pass writes the ID buffer (the front splat's
+// instance, as opaque splats would); the blend pass keeps the target's alpha.
+void renderer::draw_soft_splats() {
+    const auto& groups = m_commands[std::size_t(render_pass::opaque)];
+    bool any = false;
+    for (const lighting_variant l : k_all_lightings)
+        for (const material_kind m : {material_kind::bark, material_kind::leaf})
+            any = any || groups[group_of(m, primitive_kind::points, l)].count > 0;
+    if (!any) return;
+    m_timer.begin(gpu_pass::splats);
+    glDepthMask(GL_TRUE);
+    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    m_target.draw_ids(true);
+    draw_samples(groups, sample_pass::splat_visibility);
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    m_target.draw_ids(false);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    draw_samples(groups, sample_pass::soft_splats);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     m_timer.end();
 }
 
 // The point and line representation's samples (Deussen 2002 §5.1, §5.2) of bark and leaf
-// parts, in a shadow cascade (`cascade` >= 0) or the view (-1).
-void renderer::draw_samples(const pass_commands& groups, int cascade) {
-    const bool shadow = cascade >= 0;
+// parts: into shadow cascade `cascade`, the view's opaque pass, or one of the two passes of
+// soft splats (draw_soft_splats).
+void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int cascade) {
+    const bool shadow = pass == sample_pass::cascade;
+    const bool soft = pass == sample_pass::splat_visibility || pass == sample_pass::soft_splats;
     for (const lighting_variant lighting : k_all_lightings)
         for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
+            // Soft passes draw points only; the view's opaque samples leave soft points out.
+            if (soft && primitive != primitive_kind::points) continue;
+            if (pass == sample_pass::view && primitive == primitive_kind::points && m_soft_splats)
+                continue;
             for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
                 const command_range& range = groups[group_of(material, primitive, lighting)];
                 if (range.count == 0) continue;
+                // Shadows and the visibility pass are depth only: one program for every variant.
+                const bool depth_only = shadow || pass == sample_pass::splat_visibility;
                 const GLuint program =
                     surface_program(material, shadow, primitive,
-                                    shadow ? lighting_variant::normal_mapped : lighting);
+                                    depth_only ? lighting_variant::normal_mapped : lighting, pass);
                 glUseProgram(program);
                 if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
+                if (pass == sample_pass::splat_visibility)
+                    glUniform1f(glGetUniformLocation(program, "u_depth_push"),
+                                k_soft_splat_depth_offset * m_splat_plane);
+                if (pass == sample_pass::soft_splats)
+                    glUniform1f(glGetUniformLocation(program, "u_soft_alpha"), m_soft_splat_alpha);
                 if (primitive == primitive_kind::points) {
                     glEnable(GL_PROGRAM_POINT_SIZE);
-                    glUniform1f(glGetUniformLocation(program, "u_splat_px"), m_splat_px);
+                    glUniform1f(glGetUniformLocation(program, "u_splat_px"),
+                                pass == sample_pass::soft_splats ? m_soft_splat_px : m_splat_px);
                     glUniform1f(
                         glGetUniformLocation(program, "u_splat_plane"),
                         shadow ? float(k_shadow_sample_spacing) * m_splat_plane : m_splat_plane);
@@ -535,6 +587,9 @@ void renderer::render(const frame_view& view) {
     m_splat_px = view.splat_px;
     m_splat_plane = view.splat_plane;
     m_line_width_px = view.line_width_px;
+    m_soft_splats = view.soft_splats;
+    m_soft_splat_px = view.soft_splat_px;
+    m_soft_splat_alpha = view.soft_splat_alpha;
     const auto& draws = *view.draws;
     std::size_t commands = (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_materials;
     std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
@@ -554,6 +609,7 @@ void renderer::render(const frame_view& view) {
     draw_shadow_cascades();
     draw_opaque();
     draw_sky();
+    if (m_soft_splats) draw_soft_splats();
     m_ring.end_frame();
 }
 

@@ -58,6 +58,12 @@ struct frame_view {
     float splat_px = 1.0f;
     float splat_plane = 0.0f;
     float line_width_px = 1.0f;
+    // Soft splats (systems/point_line_lod.h): points are drawn after the sky, first as opaque
+    // splats of splat_px into depth only (pushed back by k_soft_splat_depth_offset splats), then
+    // as Gaussians of soft_splat_px with this peak opacity, blended over what is there.
+    bool soft_splats = false;
+    float soft_splat_px = 2.0f;
+    float soft_splat_alpha = 1.0f;
 };
 
 class renderer {
@@ -118,7 +124,11 @@ private:
     void write_commands(const frame_view& view);
     void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
                     primitive_kind primitive = primitive_kind::triangles);
-    void draw_samples(const pass_commands& groups, int cascade);
+    // What draw_samples draws: points and lines into a shadow cascade; the view's opaque
+    // samples (lines, and points unless they are soft); or the two passes of soft splats.
+    enum class sample_pass { cascade, view, splat_visibility, soft_splats };
+    void draw_samples(const pass_commands& groups, sample_pass pass, int cascade = -1);
+    void draw_soft_splats();
     void draw_clouds(const pass_commands& groups, int cascade);
     void write_species_block(const scene_assets& assets);
     static constexpr std::size_t k_max_species_spheres = 64;  // transfer.glsl u_species_sphere
@@ -129,7 +139,8 @@ private:
     void draw_sky();
     GLuint surface_program(material_kind material, bool shadow,
                            primitive_kind primitive = primitive_kind::triangles,
-                           lighting_variant lighting = lighting_variant::normal_mapped);
+                           lighting_variant lighting = lighting_variant::normal_mapped,
+                           sample_pass samples = sample_pass::view);
 
     renderer_settings m_settings;
     shader_library m_shaders;
@@ -171,6 +182,9 @@ private:
     float m_splat_px = 1.0f;
     float m_splat_plane = 0.0f;
     float m_line_width_px = 1.0f;
+    bool m_soft_splats = false;
+    float m_soft_splat_px = 2.0f;
+    float m_soft_splat_alpha = 1.0f;
     int m_cascade_count = 0;
     std::uint64_t m_frame_upload_bytes = 0;
     std::uint64_t m_static_upload_bytes = 0;

@@ -21,6 +21,9 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     view.splat_px = splat_size_px(points);
     view.splat_plane = float(image_plane_units(view.splat_px, cam.fov_y, cam.viewport_height_px));
     view.line_width_px = points.sample_distance_px;
+    view.soft_splats = points.splats == splat_style::soft;
+    view.soft_splat_px = soft_splat_size_px(points);
+    view.soft_splat_alpha = soft_splat_peak_alpha(points);
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

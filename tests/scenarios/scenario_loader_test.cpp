@@ -321,7 +321,8 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
         {"/lod/d",
-         "representation, sample_distance_px, splat_factor, primitive_budget, target_frame_ms, "
+         "representation, sample_distance_px, splat_factor, splats, primitive_budget, "
+         "target_frame_ms, "
          "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
     };
     for (const auto& [pointer, known] : cases) {
@@ -730,6 +731,24 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
     EXPECT_EQ(s.species[0].octree_depth, 1u);
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
     EXPECT_EQ(load(minimal()).lod.representation, "mesh_levels");
+}
+
+TEST(scenario_loader, splat_style_loads_defaults_to_soft_and_rejects_other_names) {
+    EXPECT_EQ(load(minimal()).lod.splats, "soft");
+    json j = minimal();
+    j["lod"] = {{"representation", "points_lines"}, {"splats", "opaque"}};
+    const scenario s = load(j);
+    EXPECT_EQ(s.lod.splats, "opaque");
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    j["lod"]["splats"] = "fuzzy";
+    try {
+        load(j);
+        FAIL() << "an unknown splat style must be rejected";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), "/lod/splats");
+        EXPECT_NE(std::string(e.what()).find("fuzzy"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("opaque"), std::string::npos) << e.what();
+    }
 }
 
 TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {

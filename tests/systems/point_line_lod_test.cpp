@@ -164,5 +164,53 @@ TEST(point_line_lod, splats_cover_cp_times_d_prime_squared) {
     EXPECT_FLOAT_EQ(splat_size_px({1.0f, 1.0f}), 1.0f);
 }
 
+// Soft splats (our extension of §5.1): K = 2 times the opaque side, and a Gaussian peak opacity
+// that makes each splat deposit the leaf area it stands for, d'²/c_p pixels.
+TEST(point_line_lod, soft_splats_are_twice_the_opaque_side_with_area_conserving_opacity) {
+    const point_line_quality q{1.0f, 1.3f};
+    EXPECT_EQ(q.splats, splat_style::soft);                          // the default
+    EXPECT_NEAR(soft_splat_size_px(q), 2.0 * std::sqrt(1.3), 1e-6);  // 2.2804
+    // Hand value: 1 / (0.3577763 · 2² · 1.3²) = 1 / 2.418567 = 0.413467.
+    EXPECT_NEAR(soft_splat_peak_alpha(q), 0.413467, 1e-5);
+    // Independent of d' (S grows with d' as the area does), and never above one.
+    EXPECT_NEAR(soft_splat_peak_alpha({3.0f, 1.3f}), 0.413467, 1e-5);
+    EXPECT_NEAR(soft_splat_peak_alpha({1.0f, 1.0f}), 1.0 / (0.3577763 * 4.0), 1e-5);  // 0.69876
+}
+
+TEST(point_line_lod, the_soft_kernel_mean_is_the_gaussians_mean_over_its_square) {
+    // Midpoint rule for (1/2 ∫ exp(-2u²) du over [-1, 1])², against the closed form in the header.
+    const int n = 4000;
+    double line = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double u = -1.0 + 2.0 * (i + 0.5) / n;
+        line += std::exp(-2.0 * u * u) / n;
+    }
+    EXPECT_NEAR(line * line, k_soft_splat_kernel_mean, 1e-6);
+}
+
+// As the rasteriser draws a point sprite: the pixels whose centres fall inside the S x S square
+// about the splat's centre, each at the Gaussian of its gl_PointCoord. Over random sub-pixel
+// positions the opacity a splat deposits averages d'²/c_p, for any d'.
+TEST(point_line_lod, a_soft_splat_deposits_the_leaf_area_it_stands_for) {
+    for (const float d : {1.0f, 2.0f, 3.5f}) {
+        const point_line_quality q{d, 1.3f};
+        const double s = soft_splat_size_px(q), peak = soft_splat_peak_alpha(q);
+        double total = 0.0;
+        const int positions = 64;
+        for (int a = 0; a < positions; ++a)
+            for (int b = 0; b < positions; ++b) {
+                const double cx = 10.0 + (a + 0.5) / positions, cy = 20.0 + (b + 0.5) / positions;
+                for (int y = 0; y < 40; ++y)
+                    for (int x = 0; x < 40; ++x) {
+                        const double u = 2.0 * (x + 0.5 - cx) / s, v = 2.0 * (y + 0.5 - cy) / s;
+                        if (std::abs(u) <= 1.0 && std::abs(v) <= 1.0)
+                            total += peak * std::exp(-2.0 * (u * u + v * v));
+                    }
+            }
+        EXPECT_NEAR(total / (positions * positions), double(d) * d / 1.3, 0.01 * d * d)
+            << "d' = " << d;
+    }
+}
+
 }  // namespace
 }  // namespace sylva

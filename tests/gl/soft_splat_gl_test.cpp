@@ -1,0 +1,183 @@
+// Soft splats in the renderer (systems/point_line_lod.h, our extension of Deussen 2002 §5.1):
+// each soft splat must deposit the leaf area it stands for, d'²/c_p pixels, so a sparse field of
+// them darkens the image 1/c_p² as much as the same field of opaque c_p·d'² splats; and the
+// visibility pass must keep splats behind a dense layer from blending over it.
+#include <gtest/gtest.h>
+
+#include <glm/trigonometric.hpp>
+
+#include "flat_scene.h"
+#include "gl_test_support.h"
+#include "models/random.h"
+#include "systems/lighting/sky_model.h"
+#include "systems/point_line_lod.h"
+#include "systems/render/renderer.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+using testing::horizontal_quad;
+using testing::solid;
+
+constexpr int k_size = 128;
+
+// Leaf samples facing up, on a jittered grid of `spacing` metres over a square of side 2·half.
+mesh_data point_field(float half, float spacing, std::uint64_t seed) {
+    mesh_data m;
+    m.primitive = primitive_kind::points;
+    rng random(seed, 1);
+    for (float z = -half; z < half; z += spacing)
+        for (float x = -half; x < half; x += spacing) {
+            const glm::vec3 p{x + random.uniform(0.0f, 0.5f * spacing), 0.0f,
+                              z + random.uniform(0.0f, 0.5f * spacing)};
+            m.indices.push_back(std::uint32_t(m.vertices.size()));
+            m.vertices.push_back({p, {0.0f, 1.0f, 0.0f}, {0.5f, 0.5f}});
+        }
+    m.submeshes = {{0, std::uint32_t(m.indices.size()), material_kind::leaf}};
+    m.bounds_min = {-half, 0.0f, -half};
+    m.bounds_max = {half, 0.0f, half};
+    return m;
+}
+
+struct splat_scene {
+    scene_assets assets;
+    camera cam;
+    sun light;
+    environment sky;
+};
+
+// Mesh 0: dark ground; 1: a sparse field (1 m apart, about 6.8 px at 40 m: splats never
+// overlap); 2: a dense field (7 cm apart, about two splats per pixel).
+splat_scene make_scene() {
+    splat_scene s;
+    s.assets.meshes.push_back(horizontal_quad(60.0f, 0.0f, material_kind::ground));
+    s.assets.meshes.push_back(point_field(6.0f, 1.0f, 7));
+    s.assets.meshes.push_back(point_field(2.0f, 0.07f, 8));
+    s.assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
+    for (std::size_t i = 1; i < s.assets.meshes.size(); ++i)
+        s.assets.library.meshes.push_back({std::uint32_t(s.assets.meshes[i].vertices.size()),
+                                           representation::points, primitive_kind::points});
+    s.assets.terrain_meshes = {0};
+    s.assets.leaf_textures = {solid(140)};
+    s.assets.bark_textures = {solid(140)};
+    s.assets.ground_texture = solid(20);
+
+    s.cam.position = {0.0, 40.0, 0.0};
+    s.cam.forward = {0.0f, -1.0f, 0.0f};
+    s.cam.aspect = 1.0f;
+    s.cam.fov_y = glm::radians(50.0f);
+    s.cam.viewport_height_px = float(k_size);
+    derive_camera_matrices(s.cam);
+    s.light.direction = sun_direction_from_angles(70.0f, 90.0f);
+    s.light.color = glm::vec3(1.0f);
+    s.light.intensity = 2.0f;
+    return s;
+}
+
+// One frame of `instances` (position above the origin, tint) of `mesh`, with soft or opaque
+// splats at d' = 1 px, c_p = 1.3; no shadows. Returns the image's luma.
+std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s, std::uint16_t mesh,
+                               const std::vector<std::pair<float, float>>& instances,
+                               splat_style style) {
+    draw_list draws;
+    for (const auto& [height, tint] : instances) {
+        instance_gpu i;
+        i.position = glm::vec3(glm::dvec3(0.0, height, 0.0) - s.cam.position);
+        i.tint = tint;
+        draws.instances.push_back(i);
+    }
+    if (!instances.empty())
+        draws.batches.push_back({render_pass::opaque, mesh, 0, std::uint32_t(instances.size())});
+    const cascade_set cascades;
+    const point_line_quality quality{1.0f, 1.3f, true, style};
+    render::frame_view view;
+    view.view_camera = &s.cam;
+    view.sun_light = &s.light;
+    view.sky = &s.sky;
+    view.cascades = &cascades;
+    view.draws = &draws;
+    view.terrain_position = glm::vec3(-s.cam.position);
+    view.splat_px = splat_size_px(quality);
+    view.splat_plane =
+        float(image_plane_units(view.splat_px, s.cam.fov_y, s.cam.viewport_height_px));
+    view.soft_splats = style == splat_style::soft;
+    view.soft_splat_px = soft_splat_size_px(quality);
+    view.soft_splat_alpha = soft_splat_peak_alpha(quality);
+    renderer.render(view);
+    renderer.finish();
+    const image_rgba8 image = renderer.read_color();
+    std::vector<float> luma;
+    for (std::size_t i = 0; i + 3 < image.texels.size(); i += 4)
+        luma.push_back(0.2126f * image.texels[i] + 0.7152f * image.texels[i + 1] +
+                       0.0722f * image.texels[i + 2]);
+    return luma;
+}
+
+double summed_difference(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) sum += double(a[i]) - double(b[i]);
+    return sum;
+}
+
+double window_mean(const std::vector<float>& luma, int half) {
+    double sum = 0.0;
+    for (int y = k_size / 2 - half; y < k_size / 2 + half; ++y)
+        for (int x = k_size / 2 - half; x < k_size / 2 + half; ++x)
+            sum += luma[std::size_t(y * k_size + x)];
+    return sum / double(4 * half * half);
+}
+
+struct gl_fixture {
+    gl_fixture() : context(create()), renderer(settings(), scene.assets) {}
+    static std::unique_ptr<render::gl_context> create() {
+        render::context_options options;
+        options.width = options.height = k_size;
+        return render::create_context(options);
+    }
+    static render::renderer_settings settings() {
+        render::renderer_settings r;
+        r.width = r.height = k_size;
+        r.shadows = false;
+        return r;
+    }
+    splat_scene scene = make_scene();
+    std::unique_ptr<render::gl_context> context;
+    render::renderer renderer;
+};
+
+TEST(soft_splat_gl, a_soft_splat_deposits_one_over_c_p_squared_of_an_opaque_splats_coverage) {
+    SYLVA_REQUIRE_GL();
+    gl_fixture f;
+    const auto empty = render_luma(f.renderer, f.scene, 1, {}, splat_style::soft);
+    const auto opaque = render_luma(f.renderer, f.scene, 1, {{1.0f, 0.0f}}, splat_style::opaque);
+    const auto soft = render_luma(f.renderer, f.scene, 1, {{1.0f, 0.0f}}, splat_style::soft);
+    // Each of the 144 opaque splats covers c_p·d'² = 1.3 pixels on average with the sample's
+    // colour; each soft one deposits d'²/c_p = 0.77 pixels of it: the ratio is 1/c_p² = 0.592.
+    const double opaque_sum = summed_difference(opaque, empty);
+    ASSERT_GT(opaque_sum, 144 * 1.3 * 30.0);  // the samples are clearly brighter than the ground
+    EXPECT_NEAR(summed_difference(soft, empty) / opaque_sum, 1.0 / (1.3 * 1.3), 0.06);
+}
+
+TEST(soft_splat_gl, splats_behind_a_dense_layer_do_not_blend_over_it) {
+    SYLVA_REQUIRE_GL();
+    gl_fixture f;
+    // A darker layer 3 m up (tint -1) drawn first, a brighter one 1 m up (tint +1) after it: a
+    // blend without the visibility pass would lay the far layer over the near one.
+    const float near_tint = -1.0f, far_tint = 1.0f;
+    const double near_only =
+        window_mean(render_luma(f.renderer, f.scene, 2, {{3.0f, near_tint}}, splat_style::soft), 8);
+    const double far_only =
+        window_mean(render_luma(f.renderer, f.scene, 2, {{1.0f, far_tint}}, splat_style::soft), 8);
+    const double both =
+        window_mean(render_luma(f.renderer, f.scene, 2, {{3.0f, near_tint}, {1.0f, far_tint}},
+                                splat_style::soft),
+                    8);
+    ASSERT_GT(far_only, near_only + 15.0);
+    // The far layer shows only through the near layer's gaps: about 4 samples per pixel, so
+    // its opaque visibility splats (1.3 px each) leave almost no pixel uncovered.
+    EXPECT_LT(both - near_only, 0.15 * (far_only - near_only));
+}
+
+}  // namespace
+}  // namespace sylva
