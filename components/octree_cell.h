@@ -21,6 +21,6 @@ static_assert(sizeof(octree_cell) == 8);
 struct cell_prefix {
     point_prefix prefix;
 };
-static_assert(sizeof(cell_prefix) == 36);
+static_assert(sizeof(cell_prefix) == 40);
 
 }  // namespace sylva

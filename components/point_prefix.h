@@ -19,7 +19,12 @@ struct point_prefix {
     // 1 when a line part draws `primitives` splats at its lines' ends instead of lines (its
     // lines are shorter than d' on screen; systems/point_line_lod.h select_lines).
     std::array<std::uint8_t, k_prefix_parts> splats{};
+    // Soft splats draw a fractional prefix (systems/point_line_lod.h): a points-only part draws
+    // ⌈p⌉ splats of Eq. 1's p, the last one faded out by this much, in 1/255 (its opacity is
+    // p − ⌊p⌋), so the splats drawn grow continuously with p instead of a whole splat at a time.
+    // 0: every splat whole.
+    std::array<std::uint8_t, k_prefix_parts> last_fade{};
 };
-static_assert(sizeof(point_prefix) == 36);
+static_assert(sizeof(point_prefix) == 40);
 
 }  // namespace sylva

@@ -107,6 +107,7 @@ flat in vec3 v_color;  // shaded per point in surface.vert
 #endif
 #ifdef SOFT_SPLATS
 uniform float u_soft_alpha;  // the Gaussian's peak opacity
+flat in float v_opacity;     // the splat's own: less than 1 for a fractional prefix's last
 #endif
 
 #if defined(PRIMITIVE_POINTS) || defined(PRIMITIVE_LINES)
@@ -135,7 +136,7 @@ void main() {
     // exp(-2·|pc|²) over pc in [-1, 1]²: σ is a quarter of the splat's side; its mean over the
     // square is k_soft_splat_kernel_mean (systems/point_line_lod.h).
     vec2 pc = gl_PointCoord * 2.0 - 1.0;
-    out_color = vec4(v_color, u_soft_alpha * exp(-2.0 * dot(pc, pc)));
+    out_color = vec4(v_color, v_opacity * u_soft_alpha * exp(-2.0 * dot(pc, pc)));
 #else
     out_color = vec4(v_color, 1.0);
 #ifdef WRITE_ID

@@ -6,13 +6,15 @@
 // splat of u_splat_px pixels on screen; in a shadow cascade the same world footprint (the
 // splat's image-plane size times the distance from the eye) in shadow-map texels.
 // SPLAT_VISIBILITY draws them as opaque splats into depth only, pushed back along the view ray,
-// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h).
+// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h); the
+// instance's fade is then the prefix's fractional length (build_draw_list): splat j of the
+// prefix is drawn at opacity clamp(fade − j, 0, 1), the last one faded (point_prefix::last_fade).
 // PRIMITIVE_LINES hands lines to line.geom, which widens them to d' pixels.
 // SH_TRANSFER lights by the precomputed radiance transfer streamed with the vertices
 // (transfer.glsl, Behrendt 2005 §4): here the transfer is turned by the instance's yaw and
 // dotted with the sky's and the sun's SH; the sun's visibility is looked up per fragment (per
 // point for splats).
-#ifdef WRITE_ID
+#if defined(WRITE_ID) || defined(SOFT_SPLATS) || defined(SPLAT_VISIBILITY)
 #extension GL_ARB_shader_draw_parameters : require
 #endif
 #include "common.glsl"
@@ -54,6 +56,9 @@ uniform int u_cascade;
 #include "shading.glsl"
 layout(binding = 0) uniform sampler2DArray u_albedo;
 flat out vec3 v_color;
+#endif
+#ifdef SOFT_SPLATS
+flat out float v_opacity;  // of this splat: 1, or less for a fractional prefix's last
 #endif
 #ifdef PRIMITIVE_POINTS
 uniform float u_splat_px;     // splat side on screen, pixels
@@ -129,6 +134,10 @@ void main() {
 #if defined(SPLAT_VISIBILITY)
     gl_Position = u_view_projection * vec4(world * (1.0 + u_depth_push), 1.0);
     gl_PointSize = u_splat_px;
+    // A fractional prefix's last splat (instance fade < its index + 1) hides nothing until it
+    // is whole: it fades in over what is behind it.
+    if (in_instance_scale_tint_fade_layer.z < float(gl_VertexID - gl_BaseVertexARB) + 1.0)
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
 #elif defined(SHADOW_PASS)
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
@@ -138,6 +147,9 @@ void main() {
     gl_Position = u_view_projection * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
     gl_PointSize = u_splat_px;
+#ifdef SOFT_SPLATS
+    v_opacity = clamp(in_instance_scale_tint_fade_layer.z - float(gl_VertexID - gl_BaseVertexARB), 0.0, 1.0);
+#endif
     // As surface.frag shades samples: the texture's colour where the point was baked (a
     // slightly filtered level), the surface's side that faces the eye, lit as foliage when the
     // material is a leaf.

@@ -21,6 +21,7 @@ namespace {
 // was most of build_draw_list's time with a million plants.
 struct prefix_draw {
     std::uint16_t mesh;
+    std::uint8_t last_fade;  // point_prefix::last_fade
     std::uint32_t count;
 };
 // In a shadow cascade the prefixes are the cascade's own: its texel is the sample distance there.
@@ -123,9 +124,10 @@ private:
         std::uint32_t& count = d.prefix_count[std::size_t(pass)];
         for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
             const lod_part_entry& part = m_library.lod_parts[parts.first + i];
-            if (prefix.triangles[i]) list[count++] = {part.mesh_triangles, prefix.triangles[i]};
+            if (prefix.triangles[i]) list[count++] = {part.mesh_triangles, 0, prefix.triangles[i]};
             if (prefix.primitives[i])
-                list[count++] = {prefix.splats[i] ? part.mesh_splats : part.mesh_primitives, prefix.primitives[i]};
+                list[count++] = {prefix.splats[i] ? part.mesh_splats : part.mesh_primitives,
+                                 prefix.last_fade[i], prefix.primitives[i]};
         }
     }
 
@@ -182,7 +184,8 @@ draw_item* write_items(const plant_draws& d, std::uint32_t plant, draw_item* out
         }
         const auto& prefixes = d.prefixes[std::size_t(pass)];
         for (std::uint32_t i = 0; i < d.items_in(std::size_t(pass)); ++i)
-            *out++ = {make_sort_key({pass, prefixes[i].mesh, depth}), plant, prefixes[i].count};
+            *out++ = {make_sort_key({pass, prefixes[i].mesh, depth}) | prefixes[i].last_fade, plant,
+                      prefixes[i].count};
     }
     return out;
 }
@@ -293,6 +296,16 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const bool partner = (k & k_partner_item_bit) != 0;
             const std::uint32_t plant = k & ~k_partner_item_bit;
             list.instances[i] = make_instance(cam, transforms[plant], instances[plant], fades[plant], partner, library);
+        }
+        // Point prefixes: the fade is the fractional prefix length, so the soft-splat shader
+        // draws splat j at opacity clamp(fade − j, 0, 1) (every splat whole but a faded last).
+        for (std::size_t i = begin; i < end; ++i) {
+            const draw_item& item = list.items[i];
+            if (library.meshes[decode_sort_key(item.key).mesh].primitive != primitive_kind::points)
+                continue;
+            list.instances[i].fade =
+                item.count == 0 ? 1e9f
+                                : float(item.count) - float(item.key & k_last_fade_mask) / 255.0f;
         }
     });
     build_batches(list, library);

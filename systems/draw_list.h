@@ -37,7 +37,10 @@ struct instance_gpu {
     float yaw = 0.0f;
     float scale = 1.0f;
     float tint = 0.0f;           // -1..1 colour variation
-    float fade = 1.0f;           // fade alpha (transitions)
+    // Fade alpha (transitions). For a points mesh: the prefix's fractional length, ⌈p⌉ less the
+    // last splat's point_prefix::last_fade (soft splats draw splat j at clamp(fade − j, 0, 1));
+    // build_draw_list writes it, and anyone else drawing points must set it to at least the count.
+    float fade = 1.0f;
     float texture_layer = 0.0f;  // layer of the species' textures in the texture arrays
 };
 static_assert(sizeof(instance_gpu) == 32);

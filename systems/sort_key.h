@@ -3,10 +3,10 @@
 // by key with a stable radix sort, and the submission changes state only where the key's upper
 // fields change. Items that share pass and mesh become one instanced indirect draw.
 //
-//   63     60 59                44 43                      20 19                 0
-//  +---------+--------------------+-------------------------+--------------------+
-//  | pass  4 |   mesh id  16      |  depth 24 (front first)  |  unused 20 (zero)  |
-//  +---------+--------------------+-------------------------+--------------------+
+//   63     60 59                44 43                      20 19          8 7          0
+//  +---------+--------------------+-------------------------+-------------+------------+
+//  | pass  4 |   mesh id  16      |  depth 24 (front first)  |  unused 12  | last fade 8|
+//  +---------+--------------------+-------------------------+-------------+------------+
 //
 // Depth is the camera distance quantised logarithmically, so instances inside a batch are drawn
 // front to back (early depth rejection on a software rasteriser is worth a lot).
@@ -52,6 +52,9 @@ constexpr sort_key_fields decode_sort_key(std::uint64_t key) {
             static_cast<std::uint16_t>((key >> k_mesh_shift) & 0xFFFFu),
             static_cast<std::uint32_t>((key >> k_depth_shift) & k_depth_max)};
 }
+// The low byte is not a sort field: it carries a soft-splat prefix's point_prefix::last_fade
+// from the plant to its instance record (build_draw_list), 0 for every other item.
+constexpr std::uint64_t k_last_fade_mask = 0xFFu;
 // Pass and mesh: items with equal batch bits are drawn by one instanced command.
 constexpr std::uint64_t batch_bits(std::uint64_t key) { return key >> k_mesh_shift; }
 

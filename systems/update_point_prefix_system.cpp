@@ -19,9 +19,11 @@ glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& 
 part_range parts_of(const species_entry& species) { return {species.first_lod_part, species.lod_part_count}; }
 part_range parts_of(const lod_cell_entry& cell) { return {cell.first_lod_part, cell.lod_part_count}; }
 
-point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
-                                  const glm::dvec3& eye, double sample_distance, double splat_factor,
-                                  const primitive_costs& costs, std::optional<std::uint32_t> dither_seed) {
+point_prefix compute_point_prefix(const species_library& library, part_range parts,
+                                  const world_transform& t, const glm::dvec3& eye,
+                                  double sample_distance, double splat_factor,
+                                  const primitive_costs& costs,
+                                  std::optional<std::uint32_t> dither_seed, bool fade_last) {
     point_prefix prefix;
     const double scale = double(t.scale);
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
@@ -31,11 +33,19 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
         const double dither = dither_seed ? sample_dither(*dither_seed, i) : -1.0;
         part_draw d;
         if (part.primitive == lod_primitive::points) {
-            double p = required_points(area, r, sample_distance, splat_factor);
-            if (dither >= 0.0) p = std::floor(p + dither);
-            d = blend_points(p, part.triangle_count,
-                             std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1), costs,
-                             part.importance);
+            const double exact = required_points(area, r, sample_distance, splat_factor);
+            const double p = !fade_last && dither >= 0.0 ? std::floor(exact + dither) : exact;
+            const auto after =
+                std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1);
+            d = blend_points(p, part.triangle_count, after, costs, part.importance);
+            // Soft splats, points only: the whole splats blend_points drew (⌊p⌋, when n_p did not
+            // cap them) and one more, faded to the fraction of p beyond them.
+            const double whole = std::floor(exact);
+            if (fade_last && d.triangles == 0 && exact > whole && double(d.primitives) == whole &&
+                whole + 1.0 <= double(after[0])) {
+                d.primitives += 1;
+                prefix.last_fade[i] = std::uint8_t(std::lround(255.0 * (whole + 1.0 - exact)));
+            }
         } else {
             d = select_lines(area, double(part.line_length_m) * scale, double(part.line_error_m) * scale,
                              part.primitive_count, part.triangle_count, r, sample_distance, costs, part.importance,
@@ -80,6 +90,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const double d = image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px);
     const double c_p = policy.points.splat_factor;
     const bool dither = policy.points.dither;
+    const bool fade_last = policy.points.splats == splat_style::soft;
     const primitive_costs& costs = ctx.resource<primitive_costs>();
     auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
     ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -90,8 +101,9 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 return;
             }
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
-            prefix = compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs,
-                                          dither ? std::optional(p.seed) : std::nullopt);
+            prefix =
+                compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs,
+                                     dither ? std::optional(p.seed) : std::nullopt, fade_last);
         });
     });
     // §6.1: each octree cell of a big plant chooses on its own, r measured to its parts.
@@ -105,10 +117,11 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 out.prefix = {};
                 return;
             }
-            out.prefix = compute_point_prefix(library, parts_of(library.cells[cell.cell]), transforms[cell.plant],
-                                              cam.position, d, c_p, costs,
-                                              dither ? std::optional(instances[cell.plant].seed ^ cell.cell)
-                                                     : std::nullopt);
+            out.prefix = compute_point_prefix(
+                library, parts_of(library.cells[cell.cell]), transforms[cell.plant], cam.position,
+                d, c_p, costs,
+                dither ? std::optional(instances[cell.plant].seed ^ cell.cell) : std::nullopt,
+                fade_last);
         });
     });
 }

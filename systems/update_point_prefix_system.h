@@ -32,11 +32,15 @@ part_range parts_of(const lod_cell_entry& cell);
 
 // The prefixes of a plant's (or cell's) parts: `sample_distance` is d' in image-plane units.
 // Point and splat counts are rounded down after adding sample_dither(dither_seed, part)
-// (nullopt: plain rounding down for points, to nearest for splats).
-point_prefix compute_point_prefix(const species_library& library, part_range parts, const world_transform& t,
-                                  const glm::dvec3& eye, double sample_distance, double splat_factor,
+// (nullopt: plain rounding down for points, to nearest for splats). With `fade_last` (soft
+// splats), a part drawn as points only draws ⌈p⌉ of them instead, the last faded to p − ⌊p⌋
+// (point_prefix::last_fade).
+point_prefix compute_point_prefix(const species_library& library, part_range parts,
+                                  const world_transform& t, const glm::dvec3& eye,
+                                  double sample_distance, double splat_factor,
                                   const primitive_costs& costs = {},
-                                  std::optional<std::uint32_t> dither_seed = std::nullopt);
+                                  std::optional<std::uint32_t> dither_seed = std::nullopt,
+                                  bool fade_last = false);
 
 // The prefixes of one plant in a shadow cascade whose texel is `texel_world_m` wide: the
 // texel is the sample distance there (the shadow map sees every part at its own size, so

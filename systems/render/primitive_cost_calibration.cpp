@@ -70,10 +70,11 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     sun light;
     light.direction = glm::normalize(glm::vec3(0.3f, 0.8f, 0.4f));
     environment sky;
-    cascade_set cascades;  // no shadow pass: only the opaque pass is timed
+    cascade_set cascades;  // no shadow pass: the opaque pass (and soft splats' passes) are timed
     draw_list list;
     instance_gpu instance;
     instance.position = {0.0f, 0.0f, -k_distance_m};
+    instance.fade = float(n);  // every splat whole (draw_list.h instance_gpu::fade)
     frame_view view;
     view.view_camera = &cam;
     view.sun_light = &light;
@@ -90,7 +91,7 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     view.splat_plane = float(image_plane_units(view.splat_px, cam.fov_y, cam.viewport_height_px));
     view.line_width_px = settings.sample_distance_px;
 
-    auto time_opaque = [&](int which) {
+    auto time_frame = [&](int which) {
         list.instances.clear();
         list.batches.clear();
         if (which >= 0) {
@@ -102,12 +103,13 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
         return stats.gpu_pass_ms[std::size_t(gpu_pass::opaque)] +
                stats.gpu_pass_ms[std::size_t(gpu_pass::splats)];
     };
-    time_opaque(0);  // compile the programs and touch the buffers before timing anything
-    time_opaque(1);
-    time_opaque(2);
+    time_frame(0);  // compile the programs and touch the buffers before timing anything
+    time_frame(1);
+    time_frame(2);
     std::array<std::vector<double>, 4> ms;
     for (int rep = 0; rep < settings.repetitions; ++rep)
-        for (int which = -1; which < 3; ++which) ms[std::size_t(which + 1)].push_back(time_opaque(which));
+        for (int which = -1; which < 3; ++which)
+            ms[std::size_t(which + 1)].push_back(time_frame(which));
     const double empty = median(ms[0]);
     const double per_million = 1e6 / double(n);
     calibration_result result;

@@ -47,8 +47,9 @@ struct splat_scene {
     environment sky;
 };
 
-// Mesh 0: dark ground; 1: a sparse field (1 m apart, about 6.8 px at 40 m: splats never
-// overlap); 2: a dense field (7 cm apart, about two splats per pixel).
+// Mesh 0: dark ground; 1: a sparse field (1 m apart on a jittered grid, about 3.5 px at 39 m:
+// the soft splats' Gaussian tails touch at most); 2: a dense field (7 cm apart, about 15
+// samples per pixel).
 splat_scene make_scene() {
     splat_scene s;
     s.assets.meshes.push_back(horizontal_quad(60.0f, 0.0f, material_kind::ground));
@@ -75,20 +76,28 @@ splat_scene make_scene() {
     return s;
 }
 
-// One frame of `instances` (position above the origin, tint) of `mesh`, with soft or opaque
-// splats at d' = 1 px, c_p = 1.3; no shadows. Returns the image's luma.
+struct placed {
+    glm::dvec3 position{0.0};
+    float tint = 0.0f;
+    float fade = 1e9f;  // the prefix's fractional length (draw_list.h): every splat whole
+};
+
+// One frame of `instances` of `mesh` (the first `count` splats of each; 0: all), with soft or
+// opaque splats at d' = 1 px, c_p = 1.3; no shadows. Returns the image's luma.
 std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s, std::uint16_t mesh,
-                               const std::vector<std::pair<float, float>>& instances,
-                               splat_style style) {
+                               const std::vector<placed>& instances, splat_style style,
+                               std::uint32_t count = 0) {
     draw_list draws;
-    for (const auto& [height, tint] : instances) {
+    for (const placed& p : instances) {
         instance_gpu i;
-        i.position = glm::vec3(glm::dvec3(0.0, height, 0.0) - s.cam.position);
-        i.tint = tint;
+        i.position = glm::vec3(p.position - s.cam.position);
+        i.tint = p.tint;
+        i.fade = p.fade;
         draws.instances.push_back(i);
     }
     if (!instances.empty())
-        draws.batches.push_back({render_pass::opaque, mesh, 0, std::uint32_t(instances.size())});
+        draws.batches.push_back(
+            {render_pass::opaque, mesh, 0, std::uint32_t(instances.size()), count});
     const cascade_set cascades;
     const point_line_quality quality{1.0f, 1.3f, true, style};
     render::frame_view view;
@@ -150,8 +159,9 @@ TEST(soft_splat_gl, a_soft_splat_deposits_one_over_c_p_squared_of_an_opaque_spla
     SYLVA_REQUIRE_GL();
     gl_fixture f;
     const auto empty = render_luma(f.renderer, f.scene, 1, {}, splat_style::soft);
-    const auto opaque = render_luma(f.renderer, f.scene, 1, {{1.0f, 0.0f}}, splat_style::opaque);
-    const auto soft = render_luma(f.renderer, f.scene, 1, {{1.0f, 0.0f}}, splat_style::soft);
+    const auto opaque =
+        render_luma(f.renderer, f.scene, 1, {{{0.0, 1.0, 0.0}}}, splat_style::opaque);
+    const auto soft = render_luma(f.renderer, f.scene, 1, {{{0.0, 1.0, 0.0}}}, splat_style::soft);
     // Each of the 144 opaque splats covers c_p·d'² = 1.3 pixels on average with the sample's
     // colour; each soft one deposits d'²/c_p = 0.77 pixels of it: the ratio is 1/c_p² = 0.592.
     const double opaque_sum = summed_difference(opaque, empty);
@@ -165,18 +175,44 @@ TEST(soft_splat_gl, splats_behind_a_dense_layer_do_not_blend_over_it) {
     // A darker layer 3 m up (tint -1) drawn first, a brighter one 1 m up (tint +1) after it: a
     // blend without the visibility pass would lay the far layer over the near one.
     const float near_tint = -1.0f, far_tint = 1.0f;
-    const double near_only =
-        window_mean(render_luma(f.renderer, f.scene, 2, {{3.0f, near_tint}}, splat_style::soft), 8);
-    const double far_only =
-        window_mean(render_luma(f.renderer, f.scene, 2, {{1.0f, far_tint}}, splat_style::soft), 8);
-    const double both =
-        window_mean(render_luma(f.renderer, f.scene, 2, {{3.0f, near_tint}, {1.0f, far_tint}},
-                                splat_style::soft),
-                    8);
+    const double near_only = window_mean(
+        render_luma(f.renderer, f.scene, 2, {{{0.0, 3.0, 0.0}, near_tint}}, splat_style::soft), 8);
+    const double far_only = window_mean(
+        render_luma(f.renderer, f.scene, 2, {{{0.0, 1.0, 0.0}, far_tint}}, splat_style::soft), 8);
+    const double both = window_mean(
+        render_luma(f.renderer, f.scene, 2,
+                    {{{0.0, 3.0, 0.0}, near_tint}, {{0.0, 1.0, 0.0}, far_tint}}, splat_style::soft),
+        8);
     ASSERT_GT(far_only, near_only + 15.0);
-    // The far layer shows only through the near layer's gaps: about 4 samples per pixel, so
+    // The far layer shows only through the near layer's gaps: about 15 samples per pixel, so
     // its opaque visibility splats (1.3 px each) leave almost no pixel uncovered.
     EXPECT_LT(both - near_only, 0.15 * (far_only - near_only));
+}
+
+// A fractional prefix (point_prefix::last_fade): an instance whose fade is 2.5 draws its first
+// two splats whole and the third at half opacity, half-way between fades of 2 and 3. One such
+// prefix per instance, on a 10 x 10 grid 1.5 m apart.
+TEST(soft_splat_gl, a_fractional_prefix_draws_its_last_splat_at_the_fraction) {
+    SYLVA_REQUIRE_GL();
+    gl_fixture f;
+    auto grid = [](float fade) {
+        std::vector<placed> instances;
+        for (int z = 0; z < 10; ++z)
+            for (int x = 0; x < 10; ++x)
+                instances.push_back({{1.5 * (x - 4.5), 1.0, 1.5 * (z - 4.5)}, 0.0f, fade});
+        return instances;
+    };
+    const auto empty = render_luma(f.renderer, f.scene, 1, {}, splat_style::soft);
+    auto deposit = [&](float fade) {
+        return summed_difference(
+            render_luma(f.renderer, f.scene, 1, grid(fade), splat_style::soft, 3), empty);
+    };
+    const double two = deposit(2.0f), two_and_a_half = deposit(2.5f), three = deposit(3.0f);
+    ASSERT_GT(three, 300 * 0.77 * 30.0);  // 300 splats of 0.77 px, clearly brighter than the ground
+    // The splats land at different sub-pixel positions, so each deposits a slightly different
+    // amount: compare with the whole prefixes on either side.
+    EXPECT_LT(two, 0.8 * three);
+    EXPECT_NEAR(two_and_a_half, 0.5 * (two + three), 0.04 * three);
 }
 
 }  // namespace

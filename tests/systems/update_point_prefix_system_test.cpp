@@ -27,8 +27,10 @@ struct prefix_scene {
     ecs::schedule schedule;
 
     // `dither` false: counts rounded down (points) or to nearest (splats), as the hand values.
-    explicit prefix_scene(std::vector<double> distances, float point_importance = 1.0f, bool dither = false,
-                          std::uint32_t first_seed = 0) {
+    // The paper's opaque splats round counts; soft splats draw fractional prefixes.
+    explicit prefix_scene(std::vector<double> distances, float point_importance = 1.0f,
+                          bool dither = false, std::uint32_t first_seed = 0,
+                          splat_style splats = splat_style::opaque) {
         species_library library;
         species_entry plant;
         plant.bounding_radius = 0.5f;
@@ -85,6 +87,7 @@ struct prefix_scene {
         policy.mode = lod_policy::kind::points_lines;
         policy.points = {1.0f, 1.0f};
         policy.points.dither = dither;
+        policy.points.splats = splats;
         world.set_resource(policy);
         world.set_resource(primitive_costs{});  // the paper's: a triangle costs three points
         world.set_resource(tile_point_sets{});
@@ -151,6 +154,39 @@ TEST(update_point_prefix, dithered_counts_add_up_to_what_eq1_asks_of_many_plants
     const point_prefix first = dithered.prefix(17);
     dithered.schedule.run(dithered.world, executor);
     EXPECT_EQ(dithered.prefix(17).primitives[0], first.primitives[0]);
+}
+
+// Soft splats: a points-only part draws ⌈p⌉ splats, the last faded out by ⌈p⌉ − p (in 1/255),
+// so what is drawn grows continuously with p; blends and lines are as with opaque splats.
+TEST(update_point_prefix, soft_splats_draw_a_fractional_prefix_whose_last_splat_fades) {
+    prefix_scene scene({10.5, 13.0, 30.0, 60.0}, 1.0f, false, 0, splat_style::soft);
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    // r = 10.5: p = 22.68 ≥ 2k blends as before: 2 triangles + 16 points, nothing faded.
+    EXPECT_EQ(scene.prefix(0).triangles[0], 2u);
+    EXPECT_EQ(scene.prefix(0).primitives[0], 16u);
+    EXPECT_EQ(scene.prefix(0).last_fade[0], 0u);
+    // r = 13: p = 2500/169 = 14.793 → 15 splats, the last faded by 0.207: 255 · 0.207 = 52.8.
+    EXPECT_EQ(scene.prefix(1).primitives[0], 15u);
+    EXPECT_EQ(scene.prefix(1).last_fade[0], 53u);
+    // r = 30: p = 2.778 → 3 splats, faded by 0.222: 56.7.
+    EXPECT_EQ(scene.prefix(2).primitives[0], 3u);
+    EXPECT_EQ(scene.prefix(2).last_fade[0], 57u);
+    // r = 60: p = 0.694 → 1 splat at opacity 0.694, faded by 0.306: 77.9.
+    EXPECT_EQ(scene.prefix(3).primitives[0], 1u);
+    EXPECT_EQ(scene.prefix(3).last_fade[0], 78u);
+    EXPECT_EQ(scene.prefix(2).primitives[1], 3u);  // the line part rounds as before
+    EXPECT_EQ(scene.prefix(2).last_fade[1], 0u);
+    // build_draw_list hands the fractional length to the instance record: 3 − 57/255.
+    const draw_list& list = scene.world.resource<draw_list>();
+    int checked = 0;
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const sort_key_fields key = decode_sort_key(list.items[i].key);
+        if (key.pass != render_pass::opaque || key.mesh != 1 || list.items[i].count != 3) continue;
+        EXPECT_FLOAT_EQ(list.instances[i].fade, 3.0f - 57.0f / 255.0f);
+        ++checked;
+    }
+    EXPECT_EQ(checked, 1);
 }
 
 TEST(update_point_prefix, importance_keeps_a_part_polygonal_longer_without_painting_it_over) {
