@@ -69,6 +69,7 @@ uniform float u_splat_texels; // smallest splat in a shadow map, texels (√c_p:
 // ε / distance: k_soft_splat_depth_offset splat sides on the image plane at distance one, so the
 // splat moves back ε = that x its distance along its view ray.
 uniform float u_depth_push;
+uniform int u_visibility_stride;  // systems/point_line_lod.h k_soft_splat_visibility_stride
 #endif
 
 out vec3 v_position;  // camera-relative world position
@@ -134,9 +135,11 @@ void main() {
 #if defined(SPLAT_VISIBILITY)
     gl_Position = u_view_projection * vec4(world * (1.0 + u_depth_push), 1.0);
     gl_PointSize = u_splat_px;
-    // A fractional prefix's last splat (instance fade < its index + 1) hides nothing until it
-    // is whole: it fades in over what is behind it.
-    if (in_instance_scale_tint_fade_layer.z < float(gl_VertexID - gl_BaseVertexARB) + 1.0)
+    // Every u_visibility_stride-th splat of the prefix only. A fractional prefix's last splat
+    // (instance fade < its index + 1) hides nothing until it is whole: it fades in over what is
+    // behind it.
+    int rank = gl_VertexID - gl_BaseVertexARB;
+    if (rank % u_visibility_stride != 0 || in_instance_scale_tint_fade_layer.z < float(rank) + 1.0)
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
 #elif defined(SHADOW_PASS)
     gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);

@@ -133,11 +133,17 @@ float splat_size_px(const point_line_quality& q);
 // "over" each other, n such splats leave 1 − Π(1 − α_i) ≈ 1 − exp(−Σα_i) of a pixel covered:
 // the gap fraction of randomly placed leaves (Beer–Lambert), which is what the pixel's
 // supersampled reference averages. Which splats composite is decided first by a depth-only
-// visibility pass of opaque splats pushed back by ε along the view ray, as in two-pass surface
-// splatting (Pfister et al. 2000 "Surfels" §5.1; Botsch, Hornung, Zwicker, Kobbelt 2005 §3):
-// splats within ε of the nearest surface blend, those behind it do not.
+// visibility pass of opaque splats (every second one) pushed back by ε along the view ray, as in
+// two-pass surface splatting (Pfister et al. 2000 "Surfels" §5.1; Botsch, Hornung, Zwicker, Kobbelt
+// 2005 §3): splats within ε of the nearest surface blend, those behind it do not.
 inline constexpr float k_soft_splat_footprint = 2.0f;     // K: soft splat side / opaque splat side
 inline constexpr float k_soft_splat_depth_offset = 5.0f;  // ε, in opaque splat sides
+// The visibility pass draws every second splat of a prefix (a uniform half: prefixes are in
+// random order). Its opaque splats then cover c_p/2 times the leaf area rather than c_p times,
+// about a crown's outer layer, and it sets up half the splats. Against every splat, on
+// landscape (2 frames) and forest (6): SSIM 0.9215 against 0.9194 and 0.7846 against 0.7755,
+// popping 2.63 against 2.66 and 6.27 against 6.51; the full set hid leaves the reference sees.
+inline constexpr int k_soft_splat_visibility_stride = 2;
 // ∫∫ exp(−2(u² + v²)) du dv over u, v in [−1, 1] divided by its square's area 4: the Gaussian's
 // mean over its square footprint, (√(π/8)·erf(√2))², as the shader evaluates it (surface.frag).
 inline constexpr double k_soft_splat_kernel_mean = 0.3577763;

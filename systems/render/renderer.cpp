@@ -511,9 +511,12 @@ void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int c
                                     depth_only ? lighting_variant::normal_mapped : lighting, pass);
                 glUseProgram(program);
                 if (shadow) glUniform1i(glGetUniformLocation(program, "u_cascade"), cascade);
-                if (pass == sample_pass::splat_visibility)
+                if (pass == sample_pass::splat_visibility) {
                     glUniform1f(glGetUniformLocation(program, "u_depth_push"),
                                 k_soft_splat_depth_offset * m_splat_plane);
+                    glUniform1i(glGetUniformLocation(program, "u_visibility_stride"),
+                                k_soft_splat_visibility_stride);
+                }
                 if (pass == sample_pass::soft_splats)
                     glUniform1f(glGetUniformLocation(program, "u_soft_alpha"), m_soft_splat_alpha);
                 if (primitive == primitive_kind::points) {
