@@ -1,14 +1,17 @@
 #pragma once
-// Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, one
-// rendered frame, and the luminance the camera sees at a world point.
+// Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, a
+// camera looking straight down, one rendered frame, and the luminance the camera sees at a
+// world point.
 #include <cstdint>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <vector>
 
 #include "components/camera.h"
 #include "models/image.h"
 #include "models/mesh.h"
 #include "systems/render/renderer.h"
+#include "systems/update_camera_system.h"
 
 namespace sylva::testing {
 
@@ -31,6 +34,18 @@ inline image_rgba8 solid(std::uint8_t v) {
     image_rgba8 image{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, v)};
     for (std::size_t i = 3; i < image.texels.size(); i += 4) image.texels[i] = 255;
     return image;
+}
+
+// A square view of `pixels` from `position`, looking straight down, fov_y degrees wide.
+inline camera looking_down(glm::dvec3 position, float fov_y_deg, float pixels) {
+    camera cam;
+    cam.position = position;
+    cam.forward = {0.0f, -1.0f, 0.0f};
+    cam.aspect = 1.0f;
+    cam.fov_y = glm::radians(fov_y_deg);
+    cam.viewport_height_px = pixels;
+    derive_camera_matrices(cam);
+    return cam;
 }
 
 // Rec. 709 luminance (0..255) of the pixel where `cam` sees `world`.

@@ -49,13 +49,7 @@ TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
     settings.shadow_resolution = 2048;
     render::renderer renderer(settings, assets);
 
-    camera cam;
-    cam.position = {-5.0, 30.0, 0.0};
-    cam.forward = {0.0f, -1.0f, 0.0f};
-    cam.aspect = 1.0f;
-    cam.fov_y = glm::radians(60.0f);
-    cam.viewport_height_px = 256.0f;
-    derive_camera_matrices(cam);
+    const camera cam = testing::looking_down({-5.0, 30.0, 0.0}, 60.0f, 256.0f);
     sun light;
     light.direction = sun_direction_from_angles(45.0f, 90.0f);  // from the east (+x)
     light.color = glm::vec3(1.0f);

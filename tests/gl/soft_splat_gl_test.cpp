@@ -64,12 +64,7 @@ splat_scene make_scene() {
     s.assets.bark_textures = {solid(140)};
     s.assets.ground_texture = solid(20);
 
-    s.cam.position = {0.0, 40.0, 0.0};
-    s.cam.forward = {0.0f, -1.0f, 0.0f};
-    s.cam.aspect = 1.0f;
-    s.cam.fov_y = glm::radians(50.0f);
-    s.cam.viewport_height_px = float(k_size);
-    derive_camera_matrices(s.cam);
+    s.cam = testing::looking_down({0.0, 40.0, 0.0}, 50.0f, float(k_size));
     s.light.direction = sun_direction_from_angles(70.0f, 90.0f);
     s.light.color = glm::vec3(1.0f);
     s.light.intensity = 2.0f;

@@ -92,12 +92,7 @@ transfer_scene make_scene() {
     s.assets.bark_textures = {solid(60)};
     s.assets.ground_texture = solid(60);
 
-    s.cam.position = {0.0, 40.0, 0.0};
-    s.cam.forward = {0.0f, -1.0f, 0.0f};
-    s.cam.aspect = 1.0f;
-    s.cam.fov_y = glm::radians(50.0f);
-    s.cam.viewport_height_px = 256.0f;
-    derive_camera_matrices(s.cam);
+    s.cam = testing::looking_down({0.0, 40.0, 0.0}, 50.0f, 256.0f);
     s.light.direction = sun_direction_from_angles(60.0f, 90.0f);  // from the east (+x)
     s.light.color = glm::vec3(1.0f);
     s.light.intensity = 2.0f;
