@@ -152,6 +152,9 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     render_device device;
     device.terrain_origin = m_scenario.world_offset;
     if (context) {
+        // The renderer's GL objects live in this context: another one (a test's own, or a
+        // window's) may have been made current since it was created.
+        context->make_current();
         render::renderer_settings settings = renderer_settings_of(m_scenario);
         settings.id_buffer = options.id_buffer;
         settings.fade_dissolve = policy.mode == lod_policy::kind::billboard_clouds;
