@@ -82,14 +82,7 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     view.cascades = &cascades;
     view.draws = &list;
     view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
-    const point_line_quality quality{settings.sample_distance_px, settings.splat_factor, true,
-                                     settings.splats};
-    view.splat_px = splat_size_px(quality);
-    view.soft_splats = settings.splats == splat_style::soft;
-    view.soft_splat_px = soft_splat_size_px(quality);
-    view.soft_splat_alpha = soft_splat_peak_alpha(quality);
-    view.splat_plane = float(image_plane_units(view.splat_px, cam.fov_y, cam.viewport_height_px));
-    view.line_width_px = settings.sample_distance_px;
+    view.set_samples({settings.sample_distance_px, settings.splat_factor, true, settings.splats});
 
     auto time_frame = [&](int which) {
         list.instances.clear();

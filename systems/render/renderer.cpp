@@ -191,6 +191,16 @@ void renderer::write_species_block(const scene_assets& assets) {
     glNamedBufferStorage(m_species_block.id(), sizeof(spheres), spheres.data(), 0);
 }
 
+void frame_view::set_samples(const point_line_quality& quality) {
+    splat_px = splat_size_px(quality);
+    splat_plane =
+        float(image_plane_units(splat_px, view_camera->fov_y, view_camera->viewport_height_px));
+    line_width_px = quality.sample_distance_px;
+    soft_splats = quality.splats == splat_style::soft;
+    soft_splat_px = soft_splat_size_px(quality);
+    soft_splat_alpha = soft_splat_peak_alpha(quality);
+}
+
 GLuint renderer::surface_program(material_kind material, bool shadow, primitive_kind primitive,
                                  lighting_variant lighting, sample_pass samples) {
     program_source source{"surface.vert", "surface.frag", {}, {}};

@@ -18,6 +18,7 @@
 #include "systems/frame_stats.h"
 #include "systems/lighting/shadow_cascades.h"
 #include "systems/lighting/sky_model.h"
+#include "systems/point_line_lod.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
@@ -64,6 +65,9 @@ struct frame_view {
     bool soft_splats = false;
     float soft_splat_px = 2.0f;
     float soft_splat_alpha = 1.0f;
+
+    // Sets the point/line fields above from what the viewer asks; view_camera must be set.
+    void set_samples(const point_line_quality& quality);
 };
 
 class renderer {

@@ -17,13 +17,7 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     view.draws = &ctx.resource<draw_list>();
     view.terrain_position = glm::vec3(device.terrain_origin - cam.position);
     view.time_s = float(ctx.resource<playback_clock>().time_s());
-    const point_line_quality& points = ctx.resource<lod_policy>().points;
-    view.splat_px = splat_size_px(points);
-    view.splat_plane = float(image_plane_units(view.splat_px, cam.fov_y, cam.viewport_height_px));
-    view.line_width_px = points.sample_distance_px;
-    view.soft_splats = points.splats == splat_style::soft;
-    view.soft_splat_px = soft_splat_size_px(points);
-    view.soft_splat_alpha = soft_splat_peak_alpha(points);
+    view.set_samples(ctx.resource<lod_policy>().points);
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

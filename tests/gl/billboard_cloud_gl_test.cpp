@@ -14,6 +14,7 @@
 
 #include "app/scenario_player.h"
 #include "components/transform.h"
+#include "flat_scene.h"
 #include "gl_test_support.h"
 #include "measure/image_metrics.h"
 #include "measure/temporal_metrics.h"
@@ -200,12 +201,7 @@ protected:
         instance.tint = tint;
         list.instances.push_back(instance);
         list.batches.push_back({render_pass::opaque, mesh, 0, 1, 0});
-        render::frame_view v;
-        v.view_camera = &cam;
-        v.sun_light = &light;
-        v.sky = &sky;
-        v.cascades = &cascades;
-        v.draws = &list;
+        render::frame_view v = testing::make_view(cam, light, sky, cascades, list);
         v.terrain_position = {0.0f, -1e7f, 0.0f};  // out of view
         r.render(v);
         r.finish();

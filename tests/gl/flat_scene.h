@@ -59,9 +59,9 @@ inline float luminance_at(const image_rgba8& image, const camera& cam, glm::dvec
     return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
-// Renders one frame of `draws` (the terrain instance at the world origin) and reads it back.
-inline image_rgba8 render_frame(render::renderer& renderer, const camera& cam, const sun& light, const environment& sky,
-                                const cascade_set& cascades, const draw_list& draws) {
+// The frame of `draws` seen by `cam`, the terrain instance at the world origin.
+inline render::frame_view make_view(const camera& cam, const sun& light, const environment& sky,
+                                    const cascade_set& cascades, const draw_list& draws) {
     render::frame_view view;
     view.view_camera = &cam;
     view.sun_light = &light;
@@ -69,7 +69,14 @@ inline image_rgba8 render_frame(render::renderer& renderer, const camera& cam, c
     view.cascades = &cascades;
     view.draws = &draws;
     view.terrain_position = glm::vec3(-cam.position);
-    renderer.render(view);
+    return view;
+}
+
+// Renders one frame of `draws` (the terrain instance at the world origin) and reads it back.
+inline image_rgba8 render_frame(render::renderer& renderer, const camera& cam, const sun& light,
+                                const environment& sky, const cascade_set& cascades,
+                                const draw_list& draws) {
+    renderer.render(make_view(cam, light, sky, cascades, draws));
     renderer.finish();
     return renderer.read_color();
 }

@@ -94,20 +94,8 @@ std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s,
         draws.batches.push_back(
             {render_pass::opaque, mesh, 0, std::uint32_t(instances.size()), count});
     const cascade_set cascades;
-    const point_line_quality quality{1.0f, 1.3f, true, style};
-    render::frame_view view;
-    view.view_camera = &s.cam;
-    view.sun_light = &s.light;
-    view.sky = &s.sky;
-    view.cascades = &cascades;
-    view.draws = &draws;
-    view.terrain_position = glm::vec3(-s.cam.position);
-    view.splat_px = splat_size_px(quality);
-    view.splat_plane =
-        float(image_plane_units(view.splat_px, s.cam.fov_y, s.cam.viewport_height_px));
-    view.soft_splats = style == splat_style::soft;
-    view.soft_splat_px = soft_splat_size_px(quality);
-    view.soft_splat_alpha = soft_splat_peak_alpha(quality);
+    render::frame_view view = testing::make_view(s.cam, s.light, s.sky, cascades, draws);
+    view.set_samples({1.0f, 1.3f, true, style});
     renderer.render(view);
     renderer.finish();
     const image_rgba8 image = renderer.read_color();
