@@ -3,8 +3,8 @@
 // texture layer) per instance. SHADOW_PASS renders depth from the sun's cascade instead.
 // WRITE_ID (measurement) passes the draw-list instance index on for the ID buffer.
 // PRIMITIVE_POINTS draws the point representation (Deussen 2002 §5.1): each point a square
-// splat of u_splat_px pixels on screen; in a shadow cascade the same world footprint (the
-// splat's image-plane size times the distance from the eye) in shadow-map texels.
+// splat of u_splat_px pixels on screen; in a shadow cascade a splat as wide as the casters are
+// spaced (systems/point_line_lod.h k_shadow_sample_texels), pushed away from the sun.
 // SPLAT_VISIBILITY draws them as opaque splats into depth only, pushed back along the view ray,
 // and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h); the
 // instance's fade is then the prefix's fractional length (build_draw_list): splat j of the
@@ -62,8 +62,13 @@ flat out float v_opacity;  // of this splat: 1, or less for a fractional prefix'
 #endif
 #ifdef PRIMITIVE_POINTS
 uniform float u_splat_px;     // splat side on screen, pixels
-uniform float u_splat_plane;  // the same on the image plane at distance one
-uniform float u_splat_texels; // smallest splat in a shadow map, texels (√c_p: c_p texels' area)
+// The same on the image plane at distance one; in a shadow cascade, the casters' spacing there
+// (k_shadow_sample_spacing·d'), which is also their width (c_p = 1).
+uniform float u_splat_plane;
+#ifdef SHADOW_PASS
+uniform float u_splat_texels;  // smallest shadow splat, texels (k_shadow_sample_texels)
+uniform float u_shadow_push;   // widths each moves away from the sun (k_shadow_splat_push)
+#endif
 #endif
 #ifdef SPLAT_VISIBILITY
 // ε / distance: k_soft_splat_depth_offset splat sides on the image plane at distance one, so the
@@ -142,9 +147,15 @@ void main() {
     if (rank % u_visibility_stride != 0 || in_instance_scale_tint_fade_layer.z < float(rank) + 1.0)
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
 #elif defined(SHADOW_PASS)
-    gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
+    // Away from the sun along its ray by u_shadow_push of its own widths: the splat then shades
+    // what lies behind the leaves it stands for, not the leaves beside it (point_line_lod.h
+    // k_shadow_splat_push). Where its shadow falls is unchanged.
     gl_PointSize = max(u_splat_texels, u_splat_plane * length(world) / u_cascade_texel_world[u_cascade]);
+    vec3 pushed = world - u_sun_direction.xyz * (u_shadow_push * gl_PointSize * u_cascade_texel_world[u_cascade]);
+    gl_Position = u_cascade_view_projection[u_cascade] * vec4(pushed, 1.0);
+#else
+    gl_Position = u_cascade_view_projection[u_cascade] * vec4(world, 1.0);
 #endif
 #else
     gl_Position = u_view_projection * vec4(world, 1.0);

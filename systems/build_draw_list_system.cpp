@@ -65,8 +65,11 @@ class draw_builder {
 public:
     draw_builder(const camera& cam, const species_library& library, const cascade_set& cascades,
                  const lod_policy& policy, const primitive_costs& costs)
-        : m_camera(cam), m_library(library), m_cascade_set(cascades), m_splat_factor(policy.points.splat_factor),
-          m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y, cam.viewport_height_px)),
+        : m_camera(cam),
+          m_library(library),
+          m_cascade_set(cascades),
+          m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y,
+                                              cam.viewport_height_px)),
           m_costs(costs) {
         m_cascade_count = cascades.count;
         for (int c = 0; c < cascades.count; ++c)
@@ -112,7 +115,7 @@ public:
             if (!(d.pass_mask & (1u << unsigned(shadow_pass(c))))) continue;
             const double texel =
                 std::max(k_shadow_sample_texels * double(m_cascade_set.texel_world_size[std::size_t(c)]), seen_m);
-            add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_splat_factor, m_costs), d,
+            add_prefixes(parts, compute_shadow_prefix(m_library, parts, t.scale, texel, m_costs), d,
                          shadow_pass(c));
         }
         return d;
@@ -134,7 +137,6 @@ private:
     const camera& m_camera;
     const species_library& m_library;
     const cascade_set& m_cascade_set;
-    double m_splat_factor = 1.3;
     double m_sample_distance = 0.0;  // d' on the image plane
     const primitive_costs& m_costs;
     std::array<cascade_bounds, k_max_cascades> m_cascades{};

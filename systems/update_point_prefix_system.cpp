@@ -59,7 +59,8 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
 }
 
 point_prefix compute_shadow_prefix(const species_library& library, part_range parts, float scale,
-                                   double texel_world_m, double splat_factor, const primitive_costs& costs) {
+                                   double texel_world_m, const primitive_costs& costs) {
+    constexpr double splat_factor = 1.0;  // casters cover the leaf area exactly
     point_prefix prefix;
     const double s = double(scale);
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {

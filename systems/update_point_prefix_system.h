@@ -42,11 +42,12 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
                                   std::optional<std::uint32_t> dither_seed = std::nullopt,
                                   bool fade_last = false);
 
-// The prefixes of one plant in a shadow cascade whose texel is `texel_world_m` wide: the
-// texel is the sample distance there (the shadow map sees every part at its own size, so
-// Eq. 1 becomes p = c_p·½·A/τ² and Eq. 2 q = A/(l·τ), with ε_l >= τ for polygons).
+// The prefixes of one plant in a shadow cascade sampled every `texel_world_m` metres: that is
+// the sample distance there (the shadow map sees every part at its own size, so Eq. 1 becomes
+// p = c_p·½·A/τ² and Eq. 2 q = A/(l·τ), with ε_l >= τ for polygons), with c_p = 1: shadow
+// splats τ wide then cover exactly the leaf area (point_line_lod.h k_shadow_sample_texels).
 point_prefix compute_shadow_prefix(const species_library& library, part_range parts, float scale,
-                                   double texel_world_m, double splat_factor, const primitive_costs& costs = {});
+                                   double texel_world_m, const primitive_costs& costs = {});
 
 // A part's centre in world space (the instance's position, yaw and scale applied).
 glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& t);

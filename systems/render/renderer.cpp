@@ -195,6 +195,8 @@ void frame_view::set_samples(const point_line_quality& quality) {
     splat_px = splat_size_px(quality);
     splat_plane =
         float(image_plane_units(splat_px, view_camera->fov_y, view_camera->viewport_height_px));
+    sample_plane = float(image_plane_units(quality.sample_distance_px, view_camera->fov_y,
+                                           view_camera->viewport_height_px));
     line_width_px = quality.sample_distance_px;
     soft_splats = quality.splats == splat_style::soft;
     soft_splat_px = soft_splat_size_px(quality);
@@ -533,14 +535,18 @@ void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int c
                     glEnable(GL_PROGRAM_POINT_SIZE);
                     glUniform1f(glGetUniformLocation(program, "u_splat_px"),
                                 pass == sample_pass::soft_splats ? m_soft_splat_px : m_splat_px);
+                    // A cascade's splats are as wide as its samples are apart (c_p = 1,
+                    // compute_shadow_prefix): k_shadow_sample_texels texels, or
+                    // k_shadow_sample_spacing times the viewer's sample distance there.
                     glUniform1f(
                         glGetUniformLocation(program, "u_splat_plane"),
-                        shadow ? float(k_shadow_sample_spacing) * m_splat_plane : m_splat_plane);
-                    // compute_shadow_prefix counts splats of c_p·s² texels' area where s, the
-                    // sample distance, is k_shadow_sample_texels texels: s·√c_p = s·splat / d'.
-                    glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
-                                float(k_shadow_sample_texels) *
-                                    std::max(1.0f, m_splat_px / std::max(m_line_width_px, 1e-6f)));
+                        shadow ? float(k_shadow_sample_spacing) * m_sample_plane : m_splat_plane);
+                    if (shadow) {
+                        glUniform1f(glGetUniformLocation(program, "u_splat_texels"),
+                                    float(k_shadow_sample_texels));
+                        glUniform1f(glGetUniformLocation(program, "u_shadow_push"),
+                                    float(k_shadow_splat_push));
+                    }
                 } else if (!shadow && m_line_width_px > k_native_line_width_px) {
                     glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
                     glUniform2f(glGetUniformLocation(program, "u_viewport_px"),
@@ -599,6 +605,7 @@ void renderer::render(const frame_view& view) {
     m_draw_calls = 0;
     m_splat_px = view.splat_px;
     m_splat_plane = view.splat_plane;
+    m_sample_plane = view.sample_plane;
     m_line_width_px = view.line_width_px;
     m_soft_splats = view.soft_splats;
     m_soft_splat_px = view.soft_splat_px;

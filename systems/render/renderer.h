@@ -55,9 +55,11 @@ struct frame_view {
     glm::vec3 terrain_position{0.0f};  // camera-relative
     float time_s = 0.0f;
     // The point/line representation (Deussen 2002 §5): splat side in pixels and in image-plane
-    // units at distance one, and line width d' in pixels.
+    // units at distance one, the sample distance d' on the image plane (shadow casters are
+    // spaced by it, point_line_lod.h k_shadow_sample_spacing), and line width d' in pixels.
     float splat_px = 1.0f;
     float splat_plane = 0.0f;
+    float sample_plane = 0.0f;
     float line_width_px = 1.0f;
     // Soft splats (systems/point_line_lod.h): points are drawn after the sky, first as opaque
     // splats of splat_px into depth only (pushed back by k_soft_splat_depth_offset splats), then
@@ -184,6 +186,7 @@ private:
     std::array<std::vector<indirect_command>, k_command_groups> m_command_groups;
     std::size_t m_uniform_offset = 0;
     float m_splat_px = 1.0f;
+    float m_sample_plane = 0.0f;
     float m_splat_plane = 0.0f;
     float m_line_width_px = 1.0f;
     bool m_soft_splats = false;

@@ -266,6 +266,27 @@ TEST(update_point_prefix, octree_cells_of_one_plant_choose_independently) {
     EXPECT_EQ(opaque, (std::vector<std::pair<std::uint16_t, std::uint32_t>>{{0, 10}, {3, 2}}));
 }
 
+TEST(update_point_prefix, shadow_casters_cover_exactly_the_leaf_area) {
+    // A cascade sampled every τ = 0.048 m: p = ½·A/τ² with c_p = 1 (point_line_lod.h
+    // k_shadow_sample_texels), = 0.04/0.002304 = 17.36 → the first 17 points (c_p = 1.3 would
+    // ask for 22.57: 2 triangles and 16 points). Splats τ wide then cover 17·τ² = 0.039 m², the
+    // part's ½·A = 0.04. The line part: ε_l = 0.01 < τ and lines 5/(2·10) = 0.25 m long > τ, so
+    // Eq. 2's q = A_l/(l·τ) = 0.18/0.24 = 0.75 → 7.5 of its 10 lines, rounded to nearest: 8.
+    prefix_scene scene({1.0});
+    const species_library& library = scene.world.resource<species_library>();
+    const point_prefix p = compute_shadow_prefix(library, parts_of(library.species[0]), 1.0f, 0.048,
+                                                 primitive_costs{});
+    EXPECT_EQ(p.triangles[0], 0u);
+    EXPECT_EQ(p.primitives[0], 17u);
+    EXPECT_EQ(p.triangles[1], 0u);
+    EXPECT_EQ(p.primitives[1], 8u);
+    EXPECT_EQ(p.splats[1], 0u);
+    // Scale 2: four times the area, p = 69.4 >= 3k → all 10 triangles.
+    EXPECT_EQ(
+        compute_shadow_prefix(library, parts_of(library.species[0]), 2.0f, 0.048).triangles[0],
+        10u);
+}
+
 TEST(update_point_prefix, the_part_centre_follows_the_instance_yaw_and_scale) {
     lod_part_entry part;
     part.center = {1.0f, 2.0f, 0.0f};
