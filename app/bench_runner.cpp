@@ -273,25 +273,29 @@ bench_configuration_spec baseline(float distance_m, bool named_baseline) {
 }
 
 // Deussen 2002: every plant as prefixes of its random-order triangles, points and lines, with
-// sample distance d' (pixels); the sweep trades error for time (§5.4). Soft splats by default;
-// `_opaque` draws the paper's opaque squares.
+// sample distance d' (pixels); the sweep trades error for time (§5.4). Soft splats, fog-weighted,
+// by default; `_opaque` draws the paper's opaque squares, `_uniform` spaces samples d' apart
+// however much fog lies between them and the eye (point_line_lod.h fog_sample_distance).
 bench_configuration_spec points_lines(float sample_distance_px,
-                                      splat_style splats = splat_style::soft) {
+                                      splat_style splats = splat_style::soft,
+                                      bool fog_weighted = true) {
     bench_configuration_spec c;
     std::ostringstream name;
     name << "points_lines";
     if (sample_distance_px != 1.0f) name << "_d" << sample_distance_px;
     if (splats == splat_style::opaque) name << "_opaque";
+    if (!fog_weighted) name << "_uniform";
     c.name = name.str();
     c.family = "points_lines";
     std::ostringstream description;
     description << "points and lines (Deussen 2002), d' = " << sample_distance_px
                 << " px, c_p = 1.3, "
-                << (splats == splat_style::soft ? "soft splats" : "opaque splats (the paper's)");
+                << (splats == splat_style::soft ? "soft splats" : "opaque splats (the paper's)")
+                << (fog_weighted ? ", fog-weighted" : ", d' everywhere (no fog weighting)");
     c.description = description.str();
     c.quality = sample_distance_px;
     c.options.policy.mode = lod_policy::kind::points_lines;
-    c.options.policy.points = {sample_distance_px, 1.3f, true, splats};
+    c.options.policy.points = {sample_distance_px, 1.3f, true, splats, fog_weighted};
     return c;
 }
 
@@ -349,8 +353,9 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
     list.push_back(billboard_clouds("sh"));
-    for (float d : {1.0f, 0.5f, 2.0f, 3.0f, 4.0f}) list.push_back(points_lines(d));
+    for (float d : {1.0f, 0.5f, 2.0f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
+    for (float d : {1.0f, 2.0f, 3.0f}) list.push_back(points_lines(d, splat_style::soft, false));
     // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
     // with about 1 M primitives).
     bench_configuration_spec budget = points_lines(1.0f);

@@ -70,7 +70,8 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         s.lod.representation == "points_lines") {
         policy.mode = lod_policy::kind::points_lines;
         policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
-                         s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft};
+                         s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
+                         s.lod.fog_weighted_samples};
     }
     if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels &&
         s.lod.representation == "billboard_clouds") {

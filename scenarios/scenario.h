@@ -137,6 +137,9 @@
 //     splats             string  "soft" "soft" (Gaussian splats that each deposit the leaf area
 //                                       they stand for, composited over a visibility pass;
 //                                       our extension) or "opaque" (the paper's opaque squares)
+//     fog_weighted_samples bool true   space a fogged plant's points d'/√T apart, T the share
+//                                       of its colour the fog leaves (splats grow to match, at
+//                                       most 4 d'; our extension); false: d' everywhere
 //     primitive_budget   number  0      0 .. 1e9; with points_lines, d' is adapted every frame
 //                                       to draw about this many triangle equivalents (points
 //                                       and lines weighed by their cost; Deussen 2002 §5.4);
@@ -313,6 +316,7 @@ struct lod_settings {
     float sample_distance_px = 1.0f;
     float splat_factor = 1.3f;
     std::string splats = "soft";  // one of k_splat_styles
+    bool fog_weighted_samples = true;
     double primitive_budget = 0.0;
     double target_frame_ms = 0.0;
     float cloud_distance_m = 30.0f;

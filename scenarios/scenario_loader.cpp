@@ -333,6 +333,7 @@ const field_table<lod_settings>& lod_fields() {
                                           {0.05, 64.0})
                                   .number("splat_factor", &t::splat_factor, {1.0, 4.0})
                                   .choice("splats", &t::splats, k_splat_styles)
+                                  .boolean("fog_weighted_samples", &t::fog_weighted_samples)
                                   .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
                                   .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
                                   .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})

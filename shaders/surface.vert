@@ -68,6 +68,13 @@ uniform float u_splat_plane;
 #ifdef SHADOW_PASS
 uniform float u_splat_texels;  // smallest shadow splat, texels (k_shadow_sample_texels)
 uniform float u_shadow_push;   // widths each moves away from the sun (k_shadow_splat_push)
+#else
+// Fog-weighted sampling (point_line_lod.h fog_sample_distance): the prefix spaced a fogged
+// part's samples d'·exp(ρ·r/2) apart, at most u_sample_growth_max·d', so its splats grow by the
+// same factor, here from each splat's own distance. ρ = 0: no growth.
+uniform float u_sample_fog;
+uniform float u_sample_growth_max;
+float splat_growth(vec3 world) { return min(exp(0.5 * u_sample_fog * length(world)), u_sample_growth_max); }
 #endif
 #endif
 #ifdef SPLAT_VISIBILITY
@@ -138,8 +145,9 @@ void main() {
 #endif
 #endif
 #if defined(SPLAT_VISIBILITY)
-    gl_Position = u_view_projection * vec4(world * (1.0 + u_depth_push), 1.0);
-    gl_PointSize = u_splat_px;
+    float growth = splat_growth(world);
+    gl_Position = u_view_projection * vec4(world * (1.0 + u_depth_push * growth), 1.0);
+    gl_PointSize = u_splat_px * growth;
     // Every u_visibility_stride-th splat of the prefix only. A fractional prefix's last splat
     // (instance fade < its index + 1) hides nothing until it is whole: it fades in over what is
     // behind it.
@@ -160,7 +168,7 @@ void main() {
 #else
     gl_Position = u_view_projection * vec4(world, 1.0);
 #ifdef PRIMITIVE_POINTS
-    gl_PointSize = u_splat_px;
+    gl_PointSize = u_splat_px * splat_growth(world);
 #ifdef SOFT_SPLATS
     v_opacity = clamp(in_instance_scale_tint_fade_layer.z - float(gl_VertexID - gl_BaseVertexARB), 0.0, 1.0);
 #endif

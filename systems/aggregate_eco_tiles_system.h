@@ -30,9 +30,11 @@ struct tile_point_draws {
 
 // The prefix lengths of one tile's sets seen from `distance_m`, or nothing when some set holds
 // too few samples (or a line set would be polygons): then the tile is not drawn as a whole.
-// `sample_distance` is d' on the image plane. Pure, for tests.
-bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double distance_m, double sample_distance,
-                   double splat_factor, std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& splats);
+// `sample_distance` is d' on the image plane; with `fog_density_per_m`, splats are spaced by
+// fog_sample_distance at the tile's distance (point_line_lod.h). Pure, for tests.
+bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double distance_m,
+                   double sample_distance, double splat_factor, std::vector<std::uint32_t>& counts,
+                   std::vector<std::uint8_t>& splats, double fog_density_per_m = 0.0);
 
 struct aggregate_eco_tiles_system {
     static constexpr std::string_view k_name = "aggregate_eco_tiles";

@@ -15,6 +15,11 @@ double projected_area(double area_m2, double distance_m) {
     return 0.5 * area_m2 / (distance_m * distance_m);
 }
 
+double fog_sample_distance(double sample_distance, double distance_m, double fog_density_per_m) {
+    return sample_distance *
+           std::min(std::exp(0.5 * fog_density_per_m * distance_m), k_fog_sample_growth_max);
+}
+
 double required_points(double area_m2, double distance_m, double sample_distance, double splat_factor) {
     if (!(distance_m > 0.0)) return distance_m == 0.0 ? std::numeric_limits<double>::infinity() : std::nan("");
     // Deussen 2002 Eq. 1: p = c_p·A'_p / A'_sp, A'_sp = d'² (see the header on the n_p factor).

@@ -26,6 +26,8 @@ struct point_line_quality {
     bool dither = true;
     // How a splat is drawn: soft (our extension, below) or opaque squares as in the paper.
     splat_style splats = splat_style::soft;
+    // Space a fogged plant's samples by what the fog leaves of it (fog_sample_distance).
+    bool fog_weighted = true;
 };
 
 // d' in image-plane units (the image plane at distance one) from d' in pixels.
@@ -34,6 +36,18 @@ double image_plane_units(double pixels, double fov_y_radians, double viewport_he
 // Deussen 2002 Eq. 1, left: A'_p = ½·A_p / r². The projected area of a part of world area
 // `area_m2` whose leaves are randomly oriented (the ½) seen from distance r.
 double projected_area(double area_m2, double distance_m);
+
+// Fog-weighted sampling (our extension of Eq. 1). Through fog a plant r metres away keeps only
+// T(r) = exp(−ρ·r) of its contrast against the fog (systems/lighting/fog.h), and so does any
+// error its representation makes: coarser samples there cost T(r) times less in the image. Its
+// parts are therefore sampled with d'/√T(r) = d'·exp(ρ·r/2) in place of d', so that Eq. 1's
+// count falls with T(r) (p ∝ 1/d'²) and the samples spent follow the contrast they buy; at most
+// k_fog_sample_growth_max·d' (T = 1/16, 3 km in the default fog), so the farthest splats stay
+// small. Splats grow by the same factor (shaders/surface.vert, per splat from its own distance),
+// so each still covers, or deposits, what Eq. 1 assigns it and coverage is unchanged. Points and
+// lines drawn as splats only: a real line keeps d' (it is drawn d' wide). ρ = 0: plain d'.
+inline constexpr double k_fog_sample_growth_max = 4.0;
+double fog_sample_distance(double sample_distance, double distance_m, double fog_density_per_m);
 
 // Deussen 2002 Eq. 1, right: p = c_p·(A'_p / A'_sp)·n_p with A'_sp = d'². The paper multiplies
 // by n_p while writing A_p for the part's area; the product is dimensionally a count only when

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
+#include "systems/lighting/fog.h"
 
 namespace sylva {
 
@@ -23,7 +24,8 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
                                   const world_transform& t, const glm::dvec3& eye,
                                   double sample_distance, double splat_factor,
                                   const primitive_costs& costs,
-                                  std::optional<std::uint32_t> dither_seed, bool fade_last) {
+                                  std::optional<std::uint32_t> dither_seed, bool fade_last,
+                                  double fog_density_per_m) {
     point_prefix prefix;
     const double scale = double(t.scale);
     for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
@@ -31,9 +33,10 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
         const double r = glm::length(part_world_center(part, t) - eye);
         const double area = double(part.area_m2) * scale * scale;
         const double dither = dither_seed ? sample_dither(*dither_seed, i) : -1.0;
+        const double splat_distance = fog_sample_distance(sample_distance, r, fog_density_per_m);
         part_draw d;
         if (part.primitive == lod_primitive::points) {
-            const double exact = required_points(area, r, sample_distance, splat_factor);
+            const double exact = required_points(area, r, splat_distance, splat_factor);
             const double p = !fade_last && dither >= 0.0 ? std::floor(exact + dither) : exact;
             const auto after =
                 std::span(library.points_after).subspan(part.first_after, part.triangle_count + 1);
@@ -47,9 +50,15 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
                 prefix.last_fade[i] = std::uint8_t(std::lround(255.0 * (whole + 1.0 - exact)));
             }
         } else {
-            d = select_lines(area, double(part.line_length_m) * scale, double(part.line_error_m) * scale,
-                             part.primitive_count, part.triangle_count, r, sample_distance, costs, part.importance,
-                             splat_factor, dither >= 0.0 ? dither : 0.5);
+            // Splats at the lines' ends are spaced as points are; lines drawn d' wide keep d'.
+            auto lines = [&](double spacing) {
+                return select_lines(area, double(part.line_length_m) * scale,
+                                    double(part.line_error_m) * scale, part.primitive_count,
+                                    part.triangle_count, r, spacing, costs, part.importance,
+                                    splat_factor, dither >= 0.0 ? dither : 0.5);
+            };
+            d = lines(splat_distance);
+            if (!d.splats) d = lines(sample_distance);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;
@@ -92,6 +101,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const double c_p = policy.points.splat_factor;
     const bool dither = policy.points.dither;
     const bool fade_last = policy.points.splats == splat_style::soft;
+    const double fog = policy.points.fog_weighted ? k_fog_density_per_m : 0.0;
     const primitive_costs& costs = ctx.resource<primitive_costs>();
     auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
     ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -104,7 +114,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
             prefix =
                 compute_point_prefix(library, parts_of(species), t, cam.position, d, c_p, costs,
-                                     dither ? std::optional(p.seed) : std::nullopt, fade_last);
+                                     dither ? std::optional(p.seed) : std::nullopt, fade_last, fog);
         });
     });
     // §6.1: each octree cell of a big plant chooses on its own, r measured to its parts.
@@ -122,7 +132,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
                 library, parts_of(library.cells[cell.cell]), transforms[cell.plant], cam.position,
                 d, c_p, costs,
                 dither ? std::optional(instances[cell.plant].seed ^ cell.cell) : std::nullopt,
-                fade_last);
+                fade_last, fog);
         });
     });
 }

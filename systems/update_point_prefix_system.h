@@ -34,13 +34,14 @@ part_range parts_of(const lod_cell_entry& cell);
 // Point and splat counts are rounded down after adding sample_dither(dither_seed, part)
 // (nullopt: plain rounding down for points, to nearest for splats). With `fade_last` (soft
 // splats), a part drawn as points only draws ⌈p⌉ of them instead, the last faded to p − ⌊p⌋
-// (point_prefix::last_fade).
+// (point_prefix::last_fade). With `fog_density_per_m`, points and splats are spaced by
+// fog_sample_distance at each part's distance (point_line_lod.h); lines keep d'.
 point_prefix compute_point_prefix(const species_library& library, part_range parts,
                                   const world_transform& t, const glm::dvec3& eye,
                                   double sample_distance, double splat_factor,
                                   const primitive_costs& costs = {},
                                   std::optional<std::uint32_t> dither_seed = std::nullopt,
-                                  bool fade_last = false);
+                                  bool fade_last = false, double fog_density_per_m = 0.0);
 
 // The prefixes of one plant in a shadow cascade sampled every `texel_world_m` metres: that is
 // the sample distance there (the shadow map sees every part at its own size, so Eq. 1 becomes

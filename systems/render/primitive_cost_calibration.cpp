@@ -82,7 +82,9 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     view.cascades = &cascades;
     view.draws = &list;
     view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
-    view.set_samples({settings.sample_distance_px, settings.splat_factor, true, settings.splats});
+    // Splats of one size: the cost of a primitive, not of the fog's larger far splats.
+    view.set_samples(
+        {settings.sample_distance_px, settings.splat_factor, true, settings.splats, false});
 
     auto time_frame = [&](int which) {
         list.instances.clear();

@@ -10,6 +10,7 @@
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/lighting/environment_map.h"
+#include "systems/lighting/fog.h"
 #include "systems/lighting/sky_model.h"
 #include "systems/point_line_lod.h"
 #include "systems/project_environment_system.h"
@@ -22,7 +23,6 @@ namespace {
 constexpr GLuint k_instance_binding = 1;
 constexpr int k_sky_width = 128;
 constexpr int k_sky_height = 64;
-constexpr float k_fog_density = 0.0009f;
 // Lines up to this width (pixels) are drawn as GL's one-pixel lines, wider ones by line.geom.
 constexpr float k_native_line_width_px = 1.25f;
 
@@ -198,6 +198,7 @@ void frame_view::set_samples(const point_line_quality& quality) {
     sample_plane = float(image_plane_units(quality.sample_distance_px, view_camera->fov_y,
                                            view_camera->viewport_height_px));
     line_width_px = quality.sample_distance_px;
+    sample_fog = quality.fog_weighted ? float(k_fog_density_per_m) : 0.0f;
     soft_splats = quality.splats == splat_style::soft;
     soft_splat_px = soft_splat_size_px(quality);
     soft_splat_alpha = soft_splat_peak_alpha(quality);
@@ -305,7 +306,7 @@ void renderer::write_uniforms(const frame_view& view) {
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
     glm::vec3 horizon{0.0f};
     for (int i = 0; i < 9; ++i) horizon += view.sky->irradiance_sh[std::size_t(i)] * (i == 0 ? 0.282095f : 0.0f);
-    u.fog = glm::vec4(horizon / std::numbers::pi_v<float> * 0.9f, k_fog_density);
+    u.fog = glm::vec4(horizon / std::numbers::pi_v<float> * 0.9f, float(k_fog_density_per_m));
     const float texel = m_shadow_maps ? 1.0f / float(m_shadow_maps->resolution()) : 0.0f;
     u.params = glm::vec4(m_settings.exposure, texel, view.time_s, 1.0f / m_ground_uv_scale);
 
@@ -546,6 +547,10 @@ void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int c
                                     float(k_shadow_sample_texels));
                         glUniform1f(glGetUniformLocation(program, "u_shadow_push"),
                                     float(k_shadow_splat_push));
+                    } else {
+                        glUniform1f(glGetUniformLocation(program, "u_sample_fog"), m_sample_fog);
+                        glUniform1f(glGetUniformLocation(program, "u_sample_growth_max"),
+                                    float(k_fog_sample_growth_max));
                     }
                 } else if (!shadow && m_line_width_px > k_native_line_width_px) {
                     glUniform1f(glGetUniformLocation(program, "u_line_width_px"), m_line_width_px);
@@ -606,6 +611,7 @@ void renderer::render(const frame_view& view) {
     m_splat_px = view.splat_px;
     m_splat_plane = view.splat_plane;
     m_sample_plane = view.sample_plane;
+    m_sample_fog = view.sample_fog;
     m_line_width_px = view.line_width_px;
     m_soft_splats = view.soft_splats;
     m_soft_splat_px = view.soft_splat_px;

@@ -61,6 +61,9 @@ struct frame_view {
     float splat_plane = 0.0f;
     float sample_plane = 0.0f;
     float line_width_px = 1.0f;
+    // Fog density by which splats grow with distance (point_line_lod.h fog_sample_distance; 0:
+    // they do not), as the prefixes were counted.
+    float sample_fog = 0.0f;
     // Soft splats (systems/point_line_lod.h): points are drawn after the sky, first as opaque
     // splats of splat_px into depth only (pushed back by k_soft_splat_depth_offset splats), then
     // as Gaussians of soft_splat_px with this peak opacity, blended over what is there.
@@ -187,6 +190,7 @@ private:
     std::size_t m_uniform_offset = 0;
     float m_splat_px = 1.0f;
     float m_sample_plane = 0.0f;
+    float m_sample_fog = 0.0f;
     float m_splat_plane = 0.0f;
     float m_line_width_px = 1.0f;
     bool m_soft_splats = false;

@@ -78,10 +78,11 @@ struct placed {
 };
 
 // One frame of `instances` of `mesh` (the first `count` splats of each; 0: all), with soft or
-// opaque splats at d' = 1 px, c_p = 1.3; no shadows. Returns the image's luma.
+// opaque splats at d' = 1 px, c_p = 1.3, grown by `sample_fog` (frame_view::sample_fog); no
+// shadows. Returns the image's luma.
 std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s, std::uint16_t mesh,
                                const std::vector<placed>& instances, splat_style style,
-                               std::uint32_t count = 0) {
+                               std::uint32_t count = 0, float sample_fog = 0.0f) {
     draw_list draws;
     for (const placed& p : instances) {
         instance_gpu i;
@@ -95,7 +96,8 @@ std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s,
             {render_pass::opaque, mesh, 0, std::uint32_t(instances.size()), count});
     const cascade_set cascades;
     render::frame_view view = testing::make_view(s.cam, s.light, s.sky, cascades, draws);
-    view.set_samples({1.0f, 1.3f, true, style});
+    view.set_samples({1.0f, 1.3f, true, style, false});
+    view.sample_fog = sample_fog;
     renderer.render(view);
     renderer.finish();
     const image_rgba8 image = renderer.read_color();
@@ -196,6 +198,23 @@ TEST(soft_splat_gl, a_fractional_prefix_draws_its_last_splat_at_the_fraction) {
     // amount: compare with the whole prefixes on either side.
     EXPECT_LT(two, 0.8 * three);
     EXPECT_NEAR(two_and_a_half, 0.5 * (two + three), 0.04 * three);
+}
+
+// Fog-weighted sampling (point_line_lod.h fog_sample_distance): a prefix counted with samples
+// d'·exp(ρ·r/2) apart is drawn with splats grown by the same factor, from each splat's own
+// distance. The sparse field 39 m below the eye with ρ = 0.02 (fifty times the scene fog, for a
+// clear factor): every splat grows exp(0.01·39) = 1.477 times, its area 2.18 times.
+TEST(soft_splat_gl, fogged_splats_grow_as_their_samples_were_spaced) {
+    SYLVA_REQUIRE_GL();
+    gl_fixture f;
+    const auto empty = render_luma(f.renderer, f.scene, 1, {}, splat_style::opaque);
+    const std::vector<placed> field{{{0.0, 1.0, 0.0}}};
+    const double plain =
+        summed_difference(render_luma(f.renderer, f.scene, 1, field, splat_style::opaque), empty);
+    const double grown = summed_difference(
+        render_luma(f.renderer, f.scene, 1, field, splat_style::opaque, 0, 0.02f), empty);
+    ASSERT_GT(plain, 144 * 1.3 * 30.0);
+    EXPECT_NEAR(grown / plain, std::exp(0.02 * 39.0), 0.25);
 }
 
 }  // namespace

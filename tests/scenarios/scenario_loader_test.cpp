@@ -321,7 +321,8 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
         {"/render/msaa", "shadows, exposure"},
         {"/lod/d",
-         "representation, sample_distance_px, splat_factor, splats, primitive_budget, "
+         "representation, sample_distance_px, splat_factor, splats, fog_weighted_samples, "
+         "primitive_budget, "
          "target_frame_ms, "
          "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
     };
@@ -731,6 +732,22 @@ TEST(scenario_loader, lod_section_and_species_importance_load_and_round_trip) {
     EXPECT_EQ(s.species[0].octree_depth, 1u);
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
     EXPECT_EQ(load(minimal()).lod.representation, "mesh_levels");
+}
+
+TEST(scenario_loader, fog_weighted_samples_default_on_and_round_trip) {
+    EXPECT_TRUE(load(minimal()).lod.fog_weighted_samples);
+    json j = minimal();
+    j["lod"] = {{"representation", "points_lines"}, {"fog_weighted_samples", false}};
+    const scenario s = load(j);
+    EXPECT_FALSE(s.lod.fog_weighted_samples);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    j["lod"]["fog_weighted_samples"] = "yes";
+    try {
+        load(j);
+        FAIL() << "a string is not a boolean";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), "/lod/fog_weighted_samples");
+    }
 }
 
 TEST(scenario_loader, splat_style_loads_defaults_to_soft_and_rejects_other_names) {

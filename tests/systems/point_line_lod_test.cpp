@@ -8,6 +8,8 @@
 #include <numbers>
 #include <vector>
 
+#include "systems/lighting/fog.h"
+
 namespace sylva {
 namespace {
 
@@ -37,6 +39,18 @@ TEST(point_line_lod, eq1_points_cover_the_projected_area_cp_times_with_splats_of
     EXPECT_NEAR(required_points(0.08, 20.0, 0.004, 1.0), 6.25, 1e-9);
     EXPECT_TRUE(std::isinf(required_points(1.0, 0.0, 0.004, 1.0)));
     EXPECT_TRUE(std::isnan(required_points(1.0, std::nan(""), 0.004, 1.0)));
+}
+
+TEST(point_line_lod, fog_spaces_samples_by_one_over_the_root_of_the_transmittance) {
+    // d' = 0.004 at 1 km in ρ = 0.0009 fog: T = exp(−0.9) = 0.40657, d'/√T = 0.004·exp(0.45)
+    // = 0.004·1.568312 = 0.0062732, so Eq. 1 asks for T = 0.40657 of the points.
+    EXPECT_NEAR(fog_sample_distance(0.004, 1000.0, 0.0009), 0.0062732, 1e-7);
+    EXPECT_NEAR(std::pow(0.004 / fog_sample_distance(0.004, 1000.0, 0.0009), 2.0),
+                fog_transmittance(1000.0, 0.0009), 1e-9);
+    // At 5 km exp(2.25) = 9.49 is capped at k_fog_sample_growth_max = 4: 0.016.
+    EXPECT_NEAR(fog_sample_distance(0.004, 5000.0, 0.0009), 0.016, 1e-12);
+    // No fog, no growth.
+    EXPECT_EQ(fog_sample_distance(0.004, 1000.0, 0.0), 0.004);
 }
 
 TEST(point_line_lod, blend_draws_every_triangle_from_three_points_per_triangle) {

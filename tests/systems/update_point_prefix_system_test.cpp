@@ -88,6 +88,7 @@ struct prefix_scene {
         policy.points = {1.0f, 1.0f};
         policy.points.dither = dither;
         policy.points.splats = splats;
+        policy.points.fog_weighted = false;  // the paper's d' everywhere, as the hand values
         world.set_resource(policy);
         world.set_resource(primitive_costs{});  // the paper's: a triangle costs three points
         world.set_resource(tile_point_sets{});
@@ -285,6 +286,27 @@ TEST(update_point_prefix, shadow_casters_cover_exactly_the_leaf_area) {
     EXPECT_EQ(
         compute_shadow_prefix(library, parts_of(library.species[0]), 2.0f, 0.048).triangles[0],
         10u);
+}
+
+TEST(update_point_prefix, fog_spaces_a_parts_points_by_what_the_fog_leaves_of_it) {
+    // r = 13 with fog ρ = 0.02: d' grows by exp(ρ·r/2) = exp(0.13), so p = 14.793·exp(−0.26)
+    // = 14.793·0.771052 = 11.41 → the first 11 points (14 without fog). The line part's lines
+    // are 5/(2·13·10) = 0.0192 long on the image plane, longer than d' even grown (0.00456): they
+    // stay lines, d' wide, and keep d' itself: q = 0.692 → 7 lines, as without fog.
+    prefix_scene scene({13.0});
+    const species_library& library = scene.world.resource<species_library>();
+    const world_transform t{{0.0, 0.0, -13.0}, 0.7f, 1.0f};
+    const glm::dvec3 eye{0.0};
+    const point_prefix plain = compute_point_prefix(library, parts_of(library.species[0]), t, eye,
+                                                    0.004, 1.0, primitive_costs{});
+    const point_prefix fogged =
+        compute_point_prefix(library, parts_of(library.species[0]), t, eye, 0.004, 1.0,
+                             primitive_costs{}, std::nullopt, false, 0.02);
+    EXPECT_EQ(plain.primitives[0], 14u);
+    EXPECT_EQ(fogged.primitives[0], 11u);
+    EXPECT_EQ(plain.primitives[1], 7u);
+    EXPECT_EQ(fogged.primitives[1], 7u);
+    EXPECT_EQ(fogged.splats[1], 0u);
 }
 
 TEST(update_point_prefix, the_part_centre_follows_the_instance_yaw_and_scale) {
