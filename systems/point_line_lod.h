@@ -174,6 +174,10 @@ inline constexpr float k_soft_splat_depth_offset = 5.0f;  // ε, in opaque splat
 // about a crown's outer layer, and it sets up half the splats. Against every splat, on
 // landscape (2 frames) and forest (6): SSIM 0.9215 against 0.9194 and 0.7846 against 0.7755,
 // popping 2.63 against 2.66 and 6.27 against 6.51; the full set hid leaves the reference sees.
+// Every second rather than the first half: consecutive samples are one triangle's two points or
+// one line's two ends, so every second takes one of each, a stratified half. The first half
+// (whole triangles, half as many; its vertex shader would run on half the splats) lowered the
+// coverage IoU on landscape at d' = 2 from 0.799 to 0.756.
 inline constexpr int k_soft_splat_visibility_stride = 2;
 // ∫∫ exp(−2(u² + v²)) du dv over u, v in [−1, 1] divided by its square's area 4: the Gaussian's
 // mean over its square footprint, (√(π/8)·erf(√2))², as the shader evaluates it (surface.frag).
