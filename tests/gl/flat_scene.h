@@ -1,7 +1,7 @@
 #pragma once
 // Pieces of the small hand-built scenes GL tests render: horizontal quads, solid textures, a
-// camera looking straight down, one rendered frame, and the luminance the camera sees at a
-// world point.
+// camera looking straight down, a sun with one shadow cascade, one rendered frame, and the
+// luminance the camera sees at a world point.
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -10,6 +10,8 @@
 #include "components/camera.h"
 #include "models/image.h"
 #include "models/mesh.h"
+#include "systems/lighting/shadow_cascades.h"
+#include "systems/lighting/sky_model.h"
 #include "systems/render/renderer.h"
 #include "systems/update_camera_system.h"
 
@@ -46,6 +48,24 @@ inline camera looking_down(glm::dvec3 position, float fov_y_deg, float pixels) {
     cam.viewport_height_px = pixels;
     derive_camera_matrices(cam);
     return cam;
+}
+
+// Sunlight for a shadow test: a white sun `elevation_deg` up in the east (+x), intensity 3, under
+// a uniform sky (irradiance 1.5), and one 2048² cascade fitted to `cam` out to 60 m.
+struct sunlit {
+    sun light;
+    environment sky;
+    cascade_set cascades;
+};
+inline sunlit sun_from_the_east(const camera& cam, float elevation_deg) {
+    sunlit s;
+    s.light.direction = sun_direction_from_angles(elevation_deg, 90.0f);
+    s.light.color = glm::vec3(1.0f);
+    s.light.intensity = 3.0f;
+    s.sky.irradiance_sh[0] = glm::vec3(1.5f);
+    s.cascades = fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f,
+                              s.light.direction, 1, 0.5f, 2048, 50.0f, cam.position);
+    return s;
 }
 
 // Rec. 709 luminance (0..255) of the pixel where `cam` sees `world`.

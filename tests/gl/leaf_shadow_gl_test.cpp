@@ -50,14 +50,7 @@ TEST(leaf_shadows, alpha_tested_leaves_cast_shadows_shaped_by_their_texture) {
     render::renderer renderer(settings, assets);
 
     const camera cam = testing::looking_down({-5.0, 30.0, 0.0}, 60.0f, 256.0f);
-    sun light;
-    light.direction = sun_direction_from_angles(45.0f, 90.0f);  // from the east (+x)
-    light.color = glm::vec3(1.0f);
-    light.intensity = 3.0f;
-    environment sky;
-    sky.irradiance_sh[0] = glm::vec3(1.5f);
-    const cascade_set cascades = fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f,
-                                              light.direction, 1, 0.5f, 2048, 50.0f, cam.position);
+    const auto [light, sky, cascades] = testing::sun_from_the_east(cam, 45.0f);
     draw_list draws;
     instance_gpu leaf;
     leaf.position = glm::vec3(glm::dvec3(0.0) - cam.position);

@@ -60,15 +60,7 @@ TEST(point_shadow_gl, a_shadow_splat_shades_what_lies_more_than_its_width_behind
     render::renderer renderer(settings, assets);
 
     const camera cam = testing::looking_down({0.0, 30.0, 0.0}, 60.0f, float(k_size));
-    sun light;
-    light.direction = sun_direction_from_angles(70.0f, 90.0f);  // from the east (+x)
-    light.color = glm::vec3(1.0f);
-    light.intensity = 3.0f;
-    environment sky;
-    sky.irradiance_sh[0] = glm::vec3(1.5f);
-    const cascade_set cascades =
-        fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f, light.direction, 1,
-                     0.5f, 2048, 50.0f, cam.position);
+    const auto [light, sky, cascades] = testing::sun_from_the_east(cam, 70.0f);
     // d' = 8 px: casters k_shadow_sample_spacing·d' apart and as wide, 2·8·(2·tan 30°/256)
     // = 0.072 on the image plane, about 2 m at 28-30 m from the eye: far wider than two texels.
     const point_line_quality quality{8.0f, 1.3f, false, splat_style::opaque};
