@@ -65,6 +65,7 @@ nlohmann::json frame_json(const frame_record& f) {
             {"shadow_triangles", f.shadow_triangles},
             {"shadow_texel_m", f.shadow_texel_m},
             {"shadow_split_m", f.shadow_split_m},
+            {"shadow_drawn", f.shadow_drawn},
             {"points", f.points},
             {"lines", f.lines},
             {"instances", instances},

@@ -27,6 +27,9 @@ struct frame_record {
     // Metres per shadow-map texel in each cascade, near to far, and where each ends (view depth).
     std::vector<double> shadow_texel_m;
     std::vector<double> shadow_split_m;
+    // Per cascade, whether its slice may hold a receiver and so was drawn (1) or shades only
+    // air and was skipped (0; systems/shadow_receivers.h).
+    std::vector<int> shadow_drawn;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances{};

@@ -215,6 +215,7 @@ frame_record scenario_player::step() {
     for (int c = 0; c < cascades.count; ++c) {
         record.shadow_texel_m.push_back(cascades.texel_world_size[std::size_t(c)]);
         record.shadow_split_m.push_back(cascades.split_far[std::size_t(c)]);
+        record.shadow_drawn.push_back(cascades.holds_receivers[std::size_t(c)] ? 1 : 0);
     }
     record.points = draws.points;
     record.lines = draws.lines;

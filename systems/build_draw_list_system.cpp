@@ -72,8 +72,10 @@ public:
                                               cam.viewport_height_px)),
           m_costs(costs) {
         m_cascade_count = cascades.count;
-        for (int c = 0; c < cascades.count; ++c)
+        for (int c = 0; c < cascades.count; ++c) {
             m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
+            m_cascades[std::size_t(c)].holds_receivers = cascades.holds_receivers[std::size_t(c)];
+        }
     }
 
     // `parts` are the plant's point/line parts, or one octree cell's (§6.1), whose prefixes
@@ -168,6 +170,7 @@ cascade_bounds make_cascade_bounds(const glm::mat4& m) {
 }
 
 bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius) {
+    if (!cascade.holds_receivers) return false;
     const glm::vec4 p = cascade.light_view_projection * glm::vec4(center, 1.0f);
     const glm::vec3 r = cascade.radius_scale * radius;
     return std::abs(p.x) <= 1.0f + r.x && std::abs(p.y) <= 1.0f + r.y && p.z <= 1.0f + r.z;

@@ -30,6 +30,7 @@
 #include "systems/lighting/transfer_rotation.h"
 #include "systems/playback.h"
 #include "systems/point_line_assets.h"
+#include "systems/shadow_receivers.h"
 #include "systems/species_models.h"
 
 namespace sylva {
@@ -387,11 +388,29 @@ void spawn_viewer_and_sky(ecs::world& world, const scenario& s, const scene_asse
 
 }  // namespace
 
+// Cells per side of the receivers' height grid (systems/shadow_receivers.h): 47 m on landscape's
+// 3 km terrain, finer than a near cascade's slice.
+constexpr std::uint32_t k_receiver_cells = 64;
+
 spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_assets& assets) {
     spawn_report report;
     for (const auto& pop : s.populations) report.requested += pop.count;
     spawn_viewer_and_sky(world, s, assets);
     report.plants = spawn_plants(world, s, assets);
+    // The receivers' heights for skipping shadow cascades that shade only air: the ground, then
+    // every plant's bounding sphere.
+    receiver_heights receivers =
+        make_receiver_heights(assets.terrain, s.world_offset, k_receiver_cells);
+    const auto& transform_table = world.table<world_transform>();
+    const auto& bounds_table = world.table<bounds>();  // aligned with the transforms (spawn_plants)
+    const world_transform* transforms = transform_table.data();
+    const bounds* spheres = bounds_table.data();
+    for (std::size_t i = 0; i < std::min(transform_table.size(), bounds_table.size()); ++i) {
+        const glm::dvec3 p = transforms[i].position;
+        receivers.raise(p.x, p.z, double(spheres[i].radius),
+                        float(p.y + spheres[i].center_height + spheres[i].radius));
+    }
+    world.set_resource(std::move(receivers));
 
     world.set_resource(playback_clock{0, s.fps});
     world.set_resource(camera_track{resolve_camera_keys(s, assets.terrain), true});

@@ -23,6 +23,9 @@ struct cascade_set {
                                                                 glm::mat4(1.0f), glm::mat4(1.0f)};
     std::array<float, k_max_cascades> split_far{};         // view-space distance where it ends
     std::array<float, k_max_cascades> texel_world_size{};  // metres per shadow-map texel
+    // False when the cascade's slice of the view holds no receiver (systems/shadow_receivers.h):
+    // nothing is drawn into its map, which no surface samples.
+    std::array<bool, k_max_cascades> holds_receivers{true, true, true, true};
 };
 
 // Split distances C_0 = near .. C_count = far (Zhang et al. 2006, Eq. 4, the practical scheme):

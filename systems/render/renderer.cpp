@@ -289,6 +289,7 @@ void renderer::write_uniforms(const frame_view& view) {
     u.view_projection = cam.projection * cam.view;
     u.inverse_view_projection = glm::inverse(u.view_projection);
     m_cascade_count = m_shadow_maps ? std::min(view.cascades->count, m_shadow_maps->cascades()) : 0;
+    m_cascades_holding_receivers = view.cascades->holds_receivers;
     for (int c = 0; c < m_cascade_count; ++c) {
         u.cascade_view_projection[c] = view.cascades->light_view_projection[std::size_t(c)];
         u.cascade_split_far[c] = view.cascades->split_far[std::size_t(c)];
@@ -357,8 +358,10 @@ void renderer::write_commands(const frame_view& view) {
     const camera& cam = *view.view_camera;
     const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
     std::array<cascade_bounds, k_max_cascades> cascades{};
-    for (int c = 0; c < m_cascade_count; ++c)
+    for (int c = 0; c < m_cascade_count; ++c) {
         cascades[std::size_t(c)] = make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
+        cascades[std::size_t(c)].holds_receivers = view.cascades->holds_receivers[std::size_t(c)];
+    }
     for (const terrain_tile& tile : m_terrain_tiles) {
         const glm::vec3 center = view.terrain_position + tile.center;
         if (sphere_in_frustum(frustum, center, tile.radius))
@@ -401,6 +404,8 @@ void renderer::draw_shadow_cascades() {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(2.0f, 4.0f);
     for (int c = 0; c < m_cascade_count; ++c) {
+        // No surface samples a cascade whose slice holds no receiver (fit_shadow_cascades).
+        if (!m_cascades_holding_receivers[std::size_t(c)]) continue;
         m_shadow_maps->bind_layer(c);
         const GLuint ground = surface_program(material_kind::ground, true);
         glUseProgram(ground);

@@ -188,6 +188,7 @@ private:
     // allocating in the frame loop.
     std::array<std::vector<indirect_command>, k_command_groups> m_command_groups;
     std::size_t m_uniform_offset = 0;
+    std::array<bool, k_max_cascades> m_cascades_holding_receivers{true, true, true, true};
     float m_splat_px = 1.0f;
     float m_sample_plane = 0.0f;
     float m_sample_fog = 0.0f;

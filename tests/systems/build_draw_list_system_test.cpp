@@ -89,6 +89,17 @@ TEST(build_draw_list, each_cascade_draws_one_mesh_level_coarser_than_the_one_bef
     EXPECT_TRUE(meshes_in(list, render_pass::shadow_cascade_2).empty());
 }
 
+TEST(build_draw_list, a_cascade_without_receivers_gets_no_casters) {
+    three_plants scene;
+    scene.world.resource<cascade_set>().holds_receivers[0] = false;  // its slice is air
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    EXPECT_TRUE(meshes_in(list, render_pass::shadow_cascade_0).empty());
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_1),
+              (std::vector<std::uint16_t>{2, 3, 3}));
+}
+
 TEST(build_draw_list, items_are_sorted_and_batched_with_camera_relative_instances) {
     three_plants scene;
     ecs::executor executor(1);
