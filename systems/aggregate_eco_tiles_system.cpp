@@ -25,15 +25,11 @@ bool tile_prefixes(const tile_point_sets& sets, std::uint32_t tile, double dista
             // n_l lines the set stands for, which the set must hold.
             primitive_costs lines_always;  // a tile set has no triangles to fall back on
             lines_always.line = 0.0;
-            // Short lines become splats at their ends, two per line the set holds, spaced as
-            // points are; lines that stay lines are drawn d' wide and keep d'.
-            part_draw d = select_lines(part.area_m2, part.line_length_m, part.line_error_m,
-                                       part.stands_for, part.stands_for, distance_m, splat_distance,
-                                       lines_always, 1.0, splat_factor);
-            if (!d.splats)
-                d = select_lines(part.area_m2, part.line_length_m, part.line_error_m,
-                                 part.stands_for, part.stands_for, distance_m, sample_distance,
-                                 lines_always, 1.0, splat_factor);
+            // Short lines become splats at their ends, two per line the set holds.
+            const part_draw d =
+                select_lines_fogged(part.area_m2, part.line_length_m, part.line_error_m,
+                                    part.stands_for, part.stands_for, distance_m, sample_distance,
+                                    splat_distance, lines_always, 1.0, splat_factor);
             if (d.triangles > 0 || d.primitives > (d.splats ? 2 * part.count : part.count)) return false;
             counts[i] = d.primitives;
             splats[i] = d.splats ? 1 : 0;

@@ -92,6 +92,19 @@ part_draw select_lines(double area_m2, double length_m, double error_m, std::uin
     return {0, lines};
 }
 
+part_draw select_lines_fogged(double area_m2, double length_m, double error_m,
+                              std::uint32_t n_lines, std::uint32_t k, double distance_m,
+                              double sample_distance, double splat_distance,
+                              const primitive_costs& costs, double importance, double splat_factor,
+                              double dither) {
+    const part_draw as_splats =
+        select_lines(area_m2, length_m, error_m, n_lines, k, distance_m, splat_distance, costs,
+                     importance, splat_factor, dither);
+    if (as_splats.splats) return as_splats;
+    return select_lines(area_m2, length_m, error_m, n_lines, k, distance_m, sample_distance, costs,
+                        importance, splat_factor, dither);
+}
+
 double sample_dither(std::uint32_t seed, std::uint32_t part) {
     // splitmix64's finaliser over (seed, part): well mixed, the same on every platform.
     std::uint64_t z = (std::uint64_t(seed) << 8 | part) + 0x9e3779b97f4a7c15ULL;

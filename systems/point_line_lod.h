@@ -120,6 +120,15 @@ part_draw select_lines(double area_m2, double length_m, double error_m, std::uin
                        double distance_m, double sample_distance, const primitive_costs& costs = {},
                        double importance = 1.0, double splat_factor = 1.3, double dither = 0.5);
 
+// select_lines with fog-weighted sampling (fog_sample_distance): a part whose short lines are
+// drawn as splats is decided and counted with the splats' spacing `splat_distance`, as points
+// are; otherwise with d' itself, since a line is drawn d' wide. Equal distances: select_lines.
+part_draw select_lines_fogged(double area_m2, double length_m, double error_m,
+                              std::uint32_t n_lines, std::uint32_t k, double distance_m,
+                              double sample_distance, double splat_distance,
+                              const primitive_costs& costs = {}, double importance = 1.0,
+                              double splat_factor = 1.3, double dither = 0.5);
+
 // A plant's own rounding offset in [0, 1) for part `part` (a fixed hash of its seed): counts are
 // rounded down after adding it, so the expected count of many small plants is exact while each
 // plant's count still changes only where its distance crosses a threshold (no flicker).

@@ -50,15 +50,10 @@ point_prefix compute_point_prefix(const species_library& library, part_range par
                 prefix.last_fade[i] = std::uint8_t(std::lround(255.0 * (whole + 1.0 - exact)));
             }
         } else {
-            // Splats at the lines' ends are spaced as points are; lines drawn d' wide keep d'.
-            auto lines = [&](double spacing) {
-                return select_lines(area, double(part.line_length_m) * scale,
+            d = select_lines_fogged(area, double(part.line_length_m) * scale,
                                     double(part.line_error_m) * scale, part.primitive_count,
-                                    part.triangle_count, r, spacing, costs, part.importance,
-                                    splat_factor, dither >= 0.0 ? dither : 0.5);
-            };
-            d = lines(splat_distance);
-            if (!d.splats) d = lines(sample_distance);
+                                    part.triangle_count, r, sample_distance, splat_distance, costs,
+                                    part.importance, splat_factor, dither >= 0.0 ? dither : 0.5);
         }
         prefix.triangles[i] = d.triangles;
         prefix.primitives[i] = d.primitives;
