@@ -52,7 +52,9 @@ out vec3 v_sh_sky_back;
 uniform int u_cascade;
 #endif
 #if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS) && !defined(SPLAT_VISIBILITY)
-// A splat is one sample: shaded here once (shading.glsl), flat across its pixels.
+// A splat is one sample: shaded here once (shading.glsl), flat across its pixels, with one
+// shadow tap.
+#define SHADOW_SINGLE_TAP
 #include "shading.glsl"
 layout(binding = 0) uniform sampler2DArray u_albedo;
 flat out vec3 v_color;
