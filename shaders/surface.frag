@@ -106,6 +106,8 @@ layout(location = 0) out vec4 out_color;
 flat in vec3 v_color;  // shaded per point in surface.vert
 #endif
 #ifdef SOFT_SPLATS
+// The splat layer's nearest depth (systems/render/splat_layer.h), MIN-blended.
+layout(location = 1) out float out_layer_depth;
 uniform float u_soft_alpha;  // the Gaussian's peak opacity
 flat in float v_opacity;     // the splat's own: less than 1 for a fractional prefix's last
 #endif
@@ -137,6 +139,7 @@ void main() {
     // square is k_soft_splat_kernel_mean (systems/point_line_lod.h).
     vec2 pc = gl_PointCoord * 2.0 - 1.0;
     out_color = vec4(v_color, v_opacity * u_soft_alpha * exp(-2.0 * dot(pc, pc)));
+    out_layer_depth = gl_FragCoord.z;
 #else
     out_color = vec4(v_color, 1.0);
 #ifdef WRITE_ID

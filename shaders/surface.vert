@@ -6,7 +6,8 @@
 // splat of u_splat_px pixels on screen; in a shadow cascade a splat as wide as the casters are
 // spaced (systems/point_line_lod.h k_shadow_sample_texels), pushed away from the sun.
 // SPLAT_VISIBILITY draws them as opaque splats into depth only, pushed back along the view ray,
-// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h); the
+// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h), both
+// into the splat layer (systems/render/splat_layer.h); the
 // instance's fade is then the prefix's fractional length (build_draw_list): splat j of the
 // prefix is drawn at opacity clamp(fade − j, 0, 1), the last one faded (point_prefix::last_fade).
 // PRIMITIVE_LINES hands lines to line.geom, which widens them to d' pixels.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <numbers>
@@ -240,7 +241,9 @@ GLuint renderer::surface_program(material_kind material, bool shadow, primitive_
     if (!shadow && m_settings.fade_dissolve && primitive == primitive_kind::triangles &&
         material != material_kind::ground && material != material_kind::billboard_cloud)
         source.defines.push_back("FADE_DISSOLVE");
-    if (!shadow && m_settings.id_buffer) source.defines.push_back("WRITE_ID");
+    // The soft splats' blend pass writes the splat layer's nearest depth where IDs would go.
+    if (!shadow && m_settings.id_buffer && samples != sample_pass::soft_splats)
+        source.defines.push_back("WRITE_ID");
     if (shadow) {
         source.defines.push_back("SHADOW_PASS");
         // Opaque casters need no fragment shader at all: depth only. Points and lines are
@@ -480,10 +483,12 @@ void renderer::draw_opaque() {
     m_timer.end();
 }
 
-// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it: opaque
-// splats pushed back by ε into depth only, then the Gaussians, depth-tested against that and
-// blended without writing depth. Only the first pass writes the ID buffer (the front splat's
-// instance, as opaque splats would); the blend pass keeps the target's alpha.
+// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it, drawn into
+// their own half-size layer (splat_layer.h): opaque splats pushed back by ε into its depth (and
+// IDs), then the Gaussians, depth-tested against that and blended "over" without writing depth,
+// each keeping the nearest splat depth. The layer is then filtered up over the frame at that
+// depth, and with an ID buffer its IDs are copied where it is not hidden. The target's alpha is
+// kept.
 void renderer::draw_soft_splats() {
     const auto& groups = m_commands[std::size_t(render_pass::opaque)];
     bool any = false;
@@ -492,17 +497,49 @@ void renderer::draw_soft_splats() {
             any = any || groups[group_of(m, primitive_kind::points, l)].count > 0;
     if (!any) return;
     m_timer.begin(gpu_pass::splats);
+    if (!m_splat_layer)
+        m_splat_layer.emplace(m_settings.width, m_settings.height, m_settings.id_buffer);
+    m_splat_layer->begin();
+    if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());  // the splats' lighting
+    // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
+    const float splat_px = m_splat_px, soft_splat_px = m_soft_splat_px;
+    m_splat_px *= splat_layer::k_scale;
+    m_soft_splat_px *= splat_layer::k_scale;
     glDepthMask(GL_TRUE);
-    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    m_target.draw_ids(true);
+    m_splat_layer->draw_visibility();
     draw_samples(groups, sample_pass::splat_visibility);
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    m_target.draw_ids(false);
+    m_splat_layer->draw_blend();
     glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glEnablei(GL_BLEND, 1);
+    glBlendEquationi(1, GL_MIN);
     draw_samples(groups, sample_pass::soft_splats);
+    glBlendEquationi(1, GL_FUNC_ADD);
     glDisable(GL_BLEND);
+    m_splat_px = splat_px;
+    m_soft_splat_px = soft_splat_px;
+
+    m_target.bind();
+    glBindTextureUnit(0, m_splat_layer->color());
+    glBindTextureUnit(1, m_splat_layer->nearest_depth());
+    m_target.draw_ids(false);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {}, {}}));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    ++m_draw_calls;
+    if (m_splat_layer->ids()) {
+        glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        m_target.draw_ids(true);
+        glBindTextureUnit(2, m_splat_layer->ids());
+        glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {"WRITE_ID"}, {}}));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++m_draw_calls;
+        glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        m_target.draw_ids(false);
+    }
     glDepthMask(GL_TRUE);
     m_timer.end();
 }

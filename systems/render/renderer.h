@@ -25,6 +25,7 @@
 #include "systems/render/render_target.h"
 #include "systems/render/shader_library.h"
 #include "systems/render/shadow_maps.h"
+#include "systems/render/splat_layer.h"
 #include "systems/scene_assets.h"
 
 namespace sylva::render {
@@ -156,6 +157,7 @@ private:
     mesh_pool m_meshes;
     frame_ring m_ring;
     render_target m_target;
+    std::optional<splat_layer> m_splat_layer;  // made when soft splats are first drawn
     std::unique_ptr<shadow_maps> m_shadow_maps;
     pass_timer m_timer;
     gl_texture m_leaf_textures;
