@@ -483,12 +483,12 @@ void renderer::draw_opaque() {
     m_timer.end();
 }
 
-// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it, drawn into
-// their own half-size layer (splat_layer.h): opaque splats pushed back by ε into its depth (and
-// IDs), then the Gaussians, depth-tested against that and blended "over" without writing depth,
-// each keeping the nearest splat depth. The layer is then filtered up over the frame at that
-// depth, and with an ID buffer its IDs are copied where it is not hidden. The target's alpha is
-// kept.
+// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it: opaque
+// splats pushed back by ε into depth only (and IDs), then the Gaussians, depth-tested against
+// that and blended "over" without writing depth. Splats of at least k_splat_layer_min_side_px
+// are drawn into the half-size splat layer (splat_layer.h), each keeping the nearest splat
+// depth, and the layer is filtered up over the frame at that depth (with an ID buffer, its IDs
+// with it); smaller ones straight into the frame. The target's alpha is kept.
 void renderer::draw_soft_splats() {
     const auto& groups = m_commands[std::size_t(render_pass::opaque)];
     bool any = false;
@@ -496,6 +496,23 @@ void renderer::draw_soft_splats() {
         for (const material_kind m : {material_kind::bark, material_kind::leaf})
             any = any || groups[group_of(m, primitive_kind::points, l)].count > 0;
     if (!any) return;
+    if (m_soft_splat_px < k_splat_layer_min_side_px) {
+        m_timer.begin(gpu_pass::splats);
+        glDepthMask(GL_TRUE);
+        glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        m_target.draw_ids(true);
+        draw_samples(groups, sample_pass::splat_visibility);
+        glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        m_target.draw_ids(false);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        draw_samples(groups, sample_pass::soft_splats);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+        m_timer.end();
+        return;
+    }
     m_timer.begin(gpu_pass::splats);
     if (!m_splat_layer)
         m_splat_layer.emplace(m_settings.width, m_settings.height, m_settings.id_buffer);
@@ -523,23 +540,20 @@ void renderer::draw_soft_splats() {
     m_target.bind();
     glBindTextureUnit(0, m_splat_layer->color());
     glBindTextureUnit(1, m_splat_layer->nearest_depth());
-    m_target.draw_ids(false);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {}, {}}));
+    const bool ids = m_splat_layer->ids() != 0;
+    if (ids) glBindTextureUnit(2, m_splat_layer->ids());
+    m_target.draw_ids(ids);
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparatei(0, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glUseProgram(
+        m_shaders.program({"sky.vert",
+                           "splat_layer.frag",
+                           ids ? std::vector<std::string>{"WRITE_ID"} : std::vector<std::string>{},
+                           {}}));
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
     ++m_draw_calls;
-    if (m_splat_layer->ids()) {
-        glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        m_target.draw_ids(true);
-        glBindTextureUnit(2, m_splat_layer->ids());
-        glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {"WRITE_ID"}, {}}));
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        ++m_draw_calls;
-        glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        m_target.draw_ids(false);
-    }
+    glDisable(GL_BLEND);
+    m_target.draw_ids(false);
     glDepthMask(GL_TRUE);
     m_timer.end();
 }

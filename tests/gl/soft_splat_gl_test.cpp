@@ -5,6 +5,7 @@
 // they are drawn in must stay behind whatever lies in front of them.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/trigonometric.hpp>
 
 #include "flat_scene.h"
@@ -79,11 +80,13 @@ struct placed {
 };
 
 // One frame of `instances` of `mesh` (the first `count` splats of each; 0: all), with soft or
-// opaque splats at d' = 1 px, c_p = 1.3, grown by `sample_fog` (frame_view::sample_fog); no
+// opaque splats at d' = `sample_distance_px` (1 px by default), c_p = 1.3, grown by
+// `sample_fog` (frame_view::sample_fog); no
 // shadows. Returns the image's luma.
 std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s, std::uint16_t mesh,
                                const std::vector<placed>& instances, splat_style style,
-                               std::uint32_t count = 0, float sample_fog = 0.0f) {
+                               std::uint32_t count = 0, float sample_fog = 0.0f,
+                               float sample_distance_px = 1.0f) {
     draw_list draws;
     for (const placed& p : instances) {
         instance_gpu i;
@@ -97,7 +100,7 @@ std::vector<float> render_luma(render::renderer& renderer, const splat_scene& s,
             {render_pass::opaque, mesh, 0, std::uint32_t(instances.size()), count});
     const cascade_set cascades;
     render::frame_view view = testing::make_view(s.cam, s.light, s.sky, cascades, draws);
-    view.set_samples({1.0f, 1.3f, true, style, false});
+    view.set_samples({sample_distance_px, 1.3f, true, style, false});
     view.sample_fog = sample_fog;
     renderer.render(view);
     renderer.finish();
@@ -218,7 +221,8 @@ TEST(soft_splat_gl, fogged_splats_grow_as_their_samples_were_spaced) {
     EXPECT_NEAR(grown / plain, std::exp(0.02 * 39.0), 0.25);
 }
 
-// The splat layer (systems/render/splat_layer.h) is drawn over the frame at its splats' depth:
+// The splat layer (systems/render/splat_layer.h, splats of 4 px and more) is drawn over the
+// frame at its splats' depth:
 // a surface in front of the splats hides them pixel by pixel, and the ID buffer names the
 // splats' plant where they show and keeps the surface's own where it hides them. A dense field
 // 1 m up, 4 m around the centre, under an opaque square 3 m up, 1.5 m around it (about ±5.6 px
@@ -240,8 +244,11 @@ TEST(soft_splat_gl, a_surface_in_front_of_the_splat_layer_hides_it) {
     settings.id_buffer = true;
     render::renderer renderer(settings, scene.assets);
 
-    const auto without = render_luma(renderer, scene, field, {}, splat_style::soft);
-    const auto with = render_luma(renderer, scene, field, {{{0.0, 1.0, 0.0}}}, splat_style::soft);
+    // d' = 2 px: soft splats 4.6 px wide, drawn through the layer (k_splat_layer_min_side_px).
+    ASSERT_GE(2.0f * 2.0f * std::sqrt(1.3f), render::k_splat_layer_min_side_px);
+    const auto without = render_luma(renderer, scene, field, {}, splat_style::soft, 0, 0.0f, 2.0f);
+    const auto with =
+        render_luma(renderer, scene, field, {{{0.0, 1.0, 0.0}}}, splat_style::soft, 0, 0.0f, 2.0f);
     const std::vector<std::uint32_t> ids = renderer.read_ids();
     auto at = [](int x, int y) { return std::size_t(y * k_size + x); };
     const int c = k_size / 2;
