@@ -495,47 +495,55 @@ void renderer::draw_soft_splats() {
         for (const material_kind m : {material_kind::bark, material_kind::leaf})
             any = any || groups[group_of(m, primitive_kind::points, l)].count > 0;
     if (!any) return;
-    if (m_soft_splat_px < k_splat_layer_min_side_px) {
-        m_timer.begin(gpu_pass::splats);
-        glDepthMask(GL_TRUE);
+    m_timer.begin(gpu_pass::splats);
+    const bool layered = m_soft_splat_px >= k_splat_layer_min_side_px;
+    const float splat_px = m_splat_px, soft_splat_px = m_soft_splat_px;
+    if (layered) {
+        if (!m_splat_layer)
+            m_splat_layer.emplace(m_settings.width, m_settings.height, m_settings.id_buffer);
+        m_splat_layer->begin();
+        if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());  // the splats' lighting
+        // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
+        m_splat_px *= splat_layer::k_scale;
+        m_soft_splat_px *= splat_layer::k_scale;
+    }
+    glDepthMask(GL_TRUE);
+    if (layered) {
+        m_splat_layer->draw_visibility();
+    } else {
         glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         m_target.draw_ids(true);
-        draw_samples(groups, sample_pass::splat_visibility);
+    }
+    draw_samples(groups, sample_pass::splat_visibility);
+    if (layered) {
+        m_splat_layer->draw_blend();
+    } else {
         glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         m_target.draw_ids(false);
-        glDepthMask(GL_FALSE);
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        draw_samples(groups, sample_pass::soft_splats);
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-        m_timer.end();
-        return;
     }
-    m_timer.begin(gpu_pass::splats);
-    if (!m_splat_layer)
-        m_splat_layer.emplace(m_settings.width, m_settings.height, m_settings.id_buffer);
-    m_splat_layer->begin();
-    if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());  // the splats' lighting
-    // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
-    const float splat_px = m_splat_px, soft_splat_px = m_soft_splat_px;
-    m_splat_px *= splat_layer::k_scale;
-    m_soft_splat_px *= splat_layer::k_scale;
-    glDepthMask(GL_TRUE);
-    m_splat_layer->draw_visibility();
-    draw_samples(groups, sample_pass::splat_visibility);
-    m_splat_layer->draw_blend();
     glDepthMask(GL_FALSE);
     glEnablei(GL_BLEND, 0);
-    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glEnablei(GL_BLEND, 1);
-    glBlendEquationi(1, GL_MIN);
+    // Into the layer: premultiplied "over" with its coverage in alpha, and the nearest splat
+    // depth beside it; into the frame: "over", the target's alpha kept.
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, layered ? GL_ONE : GL_ZERO,
+                         layered ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);
+    if (layered) {
+        glEnablei(GL_BLEND, 1);
+        glBlendEquationi(1, GL_MIN);
+    }
     draw_samples(groups, sample_pass::soft_splats);
-    glBlendEquationi(1, GL_FUNC_ADD);
+    if (layered) glBlendEquationi(1, GL_FUNC_ADD);
     glDisable(GL_BLEND);
     m_splat_px = splat_px;
     m_soft_splat_px = soft_splat_px;
+    if (layered) composite_splat_layer();
+    glDepthMask(GL_TRUE);
+    m_timer.end();
+}
 
+// Draws the splat layer over the frame (shaders/splat_layer.frag), with its IDs when the frame
+// has an ID buffer.
+void renderer::composite_splat_layer() {
     m_target.bind();
     glBindTextureUnit(0, m_splat_layer->color());
     glBindTextureUnit(1, m_splat_layer->nearest_depth());
@@ -553,8 +561,6 @@ void renderer::draw_soft_splats() {
     ++m_draw_calls;
     glDisable(GL_BLEND);
     m_target.draw_ids(false);
-    glDepthMask(GL_TRUE);
-    m_timer.end();
 }
 
 // The point and line representation's samples (Deussen 2002 §5.1, §5.2) of bark and leaf

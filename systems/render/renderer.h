@@ -139,6 +139,7 @@ private:
     enum class sample_pass { cascade, view, splat_visibility, soft_splats };
     void draw_samples(const pass_commands& groups, sample_pass pass, int cascade = -1);
     void draw_soft_splats();
+    void composite_splat_layer();
     void draw_clouds(const pass_commands& groups, int cascade);
     void write_species_block(const scene_assets& assets);
     static constexpr std::size_t k_max_species_spheres = 64;  // transfer.glsl u_species_sphere
