@@ -21,6 +21,7 @@ struct bench_options {
     std::vector<std::string> only;
     bool list = false;
     bool save_frames = false;
+    std::uint32_t timing_rounds = 1;
 };
 
 // Frames and size a bench plays unless told otherwise: a quarter of the scenario's pixels
@@ -28,19 +29,23 @@ struct bench_options {
 constexpr std::uint32_t k_default_bench_width = 480;
 constexpr std::uint32_t k_default_bench_height = 270;
 
-void print_progress(const std::vector<bench_configuration_spec>& specs, const std::vector<std::string>& only, int index,
-                    std::size_t count, std::uint32_t frame, std::uint32_t frames) {
+void print_progress(const std::vector<bench_configuration_spec>& specs,
+                    const std::vector<std::string>& only, const bench_progress& p) {
     std::string name = "reference";
-    if (index >= 0) {
+    if (p.configuration >= 0) {
         std::size_t seen = 0;
         for (const auto& s : specs)
             if (only.empty() || std::find(only.begin(), only.end(), s.name) != only.end()) {
-                if (seen++ == std::size_t(index)) name = s.name;
+                if (seen++ == std::size_t(p.configuration)) name = s.name;
             }
     }
-    std::fprintf(stderr, "\r[sylva] bench %d/%zu %-26s frame %u/%u   ", index + 2, count + 1, name.c_str(),
-                 frame + 1, frames);
-    if (frame + 1 == frames) std::fprintf(stderr, "\n");
+    if (p.rounds > 1 && p.round > 0)
+        std::fprintf(stderr, "\r[sylva] bench timing round %u/%u %-26s frame %u/%u   ", p.round + 1,
+                     p.rounds, name.c_str(), p.frame + 1, p.frames);
+    else
+        std::fprintf(stderr, "\r[sylva] bench %d/%zu %-26s frame %u/%u   ", p.configuration + 2,
+                     p.configurations + 1, name.c_str(), p.frame + 1, p.frames);
+    if (p.frame + 1 == p.frames) std::fprintf(stderr, "\n");
 }
 
 int bench(const bench_options& o) {
@@ -76,9 +81,8 @@ int bench(const bench_options& o) {
         settings.threads = o.scenario.threads;
         settings.only = o.only;
         if (o.save_frames) settings.frames_dir = std::filesystem::path(o.out_dir) / "frames";
-        settings.progress = [&](int index, std::size_t count, std::uint32_t frame, std::uint32_t frames) {
-            print_progress(specs, o.only, index, count, frame, frames);
-        };
+        settings.timing_rounds = o.timing_rounds;
+        settings.progress = [&](const bench_progress& p) { print_progress(specs, o.only, p); };
         const auto start = std::chrono::steady_clock::now();
         const bench_report report = run_bench(s, specs, *context, &cache, settings);
         const std::filesystem::path dir(o.out_dir);
@@ -87,11 +91,12 @@ int bench(const bench_options& o) {
         write_bench_plot_svg(dir / "bench.svg", report);
         write_bench_summary_md(dir / "summary.md", report);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%-24s %10s %9s %8s %8s %8s %8s %8s\n", "configuration", "median ms", "PSNR dB", "SSIM", "FLIP",
-                    "IoU", "popping", "jump");
+        std::printf("%-24s %10s %9s %9s %8s %8s %8s %8s %8s\n", "configuration", "median ms",
+                    "x base", "PSNR dB", "SSIM", "FLIP", "IoU", "popping", "jump");
         for (const auto& c : report.configurations)
-            std::printf("%-24s %10.1f %9.2f %8.4f %8.4f %8.4f %8.3f %8.2f\n", c.name.c_str(), c.frame_ms_median,
-                        c.error.psnr_db, c.error.ssim, c.error.perceptual, c.error.coverage_iou, c.error.popping,
+            std::printf("%-24s %10.1f %9.3f %9.2f %8.4f %8.4f %8.4f %8.3f %8.2f\n", c.name.c_str(),
+                        c.frame_ms_median, c.frame_ms_vs_baseline, c.error.psnr_db, c.error.ssim,
+                        c.error.perceptual, c.error.coverage_iou, c.error.popping,
                         c.error.lighting_jump);
         spdlog::info("wrote bench.json, bench.csv, bench.svg and summary.md to {} in {:.0f} s", o.out_dir, seconds);
     } catch (const std::invalid_argument& e) {
@@ -115,6 +120,14 @@ command_runner add_bench_command(CLI::App& app) {
                    "Run only these configurations (comma-separated names; see --list). The reference is "
                    "always rendered: every error is measured against it")
         ->delimiter(',');
+    app.add_option(
+           "--timing-rounds", options->timing_rounds,
+           "Play every configuration's frames this many times for its timing, the "
+           "configurations alternating round by round, and report medians over all rounds and "
+           "each configuration's time against the baseline as the median of the round-by-round "
+           "ratios. Errors come from the first round. Use on a noisy machine to compare times")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1000u));
     app.add_flag("--list", options->list, "List the configurations and exit");
     app.add_flag("--save-frames", options->save_frames,
                  "Also write every configuration's frames as DIR/frames/<configuration>/frame_NNNN.png");

@@ -40,6 +40,12 @@ ordered_json numbers(const std::map<std::string, double>& values) {
     return j;
 }
 
+ordered_json rounded_list(const std::vector<double>& values) {
+    ordered_json j = ordered_json::array();
+    for (const double v : values) j.push_back(number(v));
+    return j;
+}
+
 ordered_json configuration_json(const bench_configuration& c, bool on_front) {
     const bench_error& e = c.error;
     return {{"name", c.name},
@@ -50,7 +56,9 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
             {"frame_ms",
              {{"median", number(c.frame_ms_median)},
               {"min", number(c.frame_ms_min)},
-              {"max", number(c.frame_ms_max)}}},
+              {"max", number(c.frame_ms_max)},
+              {"round_medians", rounded_list(c.frame_ms_rounds)},
+              {"vs_baseline", number(c.frame_ms_vs_baseline)}}},
             {"cpu_ms", numbers(c.cpu_ms)},
             {"gpu_ms", numbers(c.gpu_ms)},
             {"primitives", numbers(c.primitives)},
@@ -186,14 +194,41 @@ std::string brute_force_sentence(const bench_report& report, const std::vector<b
            ratio_text(brute->frame_ms_median / fastest->frame_ms_median) + " faster).";
 }
 
+// `c`'s frame time over the baseline's: the median of the round-by-round ratios when the run
+// measured them (bench_configuration::frame_ms_vs_baseline), else the ratio of the medians.
+double time_vs_baseline(const bench_configuration& c, const bench_configuration& baseline) {
+    if (std::isfinite(c.frame_ms_vs_baseline)) return c.frame_ms_vs_baseline;
+    return c.frame_ms_median / baseline.frame_ms_median;
+}
+
+// With several timing rounds: each configuration's time against the baseline's, as the median
+// of the round-by-round ratios (bench_runner.h: timing_rounds).
+std::string rounds_sentence(const bench_report& report) {
+    if (report.timing_rounds < 2) return "";
+    std::string out =
+        "Frame times are medians over " + std::to_string(report.timing_rounds) +
+        " timing rounds of every frame, the configurations alternating round by round.";
+    const bench_configuration* baseline = find_configuration(report, "baseline");
+    if (!baseline) return out;
+    out += " Time against the baseline, the median of the " + std::to_string(report.timing_rounds) +
+           " round-by-round ratios:";
+    bool first = true;
+    for (const auto& c : report.configurations) {
+        if (&c == baseline || !std::isfinite(c.frame_ms_vs_baseline)) continue;
+        out += std::string(first ? " " : ", ") + md_cell(c.name) + " " +
+               ratio_text(c.frame_ms_vs_baseline);
+        first = false;
+    }
+    return out + ".";
+}
+
 // "Similar" frame time: within 10% of the baseline's, or faster.
 std::string baseline_sentence(const bench_report& report) {
     const bench_configuration* baseline = find_configuration(report, "baseline");
     if (!baseline) return "";
     const bench_configuration* best = nullptr;
     for (const auto& c : report.configurations) {
-        if (&c == baseline || !is_candidate(c) ||
-            !(c.frame_ms_median <= 1.1 * baseline->frame_ms_median) ||
+        if (&c == baseline || !is_candidate(c) || !(time_vs_baseline(c, *baseline) <= 1.1) ||
             std::isnan(c.error.perceptual))
             continue;
         if (!best || c.error.perceptual < best->error.perceptual) best = &c;
@@ -265,6 +300,7 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"width", report.width},
                                {"height", report.height},
                                {"frames", report.frames},
+                               {"timing_rounds", report.timing_rounds},
                                {"reference",
                                 {{"samples_per_pixel", report.reference_samples_per_pixel},
                                  {"frame_ms_median", number(report.reference_frame_ms_median)}}},
@@ -326,8 +362,9 @@ void write_bench_summary_md(const std::filesystem::path& path, const bench_repor
         "Errors are means over the frames against the reference; ★ marks the Pareto front of "
         "median frame "
         "time against FLIP.\n\n";
-    for (const std::string& sentence : {brute_force_sentence(report, on_front),
-                                        baseline_sentence(report), reference_sentence(report)})
+    for (const std::string& sentence :
+         {rounds_sentence(report), brute_force_sentence(report, on_front),
+          baseline_sentence(report), reference_sentence(report)})
         if (!sentence.empty()) md += sentence + "\n\n";
     bool any_description = false;
     for (const auto& c : report.configurations)

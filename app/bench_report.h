@@ -8,6 +8,7 @@
 // they do not depend on the thread count, timings do.
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,9 +33,13 @@ struct bench_configuration {
     std::string description;  // one line for the summary
     double quality = 0.0;     // the swept setting's value (0 when the family has no sweep)
     std::uint32_t frames = 0;
-    double frame_ms_median = 0.0;
+    double frame_ms_median = 0.0;  // over every timing round's frames
     double frame_ms_min = 0.0;
     double frame_ms_max = 0.0;
+    std::vector<double> frame_ms_rounds;  // the median of each timing round, in round order
+    // Median over the rounds of this configuration's round median over the baseline's of the
+    // same round; NaN without a baseline configuration (bench_runner.h: timing_rounds).
+    double frame_ms_vs_baseline = std::numeric_limits<double>::quiet_NaN();
     std::map<std::string, double> cpu_ms;       // median per system, plus "total"
     std::map<std::string, double> gpu_ms;       // median per pass, plus "total"
     std::map<std::string, double> primitives;   // median per frame: triangles, points, lines,
@@ -53,6 +58,7 @@ struct bench_report {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::uint32_t frames = 0;
+    std::uint32_t timing_rounds = 1;
     std::uint32_t reference_samples_per_pixel = 9;
     double reference_frame_ms_median = 0.0;
     // The device's relative primitive costs the point/line configurations selected with

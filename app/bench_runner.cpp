@@ -82,6 +82,12 @@ void warm_up(scenario_player& player) {
 
 double median_of(std::vector<double> v) { return v.empty() ? 0.0 : median(std::move(v)); }
 
+const bench_configuration* find_baseline(const bench_report& report) {
+    for (const auto& c : report.configurations)
+        if (c.name == "baseline") return &c;
+    return nullptr;
+}
+
 // Medians per key over frames (a key missing in a frame counts as 0 there).
 std::map<std::string, double> medians(const std::vector<std::map<std::string, double>>& frames) {
     std::map<std::string, std::vector<double>> columns;
@@ -126,7 +132,8 @@ reference_frames render_reference(const scenario& s, render::gl_context& context
     warm_up(player);
     reference_frames ref;
     for (std::uint32_t f = 0; f < s.frames; ++f) {
-        if (settings.progress) settings.progress(-1, configurations, f, s.frames);
+        if (settings.progress)
+            settings.progress({-1, configurations, 0, settings.timing_rounds, f, s.frames});
         const frame_record record = player.step();
         ref.frame_ms.push_back(record.frame_ms);
         ref.images.push_back(box_downsample(player.capture(), spec.samples));
@@ -147,9 +154,50 @@ bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
     return it != colors.end() && it->second.pixels >= k_lighting_jump_min_pixels;
 }
 
+// One timing round after round 0 (bench_settings::timing_rounds): `spec` plays the same frames
+// after the same warm-up, each read back with its IDs as in round 0 so the device syncs at the
+// same points, and nothing else is computed. Returns the frame times.
+std::vector<double> time_configuration(const scenario& s, const bench_configuration_spec& spec,
+                                       render::gl_context& context, bake_cache* cache,
+                                       const bench_settings& settings, bench_progress progress) {
+    player_options options = measured(spec.options);
+    if (settings.costs) {
+        options.costs = *settings.costs;
+        options.measure_costs = false;
+    }
+    scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
+    warm_up(player);
+    std::vector<double> frame_ms;
+    for (std::uint32_t f = 0; f < s.frames; ++f) {
+        progress.frame = f;
+        if (settings.progress) settings.progress(progress);
+        frame_ms.push_back(player.step().frame_ms);
+        (void)player.capture();
+        (void)player.capture_plant_ids(spec.samples);
+    }
+    return frame_ms;
+}
+
+// Folds the later timing rounds into `c`: medians, extremes and round medians over every
+// round's frames (round 0's are `c`'s own).
+void add_timing_rounds(bench_configuration& c, std::vector<double> round0_frame_ms,
+                       const std::vector<std::vector<double>>& later_rounds) {
+    std::vector<double> all = std::move(round0_frame_ms);
+    for (const auto& round : later_rounds) {
+        c.frame_ms_rounds.push_back(median_of(round));
+        all.insert(all.end(), round.begin(), round.end());
+    }
+    if (all.empty()) return;
+    c.frame_ms_median = median_of(all);
+    c.frame_ms_min = *std::min_element(all.begin(), all.end());
+    c.frame_ms_max = *std::max_element(all.begin(), all.end());
+}
+
+// Round 0 of `spec`: its errors against `ref` and its time; `frame_ms` receives the frame times.
 bench_configuration run_configuration(const scenario& s, const bench_configuration_spec& spec,
-                                      const reference_frames& ref, render::gl_context& context, bake_cache* cache,
-                                      bench_settings& settings, int index, std::size_t count) {
+                                      const reference_frames& ref, render::gl_context& context,
+                                      bake_cache* cache, bench_settings& settings, int index,
+                                      std::size_t count, std::vector<double>& frame_ms) {
     reset_peak_resident();
     player_options options = measured(spec.options);
     if (settings.costs) {
@@ -167,13 +215,14 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
     out.frames = s.frames;
 
     error_accumulator errors;
-    std::vector<double> frame_ms;
+    frame_ms.clear();
     std::vector<double> upload;
     std::vector<std::map<std::string, double>> cpu, gpu, primitives;
     image_rgba8 previous_image;
     plant_colors previous_colors;
     for (std::uint32_t f = 0; f < s.frames; ++f) {
-        if (settings.progress) settings.progress(index, count, f, s.frames);
+        if (settings.progress)
+            settings.progress({index, count, 0, settings.timing_rounds, f, s.frames});
         const frame_record record = player.step();
         frame_ms.push_back(record.frame_ms);
         upload.push_back(double(record.upload_bytes));
@@ -226,6 +275,7 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
     out.frame_ms_median = median_of(frame_ms);
     out.frame_ms_min = frame_ms.empty() ? 0.0 : *std::min_element(frame_ms.begin(), frame_ms.end());
     out.frame_ms_max = frame_ms.empty() ? 0.0 : *std::max_element(frame_ms.begin(), frame_ms.end());
+    out.frame_ms_rounds = {out.frame_ms_median};
     out.cpu_ms = medians(cpu);
     out.gpu_ms = medians(gpu);
     out.primitives = medians(primitives);
@@ -396,6 +446,8 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.width = s.width;
     report.height = s.height;
     report.frames = s.frames;
+    settings.timing_rounds = std::max(1u, settings.timing_rounds);
+    report.timing_rounds = settings.timing_rounds;
     report.reference_samples_per_pixel = k_bench_reference_samples * k_bench_reference_samples;
     report.threads = settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 
@@ -416,6 +468,7 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
             return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
         });
     std::map<std::string, reference_frames> lit_references;
+    std::vector<std::vector<double>> round0_frame_ms(selected.size());
     for (std::size_t i = 0; i < selected.size(); ++i) {
         const std::string lighting = selected[i]->options.lighting.empty()
                                          ? std::string()
@@ -427,8 +480,27 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
                 lighting, render_reference(s, context, cache, settings, selected.size(), lighting));
         report.configurations.push_back(
             run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting), context,
-                              cache, settings, int(i), selected.size()));
+                              cache, settings, int(i), selected.size(), round0_frame_ms[i]));
     }
+    // Later timing rounds visit the configurations forwards and backwards in turn, so drift
+    // over the run weighs on each about equally.
+    std::vector<std::vector<std::vector<double>>> later_rounds(selected.size());
+    for (std::uint32_t round = 1; round < report.timing_rounds; ++round)
+        for (std::size_t n = 0; n < selected.size(); ++n) {
+            const std::size_t i = round % 2 ? selected.size() - 1 - n : n;
+            later_rounds[i].push_back(time_configuration(
+                s, *selected[i], context, cache, settings,
+                {int(i), selected.size(), round, report.timing_rounds, 0, s.frames}));
+        }
+    for (std::size_t i = 0; i < selected.size(); ++i)
+        add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
+    if (const bench_configuration* baseline = find_baseline(report))
+        for (auto& c : report.configurations) {
+            std::vector<double> ratios;
+            for (std::size_t r = 0; r < c.frame_ms_rounds.size(); ++r)
+                ratios.push_back(c.frame_ms_rounds[r] / baseline->frame_ms_rounds[r]);
+            c.frame_ms_vs_baseline = median_of(std::move(ratios));
+        }
     if (settings.costs)
         report.primitive_costs = {{"triangle", settings.costs->triangle},
                                   {"point", settings.costs->point},

@@ -44,15 +44,30 @@ constexpr std::uint32_t k_lighting_jump_min_pixels = 12;
 // a distance, hard switch) with a sweep of its switch distance.
 std::vector<bench_configuration_spec> default_bench_configurations();
 
+// Where a bench is: the configuration (-1: the reference), the round and the frame.
+struct bench_progress {
+    int configuration = -1;
+    std::size_t configurations = 0;
+    std::uint32_t round = 0;
+    std::uint32_t rounds = 1;
+    std::uint32_t frame = 0;
+    std::uint32_t frames = 0;
+};
+
 struct bench_settings {
     int threads = 0;
     std::vector<std::string> only;  // configuration names to run (empty: all)
     // When set, every frame is also written as frames_dir/<configuration>/frame_NNNN.png (the
     // reference's as frames_dir/_reference/).
     std::filesystem::path frames_dir;
-    // Called with (configuration index or -1 for the reference, configuration count, frame,
-    // frames) for progress output.
-    std::function<void(int, std::size_t, std::uint32_t, std::uint32_t)> progress;
+    // Each configuration's frames are played this many times for its timing: round 0 measures
+    // errors and time, the rounds after it time the same frames again (read back the same way,
+    // so the device syncs at the same points), the configurations alternating so a machine
+    // that slows down or speeds up over a run shifts them all alike. Frame times are medians
+    // over every round's frames; errors come from round 0 alone (they do not vary).
+    std::uint32_t timing_rounds = 1;
+    // Called before every frame for progress output.
+    std::function<void(const bench_progress&)> progress;
     // The device's primitive costs for the point/line configurations. Unset: measured once by
     // the first configuration that needs them (through the cache) and used by all, so every
     // configuration selects with the same costs.

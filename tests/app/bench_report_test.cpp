@@ -55,6 +55,7 @@ bench_configuration configuration(const std::string& name, const std::string& fa
     c.frame_ms_median = median;
     c.frame_ms_min = min;
     c.frame_ms_max = max;
+    c.frame_ms_rounds = {median};
     c.cpu_ms = {{"select_representation", 0.5}, {"total", median * 0.5}};
     c.gpu_ms = {{"opaque", median * 0.25}, {"total", median * 0.75}};
     c.primitives = {{"triangles", 150000}, {"points", 0}, {"lines", 0}};
@@ -91,6 +92,7 @@ bench_report fixture() {
     brute.primitives = {{"triangles", 2000000}, {"points", 0}, {"lines", 0}};
     brute.upload_bytes = 1048576;
     brute.peak_memory_mb = 812.5;
+    brute.frame_ms_vs_baseline = 8.25;
     brute.error.psnr_db = 38.5;
     brute.error.coverage_iou = 0.999;
     brute.error.popping = 0.1;
@@ -163,8 +165,9 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
     const nlohmann::json j = nlohmann::json::parse(read_text(dir / "bench.json"));
     EXPECT_EQ(keys_of(j),
               (std::set<std::string>{"scenario", "source", "machine", "gl_renderer", "threads",
-                                     "width", "height", "frames", "reference", "primitive_costs",
-                                     "configurations"}));
+                                     "width", "height", "frames", "timing_rounds", "reference",
+                                     "primitive_costs", "configurations"}));
+    EXPECT_EQ(j["timing_rounds"], 1);
     EXPECT_EQ(j["scenario"], "meadow <dense>");
     EXPECT_EQ(j["reference"],
               (nlohmann::json{{"samples_per_pixel", 9}, {"frame_ms_median", 500.0}}));
@@ -175,7 +178,8 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
                                                      "frames", "frame_ms", "cpu_ms", "gpu_ms",
                                                      "primitives", "upload_bytes", "peak_memory_mb",
                                                      "error", "on_pareto_front"}));
-        EXPECT_EQ(keys_of(c["frame_ms"]), (std::set<std::string>{"median", "min", "max"}));
+        EXPECT_EQ(keys_of(c["frame_ms"]),
+                  (std::set<std::string>{"median", "min", "max", "round_medians", "vs_baseline"}));
         EXPECT_EQ(keys_of(c["error"]),
                   (std::set<std::string>{"psnr", "ssim", "perceptual", "coverage_iou", "popping",
                                          "lighting_jump", "rmse", "switches"}));
@@ -184,7 +188,12 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
     ASSERT_TRUE(by_name.count("brute_force"));
     ASSERT_TRUE(by_name.count("baseline"));
     const nlohmann::json& brute = by_name["brute_force"];
-    EXPECT_EQ(brute["frame_ms"], (nlohmann::json{{"median", 50.0}, {"min", 48.0}, {"max", 55.0}}));
+    EXPECT_EQ(brute["frame_ms"], (nlohmann::json{{"median", 50.0},
+                                                 {"min", 48.0},
+                                                 {"max", 55.0},
+                                                 {"round_medians", {50.0}},
+                                                 {"vs_baseline", 8.25}}));
+    EXPECT_TRUE(by_name["mesh_lod"]["frame_ms"]["vs_baseline"].is_null());  // NaN: not measured
     EXPECT_EQ(brute["cpu_ms"], (nlohmann::json{{"total", 30.5}}));
     EXPECT_EQ(brute["primitives"]["triangles"], 2000000.0);
     EXPECT_EQ(brute["upload_bytes"], 1048576.0);
@@ -429,6 +438,38 @@ TEST(bench_report_summary, sentences_follow_the_data) {
     EXPECT_EQ(md.find("the baseline"), std::string::npos) << md;
     EXPECT_EQ(md.find("against itself"), std::string::npos) << md;
     EXPECT_NE(md.find("| mesh_lod | 8.00 [7.50–9.00] | — |"), std::string::npos) << md;
+    fs::remove_all(dir);
+}
+
+// With timing rounds, "similar frame time" is judged by the median of the round-by-round ratios
+// to the baseline, and the summary lists them.
+TEST(bench_report_summary, timing_rounds_judge_similar_time_by_the_round_ratios) {
+    const fs::path dir = temp_dir("md_rounds");
+    bench_report r = fixture();
+    r.timing_rounds = 3;
+    r.configurations[1].frame_ms_vs_baseline = 1.0;  // baseline
+    r.configurations[3].frame_ms_vs_baseline =
+        1.25;  // lod_scale_0.5: faster by medians, not by rounds
+    r.configurations[4].frame_ms_vs_baseline = 0.9;  // points "dense", far
+    write_bench_summary_md(dir / "summary.md", r);
+    const std::string md = read_text(dir / "summary.md");
+    EXPECT_NE(md.find("Frame times are medians over 3 timing rounds of every frame"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("round-by-round ratios: brute_force 8.25×, lod_scale_0.5 1.25×, points "
+                      "\"dense\", far 0.90×."),
+              std::string::npos)
+        << md;
+    // lod_scale_0.5 is out (1.25 > 1.1); points is in, FLIP 0.090 / 0.060 = 1.5 lower.
+    EXPECT_NE(
+        md.find("points \"dense\", far reaches FLIP 0.0600 at 5.00 ms against the baseline (FLIP "
+                "0.0900 at 6.00 ms): 1.50× lower error"),
+        std::string::npos)
+        << md;
+
+    r.timing_rounds = 1;
+    write_bench_summary_md(dir / "summary.md", r);
+    EXPECT_EQ(read_text(dir / "summary.md").find("timing rounds"), std::string::npos);
     fs::remove_all(dir);
 }
 

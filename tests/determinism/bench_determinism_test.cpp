@@ -3,6 +3,7 @@
 // are seen where there are some and not where there are none.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -83,6 +84,65 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
     EXPECT_EQ(one.primitive_costs.at("point"), 0.5);
     // Billboard clouds (Behrendt 2005 §2.3) are drawn along tiny's path, with their fades.
     EXPECT_GT(named(one, "billboard_clouds").primitives.at("instances_billboard_cloud"), 0.0);
+}
+
+// bench_settings::timing_rounds: the later rounds time every configuration again, alternating
+// the order round by round, and change no error; the time against the baseline is the median
+// of the round-by-round ratios.
+TEST(bench_timing_rounds, later_rounds_time_every_configuration_and_change_no_error) {
+    SYLVA_REQUIRE_GL();
+    scenario s =
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    s.frames = 3;
+    std::vector<bench_configuration_spec> chosen;
+    for (const auto& c : default_bench_configurations())
+        if (c.name == "baseline" || c.name == "points_lines_d2") chosen.push_back(c);
+    bench_settings settings;
+    settings.costs = primitive_costs{1.0, 0.5, 4.0};
+    const bench_report once =
+        run_bench(s, chosen, *testing::shared_gl_context(), nullptr, settings);
+
+    std::vector<std::pair<std::uint32_t, int>> round_starts;  // (round, configuration) at frame 0
+    settings.timing_rounds = 3;
+    settings.progress = [&](const bench_progress& p) {
+        EXPECT_EQ(p.rounds, 3u);
+        if (p.frame == 0 && p.configuration >= 0)
+            round_starts.emplace_back(p.round, p.configuration);
+    };
+    const bench_report thrice =
+        run_bench(s, chosen, *testing::shared_gl_context(), nullptr, settings);
+    EXPECT_EQ(thrice.timing_rounds, 3u);
+    // Round 0 in order, round 1 backwards, round 2 forwards again.
+    const std::vector<std::pair<std::uint32_t, int>> expected = {{0, 0}, {0, 1}, {1, 1},
+                                                                 {1, 0}, {2, 0}, {2, 1}};
+    EXPECT_EQ(round_starts, expected);
+
+    ASSERT_EQ(thrice.configurations.size(), 2u);
+    const bench_configuration& baseline = named(thrice, "baseline");
+    const bench_configuration& points = named(thrice, "points_lines_d2");
+    for (const bench_configuration* c : {&baseline, &points}) {
+        SCOPED_TRACE(c->name);
+        ASSERT_EQ(c->frame_ms_rounds.size(), 3u);
+        for (const double round_median : c->frame_ms_rounds) {
+            EXPECT_GT(round_median, 0.0);
+            EXPECT_LE(c->frame_ms_min, round_median);
+            EXPECT_GE(c->frame_ms_max, round_median);
+        }
+        EXPECT_LE(c->frame_ms_min, c->frame_ms_median);
+        EXPECT_GE(c->frame_ms_max, c->frame_ms_median);
+        const bench_configuration& alone = named(once, c->name);
+        EXPECT_EQ(alone.frame_ms_rounds.size(), 1u);
+        EXPECT_EQ(c->error.rmse, alone.error.rmse);
+        EXPECT_EQ(c->error.ssim, alone.error.ssim);
+        EXPECT_EQ(c->error.popping, alone.error.popping);
+        EXPECT_EQ(c->primitives, alone.primitives);
+    }
+    EXPECT_EQ(baseline.frame_ms_vs_baseline, 1.0);
+    std::vector<double> ratios;
+    for (std::size_t r = 0; r < 3; ++r)
+        ratios.push_back(points.frame_ms_rounds[r] / baseline.frame_ms_rounds[r]);
+    std::sort(ratios.begin(), ratios.end());
+    EXPECT_EQ(points.frame_ms_vs_baseline, ratios[1]);
 }
 
 }  // namespace
