@@ -403,7 +403,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
     list.push_back(billboard_clouds("sh"));
-    for (float d : {1.0f, 0.5f, 2.0f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
+    for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
     for (float d : {1.0f, 2.0f, 2.5f, 3.0f}) list.push_back(points_lines(d, splat_style::soft, false));
     // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
