@@ -1,6 +1,7 @@
 #pragma once
-// A shared OSMesa context for GL tests. Tests that need GL call `require_gl()` first; without a
-// context they are skipped (GTEST_SKIP) with the reason, never failed or silently passed.
+// A shared OSMesa context for GL tests. Tests that need GL call SYLVA_REQUIRE_GL() first, which
+// makes it current; without a context they are skipped (GTEST_SKIP) with the reason, never
+// failed or silently passed.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -31,11 +32,20 @@ inline render::gl_context* shared_gl_context(std::string* reason = nullptr) {
     return context.get();
 }
 
+// The shared context, made current: a test that made a context of its own leaves none current
+// when that one is destroyed, and GL calls without a current context do nothing and report no
+// error (a map then returns null).
+inline render::gl_context* current_shared_gl_context(std::string* reason = nullptr) {
+    render::gl_context* context = shared_gl_context(reason);
+    if (context) context->make_current();
+    return context;
+}
+
 }  // namespace sylva::testing
 
-#define SYLVA_REQUIRE_GL()                                                              \
-    do {                                                                                \
-        std::string sylva_gl_reason;                                                    \
-        if (!::sylva::testing::shared_gl_context(&sylva_gl_reason))                     \
-            GTEST_SKIP() << "no GL 4.5 context (OSMesa): " << sylva_gl_reason;          \
+#define SYLVA_REQUIRE_GL()                                                     \
+    do {                                                                       \
+        std::string sylva_gl_reason;                                           \
+        if (!::sylva::testing::current_shared_gl_context(&sylva_gl_reason))    \
+            GTEST_SKIP() << "no GL 4.5 context (OSMesa): " << sylva_gl_reason; \
     } while (0)
