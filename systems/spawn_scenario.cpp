@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -35,6 +37,15 @@
 
 namespace sylva {
 namespace {
+
+// A scenario's placement warning once per process: the bench and the tests build many players
+// from one scenario, and each would repeat it word for word.
+void warn_once(const std::string& message) {
+    static std::mutex mutex;
+    static std::set<std::string> said;
+    const std::lock_guard lock(mutex);
+    if (said.insert(message).second) spdlog::warn("{}", message);
+}
 
 constexpr std::uint32_t k_texture_size = 256;
 // The generated ground texture's mean colour is about the scenario default, so tinting by
@@ -294,9 +305,10 @@ std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& as
                                     density.values.empty() ? nullptr : &density};
         const auto placed = place_population(assets.terrain, rules, hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
         if (placed.size() < pop.count)
-            spdlog::warn("population {} ({}): placed {} of {} plants (spacing, slope, altitude or density "
-                         "left no room)",
-                         p, pop.species, placed.size(), pop.count);
+            warn_once(fmt::format(
+                "population {} ({}): placed {} of {} plants (spacing, slope, altitude or "
+                "density left no room)",
+                p, pop.species, placed.size(), pop.count));
         const std::size_t species = species_index_of(s, pop.species);
         for (const auto& where : placed) plants.push_back({where, species});
     }
