@@ -4,10 +4,20 @@
 // drawn into the cascade only, hangs over flat ground in the sun (70° up, from the east) and a
 // camera looks straight down: the layer shades the ground when it hangs several widths up,
 // and not when it hangs less than one width up. Without the push both would shade it.
+//
+// Point samples receiving shadows (shaders/shading.glsl SHADOW_SINGLE_TAP): a splat is shaded
+// once, at its sample, with one bilinear tap of the shadow map instead of the 3x3-texel filter
+// surfaces use, so a shadow's edge across a field of splats ramps over about one texel where
+// the ground's ramps over about two.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "flat_scene.h"
 #include "gl_test_support.h"
+#include "systems/lighting/shadow_cascades.h"
 #include "systems/lighting/sky_model.h"
 #include "systems/point_line_lod.h"
 #include "systems/render/renderer.h"
@@ -91,6 +101,89 @@ TEST(point_shadow_gl, a_shadow_splat_shades_what_lies_more_than_its_width_behind
     EXPECT_LT(ground_luma(high, under_high), 0.75f * open_high);
     // A third of a width up, pushed back by one it is below the ground it would shade: none.
     EXPECT_GT(ground_luma(low, under_low), 0.95f * open_low);
+}
+
+// Pixels of image row `row` (x from 0 to k_size) strictly inside the ramp from shadow to light:
+// more than 10 % of the way from the row's darkest value to its brightest, and less than 90 %.
+// `dark_over_lit` receives the darkest over the brightest, to check there is a shadow at all.
+int ramp_pixels(const image_rgba8& image, int row, float& dark_over_lit) {
+    std::vector<float> luma;
+    for (int x = 0; x < k_size; ++x) {
+        const std::uint8_t* p = image.at(std::uint32_t(x), std::uint32_t(row));
+        luma.push_back(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]);
+    }
+    const auto [lo, hi] = std::minmax_element(luma.begin(), luma.end());
+    const float dark = *lo, lit = *hi;
+    dark_over_lit = dark / lit;
+    int inside = 0;
+    for (const float v : luma)
+        if (v > dark + 0.1f * (lit - dark) && v < lit - 0.1f * (lit - dark)) ++inside;
+    return inside;
+}
+
+TEST(point_shadow_gl, a_splat_reads_its_shadow_with_one_tap_so_its_shadow_edge_is_sharper) {
+    SYLVA_REQUIRE_GL();
+    constexpr int k_resolution = 128;  // coarse: a texel spans several pixels
+    render::context_options options;
+    options.width = options.height = k_size;
+    auto context = render::create_context(options);
+
+    scene_assets assets;
+    assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
+    assets.meshes.push_back(horizontal_quad(20.0f, 0.0f, material_kind::bark));  // the occluder
+    assets.meshes.push_back(point_layer(6.0f, 0.04f));  // far denser than the pixels (0.135 m)
+    assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
+    assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
+    assets.library.meshes.push_back({std::uint32_t(assets.meshes[2].vertices.size()),
+                                     representation::points, primitive_kind::points});
+    assets.terrain_meshes = {0};
+    assets.leaf_textures = {solid(160)};
+    assets.bark_textures = {solid(160)};
+    assets.ground_texture = solid(160);
+    render::renderer_settings settings;
+    settings.width = settings.height = k_size;
+    settings.cascades = 1;
+    settings.shadow_resolution = k_resolution;
+    render::renderer renderer(settings, assets);
+
+    // The occluder, 5 m up, covers x < 0 and is drawn into the cascade only; the sun, 70° up in
+    // the east, puts its shadow's edge at x = -5 / tan 70° on the ground, under the camera.
+    const double edge_x = -5.0 / std::tan(70.0 * 3.14159265358979 / 180.0);
+    const camera cam = testing::looking_down({edge_x, 30.0, 0.0}, 60.0f, float(k_size));
+    auto [light, sky, cascades] = testing::sun_from_the_east(cam, 70.0f);
+    cascades = fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f, light.direction,
+                            1, 0.5f, k_resolution, 50.0f, cam.position);
+    // Several pixels per texel, so each ramp spans several pixels of the row.
+    ASSERT_GT(cascades.texel_world_size[0],
+              3.0f * float(2.0 * 30.0 * std::tan(glm::radians(30.0)) / k_size));
+
+    auto render_row = [&](bool splats, float& dark_over_lit) {
+        draw_list draws;
+        instance_gpu occluder;
+        occluder.position = glm::vec3(glm::dvec3(-20.0, 5.0, 0.0) - cam.position);
+        occluder.fade = 1.0f;
+        instance_gpu layer;
+        layer.position = glm::vec3(glm::dvec3(edge_x, 0.02, 0.0) - cam.position);
+        layer.fade = 1e9f;
+        draws.instances = {occluder, layer};
+        draws.batches = {{render_pass::shadow_cascade_0, 1, 0, 1}};
+        if (splats) draws.batches.push_back({render_pass::opaque, 2, 1, 1});
+        render::frame_view view = testing::make_view(cam, light, sky, cascades, draws);
+        view.set_samples({1.0f, 1.3f, false, splat_style::opaque, false});
+        renderer.render(view);
+        renderer.finish();
+        return ramp_pixels(renderer.read_color(), k_size / 2, dark_over_lit);
+    };
+    float ground_contrast = 1.0f, splat_contrast = 1.0f;
+    const int ground = render_row(false, ground_contrast);
+    const int splat = render_row(true, splat_contrast);
+    EXPECT_LT(ground_contrast, 0.8f);  // both show the shadow
+    EXPECT_LT(splat_contrast, 0.8f);
+    // The ground's four taps ramp over about two texels; the splats' one tap over about one.
+    EXPECT_GE(ground, 4);
+    EXPECT_LE(splat, ground * 2 / 3)
+        << "ground ramp " << ground << " px, splat ramp " << splat << " px";
+    std::printf("shadow ramp: ground %d px, splats %d px\n", ground, splat);
 }
 
 }  // namespace
