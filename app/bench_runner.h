@@ -64,7 +64,8 @@ struct bench_settings {
     // errors and time, the rounds after it time the same frames again (read back the same way,
     // so the device syncs at the same points), the configurations alternating so a machine
     // that slows down or speeds up over a run shifts them all alike. Frame times are medians
-    // over every round's frames; errors come from round 0 alone (they do not vary).
+    // over every round's frames; errors come from round 0 alone (they do not vary). The
+    // `reference` configuration (a check that the comparison is exact) is timed in round 0 only.
     std::uint32_t timing_rounds = 1;
     // Called before every frame for progress output.
     std::function<void(const bench_progress&)> progress;

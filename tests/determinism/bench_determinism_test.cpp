@@ -96,7 +96,8 @@ TEST(bench_timing_rounds, later_rounds_time_every_configuration_and_change_no_er
     s.frames = 3;
     std::vector<bench_configuration_spec> chosen;
     for (const auto& c : default_bench_configurations())
-        if (c.name == "baseline" || c.name == "points_lines_d2") chosen.push_back(c);
+        if (c.name == "reference" || c.name == "baseline" || c.name == "points_lines_d2")
+            chosen.push_back(c);
     bench_settings settings;
     settings.costs = primitive_costs{1.0, 0.5, 4.0};
     const bench_report once =
@@ -112,12 +113,14 @@ TEST(bench_timing_rounds, later_rounds_time_every_configuration_and_change_no_er
     const bench_report thrice =
         run_bench(s, chosen, *testing::shared_gl_context(), nullptr, settings);
     EXPECT_EQ(thrice.timing_rounds, 3u);
-    // Round 0 in order, round 1 backwards, round 2 forwards again.
-    const std::vector<std::pair<std::uint32_t, int>> expected = {{0, 0}, {0, 1}, {1, 1},
-                                                                 {1, 0}, {2, 0}, {2, 1}};
+    // Round 0 in order, round 1 backwards, round 2 forwards again; the reference (0) only in
+    // round 0.
+    const std::vector<std::pair<std::uint32_t, int>> expected = {{0, 0}, {0, 1}, {0, 2}, {1, 2},
+                                                                 {1, 1}, {2, 1}, {2, 2}};
     EXPECT_EQ(round_starts, expected);
 
-    ASSERT_EQ(thrice.configurations.size(), 2u);
+    ASSERT_EQ(thrice.configurations.size(), 3u);
+    EXPECT_EQ(named(thrice, "reference").frame_ms_rounds.size(), 1u);
     const bench_configuration& baseline = named(thrice, "baseline");
     const bench_configuration& points = named(thrice, "points_lines_d2");
     for (const bench_configuration* c : {&baseline, &points}) {
