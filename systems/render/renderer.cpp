@@ -541,26 +541,28 @@ void renderer::draw_soft_splats() {
     m_timer.end();
 }
 
-// Draws the splat layer over the frame (shaders/splat_layer.frag), with its IDs when the frame
-// has an ID buffer.
+// Draws the splat layer over the frame (shaders/splat_layer.frag), then, when the frame has an
+// ID buffer, the layer's visibility IDs in a second pass that writes nothing else.
 void renderer::composite_splat_layer() {
     m_target.bind();
     glBindTextureUnit(0, m_splat_layer->color());
     glBindTextureUnit(1, m_splat_layer->nearest_depth());
-    const bool ids = m_splat_layer->ids() != 0;
-    if (ids) glBindTextureUnit(2, m_splat_layer->ids());
-    m_target.draw_ids(ids);
     glEnablei(GL_BLEND, 0);
     glBlendFuncSeparatei(0, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glUseProgram(
-        m_shaders.program({"sky.vert",
-                           "splat_layer.frag",
-                           ids ? std::vector<std::string>{"WRITE_ID"} : std::vector<std::string>{},
-                           {}}));
+    glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {}, {}}));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++m_draw_calls;
     glDisable(GL_BLEND);
-    m_target.draw_ids(false);
+    if (m_splat_layer->ids() != 0) {
+        glBindTextureUnit(2, m_splat_layer->ids());
+        m_target.draw_ids(true);
+        glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glUseProgram(m_shaders.program({"sky.vert", "splat_layer.frag", {"WRITE_ID"}, {}}));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        ++m_draw_calls;
+        glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        m_target.draw_ids(false);
+    }
 }
 
 // The point and line representation's samples (Deussen 2002 §5.1, §5.2) of bark and leaf

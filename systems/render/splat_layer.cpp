@@ -32,6 +32,8 @@ splat_layer::splat_layer(int frame_width, int frame_height, bool id_buffer)
         // An integer texture with GL's default linear filters is incomplete and reads as 0.
         glTextureParameteri(m_ids.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(m_ids.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(m_ids.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);  // not GL's REPEAT:
+        glTextureParameteri(m_ids.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // no far-edge IDs
         glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT2, m_ids.id(), 0);
     }
     draw_blend();

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <glm/trigonometric.hpp>
 
 #include "flat_scene.h"
@@ -267,6 +269,68 @@ TEST(soft_splat_gl, a_surface_in_front_of_the_splat_layer_hides_it) {
             EXPECT_EQ(with[at(x, y)], without[at(x, y)]) << x << ", " << y;
             EXPECT_NE(ids[at(x, y)], splat_id) << x << ", " << y;
         }
+}
+
+// The layer's IDs: a pixel gets the splats' plant only where a visibility splat lies under it.
+// Where only a Gaussian shows (the soft splats are twice as wide as the visibility splats, and
+// only every second one has a visibility splat at all) the pixel keeps the ID of the surface
+// behind, as with splats drawn straight into the frame. A sparse field 1 m up over an opaque
+// plant square 0.5 m up, 6 m around the centre, at d' = 2 px through the layer.
+TEST(soft_splat_gl, the_splat_layer_names_its_plant_only_under_visibility_splats) {
+    SYLVA_REQUIRE_GL();
+    splat_scene scene = make_scene();  // mesh 1: the sparse field
+    scene.assets.meshes.push_back(horizontal_quad(6.0f, 0.5f, material_kind::bark));
+    scene.assets.library.meshes.push_back(
+        {2, representation::mesh_full, primitive_kind::triangles});
+    const auto square = std::uint16_t(scene.assets.meshes.size() - 1);
+    const auto context = gl_fixture::create();
+    render::renderer_settings settings = gl_fixture::settings();
+    settings.id_buffer = true;
+    render::renderer renderer(settings, scene.assets);
+
+    auto render = [&](bool splats) {
+        draw_list draws;
+        instance_gpu plant;
+        plant.position = glm::vec3(-scene.cam.position);
+        plant.fade = 1.0f;
+        instance_gpu field;
+        field.position = glm::vec3(glm::dvec3(0.0, 1.0, 0.0) - scene.cam.position);
+        field.fade = 1e9f;
+        draws.instances = {plant, field};
+        draws.batches = {{render_pass::opaque, square, 0, 1, 0}};
+        if (splats) draws.batches.push_back({render_pass::opaque, 1, 1, 1, 0});
+        const cascade_set cascades;
+        render::frame_view view =
+            testing::make_view(scene.cam, scene.light, scene.sky, cascades, draws);
+        view.set_samples({2.0f, 1.3f, true, splat_style::soft, false});
+        renderer.render(view);
+        renderer.finish();
+        return std::make_pair(renderer.read_color(), renderer.read_ids());
+    };
+    const auto [without, square_ids] = render(false);
+    const auto [with, ids] = render(true);
+    const std::uint32_t square_id = square_ids[std::size_t(k_size / 2 * k_size + k_size / 2)];
+    ASSERT_NE(square_id, 0u);
+    // The square's image, 4 px in from its edges (6 m at 39 m from the eye: about ±20 px).
+    int splat_pixels = 0, halo_pixels = 0;
+    for (int y = k_size / 2 - 16; y < k_size / 2 + 16; ++y)
+        for (int x = k_size / 2 - 16; x < k_size / 2 + 16; ++x) {
+            const std::size_t i = std::size_t(y * k_size + x);
+            ASSERT_EQ(square_ids[i], square_id) << x << ", " << y;
+            EXPECT_NE(ids[i], 0u) << x << ", " << y;  // never "nothing drawn" over the square
+            const bool changed =
+                std::memcmp(with.at(std::uint32_t(x), std::uint32_t(y)),
+                            without.at(std::uint32_t(x), std::uint32_t(y)), 3) != 0;
+            if (ids[i] != square_id) {
+                ++splat_pixels;
+            } else if (changed) {
+                ++halo_pixels;
+            }
+        }
+    std::printf("splat layer IDs: %d pixels name the field, %d show it but keep the square's\n",
+                splat_pixels, halo_pixels);
+    EXPECT_GT(splat_pixels, 20);  // the visibility splats name the field's plant
+    EXPECT_GT(halo_pixels, 20);   // and the Gaussians show beyond them, over the square's ID
 }
 
 }  // namespace
