@@ -38,7 +38,8 @@ struct bench_configuration {
     double frame_ms_max = 0.0;
     std::vector<double> frame_ms_rounds;  // the median of each timing round, in round order
     // Median over the rounds of this configuration's round median over the baseline's of the
-    // same round; NaN without a baseline configuration (bench_runner.h: timing_rounds).
+    // same round; NaN without a baseline configuration, or for one timed in fewer rounds than
+    // the baseline (the reference; bench_runner.h: timing_rounds).
     double frame_ms_vs_baseline = std::numeric_limits<double>::quiet_NaN();
     std::map<std::string, double> cpu_ms;       // median per system, plus "total"
     std::map<std::string, double> gpu_ms;       // median per pass, plus "total"

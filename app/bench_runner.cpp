@@ -497,8 +497,11 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
         }
     for (std::size_t i = 0; i < selected.size(); ++i)
         add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
+    // Ratios to the baseline round by round, for configurations timed in every round (not the
+    // reference: its one round says nothing about drift).
     if (const bench_configuration* baseline = find_baseline(report))
         for (auto& c : report.configurations) {
+            if (c.frame_ms_rounds.size() != baseline->frame_ms_rounds.size()) continue;
             std::vector<double> ratios;
             for (std::size_t r = 0; r < c.frame_ms_rounds.size(); ++r)
                 ratios.push_back(c.frame_ms_rounds[r] / baseline->frame_ms_rounds[r]);

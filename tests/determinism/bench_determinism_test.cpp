@@ -121,6 +121,8 @@ TEST(bench_timing_rounds, later_rounds_time_every_configuration_and_change_no_er
 
     ASSERT_EQ(thrice.configurations.size(), 3u);
     EXPECT_EQ(named(thrice, "reference").frame_ms_rounds.size(), 1u);
+    EXPECT_TRUE(
+        std::isnan(named(thrice, "reference").frame_ms_vs_baseline));  // one round: no ratio
     const bench_configuration& baseline = named(thrice, "baseline");
     const bench_configuration& points = named(thrice, "points_lines_d2");
     for (const bench_configuration* c : {&baseline, &points}) {
