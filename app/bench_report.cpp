@@ -64,6 +64,7 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
             {"primitives", numbers(c.primitives)},
             {"upload_bytes", number(c.upload_bytes)},
             {"peak_memory_mb", number(c.peak_memory_mb)},
+            {"primitive_costs", numbers(c.primitive_costs)},
             {"error",
              {{"psnr", number(e.psnr_db)},
               {"ssim", number(e.ssim)},

@@ -47,6 +47,9 @@ struct bench_configuration {
                                                 // shadow_triangles, and instances per representation
     double upload_bytes = 0.0;                  // median per frame
     double peak_memory_mb = 0.0;                // resident high-water mark while it ran
+    // The device's relative primitive costs a point/line configuration selected with (triangle,
+    // point, line; systems/render/primitive_cost_calibration.h), for its own d'; empty otherwise.
+    std::map<std::string, double> primitive_costs;
     bench_error error;
 };
 
@@ -62,8 +65,8 @@ struct bench_report {
     std::uint32_t timing_rounds = 1;
     std::uint32_t reference_samples_per_pixel = 9;
     double reference_frame_ms_median = 0.0;
-    // The device's relative primitive costs the point/line configurations selected with
-    // (triangle, point, line; systems/render/primitive_cost_calibration.h); empty without them.
+    // Costs fixed for every point/line configuration (bench_settings::costs); empty when each
+    // used the device's own (bench_configuration::primitive_costs).
     std::map<std::string, double> primitive_costs;
     std::vector<bench_configuration> configurations;
 };

@@ -196,7 +196,7 @@ void add_timing_rounds(bench_configuration& c, std::vector<double> round0_frame_
 // Round 0 of `spec`: its errors against `ref` and its time; `frame_ms` receives the frame times.
 bench_configuration run_configuration(const scenario& s, const bench_configuration_spec& spec,
                                       const reference_frames& ref, render::gl_context& context,
-                                      bake_cache* cache, bench_settings& settings, int index,
+                                      bake_cache* cache, const bench_settings& settings, int index,
                                       std::size_t count, std::vector<double>& frame_ms) {
     reset_peak_resident();
     player_options options = measured(spec.options);
@@ -205,9 +205,14 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
         options.measure_costs = false;
     }
     scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
-    if (options.measure_costs && options.policy.uses_point_lines()) settings.costs = player.costs();
+    std::map<std::string, double> out_costs;
+    if (options.policy.uses_point_lines()) {
+        const primitive_costs& costs = player.costs();
+        out_costs = {{"triangle", costs.triangle}, {"point", costs.point}, {"line", costs.line}};
+    }
     warm_up(player);
     bench_configuration out;
+    out.primitive_costs = std::move(out_costs);
     out.name = spec.name;
     out.family = spec.family;
     out.description = spec.description;

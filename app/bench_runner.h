@@ -69,9 +69,10 @@ struct bench_settings {
     std::uint32_t timing_rounds = 1;
     // Called before every frame for progress output.
     std::function<void(const bench_progress&)> progress;
-    // The device's primitive costs for the point/line configurations. Unset: measured once by
-    // the first configuration that needs them (through the cache) and used by all, so every
-    // configuration selects with the same costs.
+    // Fixed primitive costs for every point/line configuration (tests: a measurement differs
+    // run to run). Unset: each configuration selects with the device's costs for its own d'
+    // (scenario_player: from the cache, measured on first use), as `sylva play` with the same
+    // options does, so its errors do not depend on which other configurations run with it.
     std::optional<primitive_costs> costs;
 };
 

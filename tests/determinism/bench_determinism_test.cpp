@@ -82,6 +82,8 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
     EXPECT_LT(named(one, "points_lines_d2").primitives.at("triangles"),
               named(one, "brute_force").primitives.at("triangles"));
     EXPECT_EQ(one.primitive_costs.at("point"), 0.5);
+    EXPECT_EQ(named(one, "points_lines_d2").primitive_costs.at("line"), 4.0);
+    EXPECT_TRUE(named(one, "baseline").primitive_costs.empty());
     // Billboard clouds (Behrendt 2005 §2.3) are drawn along tiny's path, with their fades.
     EXPECT_GT(named(one, "billboard_clouds").primitives.at("instances_billboard_cloud"), 0.0);
 }
