@@ -47,27 +47,42 @@ mesh_data point_layer(float half, float spacing) {
     return m;
 }
 
+// Flat grey ground, 80 m across (mesh 0, the terrain), then `parts` as meshes 1, 2, ...: triangle
+// parts as full meshes, point parts as samples; leaves and bark of grey level `foliage`.
+scene_assets ground_and(std::vector<mesh_data> parts, std::uint8_t foliage) {
+    scene_assets assets;
+    assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
+    for (mesh_data& m : parts) assets.meshes.push_back(std::move(m));
+    for (const mesh_data& m : assets.meshes) {
+        const bool points = m.primitive == primitive_kind::points;
+        assets.library.meshes.push_back(
+            {std::uint32_t(points ? m.vertices.size() : m.indices.size() / 3),
+             points ? representation::points : representation::mesh_full, m.primitive});
+    }
+    assets.terrain_meshes = {0};
+    assets.leaf_textures = {solid(foliage)};
+    assets.bark_textures = {solid(foliage)};
+    assets.ground_texture = solid(160);
+    return assets;
+}
+
+// The frame, k_size square, with one shadow cascade of `resolution` texels.
+render::renderer_settings one_cascade(int resolution) {
+    render::renderer_settings settings;
+    settings.width = settings.height = k_size;
+    settings.cascades = 1;
+    settings.shadow_resolution = resolution;
+    return settings;
+}
+
 TEST(point_shadow_gl, a_shadow_splat_shades_what_lies_more_than_its_width_behind_it) {
     SYLVA_REQUIRE_GL();
     render::context_options options;
     options.width = options.height = k_size;
     auto context = render::create_context(options);
 
-    scene_assets assets;
-    assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
-    assets.meshes.push_back(point_layer(2.0f, 0.1f));  // 1,600 samples over 4 m x 4 m
-    assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
-    assets.library.meshes.push_back({std::uint32_t(assets.meshes[1].vertices.size()),
-                                     representation::points, primitive_kind::points});
-    assets.terrain_meshes = {0};
-    assets.leaf_textures = {solid(90)};
-    assets.bark_textures = {solid(90)};
-    assets.ground_texture = solid(160);
-    render::renderer_settings settings;
-    settings.width = settings.height = k_size;
-    settings.cascades = 1;
-    settings.shadow_resolution = 2048;
-    render::renderer renderer(settings, assets);
+    // Mesh 1: 1,600 samples over 4 m x 4 m.
+    render::renderer renderer(one_cascade(2048), ground_and({point_layer(2.0f, 0.1f)}, 90));
 
     const camera cam = testing::looking_down({0.0, 30.0, 0.0}, 60.0f, float(k_size));
     const auto [light, sky, cascades] = testing::sun_from_the_east(cam, 70.0f);
@@ -128,23 +143,11 @@ TEST(point_shadow_gl, a_splat_reads_its_shadow_with_one_tap_so_its_shadow_edge_i
     options.width = options.height = k_size;
     auto context = render::create_context(options);
 
-    scene_assets assets;
-    assets.meshes.push_back(horizontal_quad(40.0f, 0.0f, material_kind::ground));
-    assets.meshes.push_back(horizontal_quad(20.0f, 0.0f, material_kind::bark));  // the occluder
-    assets.meshes.push_back(point_layer(6.0f, 0.04f));  // far denser than the pixels (0.135 m)
-    assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
-    assets.library.meshes.push_back({2, representation::mesh_full, primitive_kind::triangles});
-    assets.library.meshes.push_back({std::uint32_t(assets.meshes[2].vertices.size()),
-                                     representation::points, primitive_kind::points});
-    assets.terrain_meshes = {0};
-    assets.leaf_textures = {solid(160)};
-    assets.bark_textures = {solid(160)};
-    assets.ground_texture = solid(160);
-    render::renderer_settings settings;
-    settings.width = settings.height = k_size;
-    settings.cascades = 1;
-    settings.shadow_resolution = k_resolution;
-    render::renderer renderer(settings, assets);
+    // Mesh 1: the occluder; 2: samples far denser than the pixels (0.135 m).
+    render::renderer renderer(
+        one_cascade(k_resolution),
+        ground_and({horizontal_quad(20.0f, 0.0f, material_kind::bark), point_layer(6.0f, 0.04f)},
+                   160));
 
     // The occluder, 5 m up, covers x < 0 and is drawn into the cascade only; the sun, 70° up in
     // the east, puts its shadow's edge at x = -5 / tan 70° on the ground, under the camera.
