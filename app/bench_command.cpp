@@ -125,9 +125,8 @@ command_runner add_bench_command(CLI::App& app) {
            "Play every configuration's frames this many times for its timing, the "
            "configurations alternating round by round, and report medians over all rounds and "
            "each configuration's time against the baseline as the median of the round-by-round "
-           "ratios. Errors come from the first round; the reference is timed in it only. Use on a "
-           "noisy "
-           "machine to compare times")
+           "ratios. Errors come from the first round; the reference is timed in it only. Use on "
+           "a noisy machine to compare times")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1000u));
     app.add_flag("--list", options->list, "List the configurations and exit");

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/bench_format.h"
 #include "app/metrics.h"
 #include "components/lod_state.h"
 #include "measure/image_metrics.h"
@@ -81,12 +82,6 @@ void warm_up(scenario_player& player) {
 }
 
 double median_of(std::vector<double> v) { return v.empty() ? 0.0 : median(std::move(v)); }
-
-const bench_configuration* find_baseline(const bench_report& report) {
-    for (const auto& c : report.configurations)
-        if (c.name == "baseline") return &c;
-    return nullptr;
-}
 
 // Medians per key over frames (a key missing in a frame counts as 0 there).
 std::map<std::string, double> medians(const std::vector<std::map<std::string, double>>& frames) {
@@ -504,7 +499,7 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
         add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
     // Ratios to the baseline round by round, for configurations timed in every round (not the
     // reference: its one round says nothing about drift).
-    if (const bench_configuration* baseline = find_baseline(report))
+    if (const bench_configuration* baseline = bench_format::find_configuration(report, "baseline"))
         for (auto& c : report.configurations) {
             if (c.frame_ms_rounds.size() != baseline->frame_ms_rounds.size()) continue;
             std::vector<double> ratios;
