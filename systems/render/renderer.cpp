@@ -497,15 +497,13 @@ void renderer::draw_soft_splats() {
     if (!any) return;
     m_timer.begin(gpu_pass::splats);
     const bool layered = m_soft_splat_px >= k_splat_layer_min_side_px;
-    const float splat_px = m_splat_px, soft_splat_px = m_soft_splat_px;
+    // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
+    const float pixel_scale = layered ? splat_layer::k_scale : 1.0f;
     if (layered) {
         if (!m_splat_layer)
             m_splat_layer.emplace(m_settings.width, m_settings.height, m_settings.id_buffer);
         m_splat_layer->begin();
         if (m_shadow_maps) glBindTextureUnit(1, m_shadow_maps->texture());  // the splats' lighting
-        // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
-        m_splat_px *= splat_layer::k_scale;
-        m_soft_splat_px *= splat_layer::k_scale;
     }
     glDepthMask(GL_TRUE);
     if (layered) {
@@ -514,7 +512,7 @@ void renderer::draw_soft_splats() {
         glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         m_target.draw_ids(true);
     }
-    draw_samples(groups, sample_pass::splat_visibility);
+    draw_samples(groups, sample_pass::splat_visibility, -1, pixel_scale);
     if (layered) {
         m_splat_layer->draw_blend();
     } else {
@@ -531,11 +529,9 @@ void renderer::draw_soft_splats() {
         glEnablei(GL_BLEND, 1);
         glBlendEquationi(1, GL_MIN);
     }
-    draw_samples(groups, sample_pass::soft_splats);
+    draw_samples(groups, sample_pass::soft_splats, -1, pixel_scale);
     if (layered) glBlendEquationi(1, GL_FUNC_ADD);
     glDisable(GL_BLEND);
-    m_splat_px = splat_px;
-    m_soft_splat_px = soft_splat_px;
     if (layered) composite_splat_layer();
     glDepthMask(GL_TRUE);
     m_timer.end();
@@ -568,7 +564,8 @@ void renderer::composite_splat_layer() {
 // The point and line representation's samples (Deussen 2002 §5.1, §5.2) of bark and leaf
 // parts: into shadow cascade `cascade`, the view's opaque pass, or one of the two passes of
 // soft splats (draw_soft_splats).
-void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int cascade) {
+void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int cascade,
+                            float pixel_scale) {
     const bool shadow = pass == sample_pass::cascade;
     const bool soft = pass == sample_pass::splat_visibility || pass == sample_pass::soft_splats;
     for (const lighting_variant lighting : k_all_lightings)
@@ -598,7 +595,8 @@ void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int c
                 if (primitive == primitive_kind::points) {
                     glEnable(GL_PROGRAM_POINT_SIZE);
                     glUniform1f(glGetUniformLocation(program, "u_splat_px"),
-                                pass == sample_pass::soft_splats ? m_soft_splat_px : m_splat_px);
+                                pixel_scale * (pass == sample_pass::soft_splats ? m_soft_splat_px
+                                                                                : m_splat_px));
                     // A cascade's splats are as wide as its samples are apart (c_p = 1,
                     // compute_shadow_prefix): k_shadow_sample_texels texels, or
                     // k_shadow_sample_spacing times the viewer's sample distance there.

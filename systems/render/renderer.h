@@ -137,7 +137,10 @@ private:
     // What draw_samples draws: points and lines into a shadow cascade; the view's opaque
     // samples (lines, and points unless they are soft); or the two passes of soft splats.
     enum class sample_pass { cascade, view, splat_visibility, soft_splats };
-    void draw_samples(const pass_commands& groups, sample_pass pass, int cascade = -1);
+    // `pixel_scale`: splat sizes in the target drawn to over the frame's (the splat layer's
+    // k_scale, or 1).
+    void draw_samples(const pass_commands& groups, sample_pass pass, int cascade = -1,
+                      float pixel_scale = 1.0f);
     void draw_soft_splats();
     void composite_splat_layer();
     void draw_clouds(const pass_commands& groups, int cascade);

@@ -39,8 +39,6 @@ public:
     GLuint color() const { return m_color.id(); }
     GLuint nearest_depth() const { return m_nearest.id(); }
     GLuint ids() const { return m_ids.id(); }  // 0 without an ID buffer
-    int width() const { return m_width; }
-    int height() const { return m_height; }
     // Window size of the layer relative to the frame's: every splat is drawn this many times
     // its frame size.
     static constexpr float k_scale = 0.5f;
