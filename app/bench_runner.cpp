@@ -73,6 +73,18 @@ player_options measured(player_options options) {
     return options;
 }
 
+// How the player of configuration `spec` draws: as measured(), with the bench's fixed costs
+// when it has them (bench_settings::costs).
+player_options configuration_options(const bench_configuration_spec& spec,
+                                     const bench_settings& settings) {
+    player_options options = measured(spec.options);
+    if (settings.costs) {
+        options.costs = *settings.costs;
+        options.measure_costs = false;
+    }
+    return options;
+}
+
 // Plays frame 0 once and rewinds, so shader compilation and first-use allocation are not timed
 // (each configuration has its own renderer). Playback is a function of the frame number, so
 // the frames that follow are the same as without it.
@@ -155,11 +167,7 @@ bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
 std::vector<double> time_configuration(const scenario& s, const bench_configuration_spec& spec,
                                        render::gl_context& context, bake_cache* cache,
                                        const bench_settings& settings, bench_progress progress) {
-    player_options options = measured(spec.options);
-    if (settings.costs) {
-        options.costs = *settings.costs;
-        options.measure_costs = false;
-    }
+    const player_options options = configuration_options(spec, settings);
     scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
     warm_up(player);
     std::vector<double> frame_ms;
@@ -194,11 +202,7 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
                                       bake_cache* cache, const bench_settings& settings, int index,
                                       std::size_t count, std::vector<double>& frame_ms) {
     reset_peak_resident();
-    player_options options = measured(spec.options);
-    if (settings.costs) {
-        options.costs = *settings.costs;
-        options.measure_costs = false;
-    }
+    const player_options options = configuration_options(spec, settings);
     scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
     std::map<std::string, double> out_costs;
     if (options.policy.uses_point_lines()) {
