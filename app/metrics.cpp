@@ -12,8 +12,7 @@ namespace sylva {
 
 std::string_view representation_name(representation r) {
     constexpr std::array<std::string_view, static_cast<std::size_t>(representation::count)> k_names = {
-        "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "lines", "billboard_cloud", "shell",
-        "foliage_clusters"};
+        "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "billboard_cloud"};
     return k_names[static_cast<std::size_t>(r)];
 }
 

@@ -5,8 +5,9 @@
 
 namespace sylva {
 
-// Every representation Sylva can draw. Later work adds points/lines (Deussen 2002), billboard
-// clouds and shells (Behrendt 2005) and LoDF foliage clusters (Rebollo 2006).
+// Every representation Sylva can draw, and only those: metrics.json and bench.json report an
+// instance count per enumerator, so a representation joins the enum when it can be drawn (shells,
+// Behrendt 2005 §3, and LoDF foliage clusters, Rebollo 2006, come with their issues).
 enum class representation : std::uint8_t {
     none = 0,      // culled or not yet chosen
     mesh_full,     // every triangle and leaf of the model
@@ -16,11 +17,10 @@ enum class representation : std::uint8_t {
     // (models/crossed_billboard.h): the usual engine baseline beyond the far mesh. Not a mesh
     // level: build_draw_list's coarser() stops at mesh_far and never yields it.
     crossed_billboard,
+    // Deussen 2002: prefixes of the plant's random-order triangles, points and lines (one
+    // representation for all three; frame_record counts the points and lines it draws).
     points,
-    lines,
-    billboard_cloud,
-    shell,
-    foliage_clusters,
+    billboard_cloud,  // Behrendt 2005 §2
     count
 };
 

@@ -79,6 +79,12 @@ TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
         EXPECT_TRUE(f["passes"].contains("shadow"));
         EXPECT_GT(f["instances"]["mesh_full"].get<int>() + f["instances"]["mesh_reduced"].get<int>() +
                       f["instances"]["mesh_far"].get<int>(), 0);
+        // One count per representation Sylva can draw, and none for one it cannot draw yet: a
+        // stub figure (always 0) would read as "measured, unused".
+        std::vector<std::string> names;
+        for (const auto& [name, count] : f["instances"].items()) names.push_back(name);
+        EXPECT_EQ(names, (std::vector<std::string>{"billboard_cloud", "crossed_billboard", "mesh_far",
+                                                   "mesh_full", "mesh_reduced", "points"}));
     }
     const auto& summary = metrics["summary"];
     for (const char* key : {"median_frame_ms", "median_cpu_ms", "median_gpu_ms", "machine", "gl_renderer",
