@@ -6,11 +6,11 @@
 //   the mean of |E_t - E_(t-1)|. This is "the frame-to-frame change of the LOD image minus that
 //   of the reference" (issue 4): motion that the reference shows too cancels, a representation
 //   switch or a flickering far plant does not.
-// - lighting jump: the colour of a plant just before and just after it switches representation.
-//   Per plant, the mean colour of the pixels its ID covers; at a switch between frames t-1 and
-//   t, the jump is |(C_test,t - C_test,t-1) - (C_ref,t - C_ref,t-1)|, the Euclidean RGB distance
-//   in 8-bit units of the test's colour change less the reference's change over the same frames
-//   (the camera and sun move; the reference does not switch).
+// - lighting jump: how a plant's colour changes over a transition between representations,
+//   beyond the reference's change over the same frames. Per plant, the mean colour of the pixels
+//   its ID covers; over a window from frame a to frame b, |(C_test,b - C_test,a) - (C_ref,b -
+//   C_ref,a)|, the Euclidean RGB distance in 8-bit units. Which frames bound a transition is
+//   measure/transition_windows.h's business; lighting_jump() is the formula.
 //
 // Pure CPU, deterministic; all inputs of one call have the same size (std::invalid_argument
 // otherwise).
@@ -34,8 +34,8 @@ struct plant_color {
 using plant_colors = std::unordered_map<std::uint32_t, plant_color>;
 plant_colors mean_plant_colors(const image_rgba8& image, const std::vector<std::uint32_t>& ids);
 
-// The lighting jump of one plant at a switch (see above); the caller decides which plants
-// switched and requires enough pixels in all four colours.
+// The lighting jump of one plant between two frames (see above); the caller decides which
+// frames bound a transition and requires enough pixels in all four colours.
 double lighting_jump(const plant_color& test_before, const plant_color& test_after, const plant_color& reference_before,
                      const plant_color& reference_after);
 
