@@ -3,12 +3,15 @@
 // bench.svg and summary.md.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <spdlog/spdlog.h>
 
+#include "app/bench_catalogue.h"
 #include "app/bench_report.h"
 #include "app/bench_runner.h"
+#include "app/bench_verdict.h"
 #include "app/commands.h"
 #include "app/scenario_options.h"
 
@@ -31,7 +34,7 @@ constexpr std::uint32_t k_default_bench_height = 270;
 
 void print_progress(const std::vector<bench_configuration_spec>& specs,
                     const std::vector<std::string>& only, const bench_progress& p) {
-    std::string name = "reference";
+    std::string name = "reference (" + p.reference_lighting + ")";
     if (p.configuration >= 0) {
         std::size_t seen = 0;
         for (const auto& s : specs)
@@ -48,10 +51,36 @@ void print_progress(const std::vector<bench_configuration_spec>& specs,
     if (p.frame + 1 == p.frames) std::fprintf(stderr, "\n");
 }
 
+// The table and the verdicts on stdout, after the files are written.
+void print_results(const bench_report& report) {
+    std::printf("%-28s %-8s %10s %9s %9s %8s %8s %8s %8s %8s %6s\n", "configuration", "lighting", "median ms",
+                "x base", "PSNR dB", "SSIM", "FLIP", "IoU", "popping", "jump", "trans");
+    for (const auto& c : report.configurations) {
+        const std::string jump =
+            std::isfinite(c.error.lighting_jump) ? std::to_string(c.error.lighting_jump).substr(0, 6) : "n/a";
+        std::printf("%-28s %-8s %10.1f %9.3f %9.2f %8.4f %8.4f %8.4f %8.3f %8s %6llu\n", c.name.c_str(),
+                    c.lighting.c_str(), c.frame_ms_median, c.frame_ms_vs_baseline, c.error.psnr_db, c.error.ssim,
+                    c.error.perceptual, c.error.coverage_iou, c.error.popping, jump.c_str(),
+                    static_cast<unsigned long long>(c.error.transitions));
+    }
+    const std::vector<family_verdict> verdicts = baseline_verdicts(report);
+    if (verdicts.empty()) return;
+    std::printf("\nVerdict: does each sweep beat the engine baseline's (time ratio <= 1, SSIM >=, FLIP <=)?\n");
+    for (const family_verdict& v : verdicts) {
+        std::printf("  %-8s %-22s %s\n", v.lighting.c_str(), v.family.c_str(), v.summary().c_str());
+        for (const baseline_point_verdict& p : v.points)
+            if (p.beaten_by.empty())
+                std::printf("  %-31s   %s: %s\n", "", p.baseline.c_str(), p.why_not.c_str());
+            else
+                std::printf("  %-31s   %s: beaten by %s (%.2fx)\n", "", p.baseline.c_str(), p.beaten_by.c_str(),
+                            p.time_ratio);
+    }
+}
+
 int bench(const bench_options& o) {
-    const auto specs = default_bench_configurations();
+    auto specs = default_bench_configurations();
     if (o.list) {
-        for (const auto& c : specs) std::printf("%-24s %s\n", c.name.c_str(), c.description.c_str());
+        for (const auto& c : specs) std::printf("%-28s %s\n", c.name.c_str(), c.description.c_str());
         return k_exit_ok;
     }
     scenario_options so = o.scenario;
@@ -62,6 +91,20 @@ int bench(const bench_options& o) {
     const std::optional<scenario> loaded = load_or_report(so);
     if (!loaded) return k_exit_bad_input;
     const scenario& s = *loaded;
+    // The representation options ask for one more configuration: what `play` draws with them.
+    std::vector<std::string> only = o.only;
+    try {
+        if (const auto extra = command_line_configuration(s, so)) {
+            const bool known = std::any_of(specs.begin(), specs.end(), [&](const auto& c) { return c.name == extra->name; });
+            if (!known) specs.push_back(*extra);
+            if (!only.empty() && std::find(only.begin(), only.end(), extra->name) == only.end())
+                only.push_back(extra->name);
+            spdlog::info("measuring '{}' from the command line beside the others", extra->name);
+        }
+    } catch (const std::invalid_argument& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
+    }
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
     if (ec) {
@@ -79,10 +122,10 @@ int bench(const bench_options& o) {
         bake_cache cache;
         bench_settings settings;
         settings.threads = o.scenario.threads;
-        settings.only = o.only;
+        settings.only = only;
         if (o.save_frames) settings.frames_dir = std::filesystem::path(o.out_dir) / "frames";
         settings.timing_rounds = o.timing_rounds;
-        settings.progress = [&](const bench_progress& p) { print_progress(specs, o.only, p); };
+        settings.progress = [&](const bench_progress& p) { print_progress(specs, only, p); };
         const auto start = std::chrono::steady_clock::now();
         const bench_report report = run_bench(s, specs, *context, &cache, settings);
         const std::filesystem::path dir(o.out_dir);
@@ -91,13 +134,7 @@ int bench(const bench_options& o) {
         write_bench_plot_svg(dir / "bench.svg", report);
         write_bench_summary_md(dir / "summary.md", report);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%-24s %10s %9s %9s %8s %8s %8s %8s %8s\n", "configuration", "median ms",
-                    "x base", "PSNR dB", "SSIM", "FLIP", "IoU", "popping", "jump");
-        for (const auto& c : report.configurations)
-            std::printf("%-24s %10.1f %9.3f %9.2f %8.4f %8.4f %8.4f %8.3f %8.2f\n", c.name.c_str(),
-                        c.frame_ms_median, c.frame_ms_vs_baseline, c.error.psnr_db, c.error.ssim,
-                        c.error.perceptual, c.error.coverage_iou, c.error.popping,
-                        c.error.lighting_jump);
+        print_results(report);
         spdlog::info("wrote bench.json, bench.csv, bench.svg and summary.md to {} in {:.0f} s", o.out_dir, seconds);
     } catch (const std::invalid_argument& e) {
         spdlog::error("{}", e.what());
@@ -117,8 +154,8 @@ command_runner add_bench_command(CLI::App& app) {
     app.add_option("--out", options->out_dir, "Output folder for bench.json, bench.csv, bench.svg and summary.md")
         ->capture_default_str();
     app.add_option("--only", options->only,
-                   "Run only these configurations (comma-separated names; see --list). The reference is "
-                   "always rendered: every error is measured against it")
+                   "Run only these configurations (comma-separated names; see --list). The reference of "
+                   "each lighting they use is always rendered: every error is measured against it")
         ->delimiter(',');
     app.add_option(
            "--timing-rounds", options->timing_rounds,
@@ -135,7 +172,14 @@ command_runner add_bench_command(CLI::App& app) {
     app.footer(
         "Without --width/--height the bench renders at 480x270. Every configuration plays the same frames in "
         "this process, after one untimed warm-up frame; errors are means over the frames against the 3x3 "
-        "supersampled full-geometry reference. Timings vary from run to run; errors do not, for any --threads.");
+        "supersampled full-geometry reference lit as the configuration is (normal or SH: each lighting family "
+        "has its own reference, brute force, baseline sweep, Pareto fronts and verdict). Timings vary from run "
+        "to run; errors do not, for any --threads.\n\n"
+        "--representation, --sample-distance, --splats, --primitive-budget and --target-frame-ms add one "
+        "configuration, measured beside the others: what `sylva play` draws with the same options (named as "
+        "--list names it, e.g. points_lines_d2; it is added to --only). d' and the budgets apply to points_lines "
+        "only; with another representation they are refused. --lighting lights every configuration that does "
+        "not name its own lighting.");
     return [options] { return bench(*options); };
 }
 

@@ -258,43 +258,54 @@ std::string placed_labels(const std::vector<plotted>& points, const bench_report
     return svg;
 }
 
+// One panel: one error of one lighting family's configurations (errors against different
+// references share no axis or front).
 struct panel {
-    const char* title;
+    std::string title;
     const char* y_label;
-    const char* id;
+    std::string id;
     error_of error;
     double left;
+    double top;
+    std::string lighting;
+
+    double bottom() const;
 };
 
 constexpr double k_plot_width = 490.0;
-constexpr double k_plot_top = 86.0;
-constexpr double k_plot_bottom = 426.0;
+constexpr double k_plot_height = 340.0;
+constexpr double k_first_plot_top = 86.0;
+constexpr double k_row_height = k_plot_height + 110.0;  // axis labels and the next row's title
+
+double panel::bottom() const { return top + k_plot_height; }
 
 std::string axes_svg(const axis& x, const axis& y, const panel& p) {
     const double right = p.left + k_plot_width;
+    const double plot_top = p.top;
+    const double plot_bottom = p.bottom();
     std::string svg = "<g class=\"axes\" font-size=\"11\" fill=\"#333333\">\n";
     for (const double t : x.ticks)
-        svg += "<line x1=\"" + px(x(t)) + "\" y1=\"" + px(k_plot_top) + "\" x2=\"" + px(x(t)) +
-               "\" y2=\"" + px(k_plot_bottom) + "\" stroke=\"#e4e4e4\"/>\n<text x=\"" + px(x(t)) +
-               "\" y=\"" + px(k_plot_bottom + 16) + "\" text-anchor=\"middle\">" +
+        svg += "<line x1=\"" + px(x(t)) + "\" y1=\"" + px(plot_top) + "\" x2=\"" + px(x(t)) +
+               "\" y2=\"" + px(plot_bottom) + "\" stroke=\"#e4e4e4\"/>\n<text x=\"" + px(x(t)) +
+               "\" y=\"" + px(plot_bottom + 16) + "\" text-anchor=\"middle\">" +
                significant(t, 6) + "</text>\n";
     for (const double t : y.ticks)
         svg += "<line x1=\"" + px(p.left) + "\" y1=\"" + px(y(t)) + "\" x2=\"" + px(right) +
                "\" y2=\"" + px(y(t)) + "\" stroke=\"#e4e4e4\"/>\n<text x=\"" + px(p.left - 6) +
                "\" y=\"" + px(y(t) + 4) + "\" text-anchor=\"end\">" + significant(t, 4) +
                "</text>\n";
-    svg += "<rect x=\"" + px(p.left) + "\" y=\"" + px(k_plot_top) + "\" width=\"" +
-           px(k_plot_width) + "\" height=\"" + px(k_plot_bottom - k_plot_top) +
+    svg += "<rect x=\"" + px(p.left) + "\" y=\"" + px(plot_top) + "\" width=\"" +
+           px(k_plot_width) + "\" height=\"" + px(plot_bottom - plot_top) +
            "\" fill=\"none\" stroke=\"#333333\"/>\n";
-    svg += "<text x=\"" + px(p.left + k_plot_width / 2) + "\" y=\"" + px(k_plot_bottom + 38) +
+    svg += "<text x=\"" + px(p.left + k_plot_width / 2) + "\" y=\"" + px(plot_bottom + 38) +
            "\" text-anchor=\"middle\" font-size=\"12\">median frame time (ms)" +
            (x.log ? ", log scale" : "") + "; bars: min to max</text>\n";
-    const std::string mid = px((k_plot_top + k_plot_bottom) / 2);
+    const std::string mid = px((plot_top + plot_bottom) / 2);
     svg += "<text x=\"" + px(p.left - 50) + "\" y=\"" + mid +
            "\" text-anchor=\"middle\" font-size=\"12\" "
            "transform=\"rotate(-90 " +
            px(p.left - 50) + " " + mid + ")\">" + p.y_label + "</text>\n";
-    svg += "<text x=\"" + px(p.left + k_plot_width / 2) + "\" y=\"" + px(k_plot_top - 10) +
+    svg += "<text x=\"" + px(p.left + k_plot_width / 2) + "\" y=\"" + px(plot_top - 10) +
            "\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">" + p.title +
            "</text>\n</g>\n";
     return svg;
@@ -304,14 +315,16 @@ std::string panel_svg(const bench_report& report, const panel& p,
                       const std::vector<double>& x_values,
                       const std::vector<std::pair<std::string, std::string>>& colours) {
     const axis x = frame_ms_axis(x_values, p.left, p.left + k_plot_width);
+    const double plot_top = p.top;
+    const double plot_bottom = p.bottom();
     auto drawable = [&](const bench_configuration& c) {
-        return std::isfinite(p.error(c)) && std::isfinite(c.frame_ms_median) &&
+        return c.lighting == p.lighting && std::isfinite(p.error(c)) && std::isfinite(c.frame_ms_median) &&
                (!x.log || c.frame_ms_median > 0);
     };
     double highest = 0.0;
     for (const auto& c : report.configurations)
         if (drawable(c)) highest = std::max(highest, p.error(c));
-    const axis y = error_axis(highest, k_plot_bottom, k_plot_top);
+    const axis y = error_axis(highest, plot_bottom, plot_top);
     const std::vector<bool> on_front = front_flags(report, p.error);
 
     std::string svg = axes_svg(x, y, p);
@@ -326,7 +339,7 @@ std::string panel_svg(const bench_report& report, const panel& p,
     std::sort(front.begin(), front.end(),
               [](const plotted& a, const plotted& b) { return a.x < b.x; });
     // The front as a staircase: what it dominates lies above and to the right.
-    svg += "<polyline class=\"pareto\" id=\"pareto-" + std::string(p.id) +
+    svg += "<polyline class=\"pareto\" id=\"pareto-" + p.id +
            "\" fill=\"none\" stroke=\"#444444\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\" "
            "points=\"";
     for (std::size_t k = 0; k < front.size(); ++k) {
@@ -338,9 +351,11 @@ std::string panel_svg(const bench_report& report, const panel& p,
         const bench_configuration& c = report.configurations[pt.index];
         const std::string& colour = colour_of(colours, c.family);
         svg += "<g class=\"configuration\">\n<title>" + xml_escaped(c.name) + ": " +
-               significant(c.frame_ms_median, 4) + " ms, " + p.title + " " +
-               significant(p.error(c), 4) + (on_front[pt.index] ? ", on the Pareto front" : "") +
-               "</title>\n";
+               significant(c.frame_ms_median, 4) + " ms, " + xml_escaped(p.title) + " " +
+               significant(p.error(c), 4) + ", lighting jump " +
+               (std::isfinite(c.error.lighting_jump) ? significant(c.error.lighting_jump, 3) : std::string("n/a")) +
+               " over " + std::to_string(c.error.transitions) + " transitions" +
+               (on_front[pt.index] ? ", on the Pareto front" : "") + "</title>\n";
         if (std::isfinite(c.frame_ms_min) && std::isfinite(c.frame_ms_max) &&
             (!x.log || c.frame_ms_min > 0)) {
             const double x0 = x(c.frame_ms_min);
@@ -354,7 +369,7 @@ std::string panel_svg(const bench_report& report, const panel& p,
     }
     svg +=
         "<g class=\"labels\" font-size=\"11\" fill=\"#222222\">\n" +
-        placed_labels(points, report, {p.left, k_plot_top, p.left + k_plot_width, k_plot_bottom}) +
+        placed_labels(points, report, {p.left, plot_top, p.left + k_plot_width, plot_bottom}) +
         "</g>\n";
     return svg;
 }
@@ -400,34 +415,33 @@ void write_bench_plot_svg(const std::filesystem::path& path, const bench_report&
     constexpr double k_width = 1200.0;
     std::vector<double> x_values;
     for (const auto& c : report.configurations)
-        for (const double v : {c.frame_ms_median, c.frame_ms_min, c.frame_ms_max})
-            x_values.push_back(v);
+        for (const double v : {c.frame_ms_median, c.frame_ms_min, c.frame_ms_max}) x_values.push_back(v);
     const auto colours = family_colours(report);
-    const std::array<panel, 2> panels = {
-        {{"FLIP", "perceptual error (FLIP)", "flip", flip_error, 80.0},
-         {"1 − SSIM", "1 − SSIM", "ssim", ssim_error, 680.0}}};
     std::string body;
-    for (const panel& p : panels) body += panel_svg(report, p, x_values, colours);
+    double top = k_first_plot_top;
+    for (const bench_lighting_family& family : report.lighting_families) {
+        const std::string suffix = report.lighting_families.size() > 1 ? " (" + family.name + " lighting)" : "";
+        const std::array<panel, 2> panels = {
+            {{"FLIP" + suffix, "perceptual error (FLIP)", "flip-" + family.name, flip_error, 80.0, top, family.name},
+             {"1 − SSIM" + suffix, "1 − SSIM", "ssim-" + family.name, ssim_error, 680.0, top, family.name}}};
+        for (const panel& p : panels) body += panel_svg(report, p, x_values, colours);
+        top += k_row_height;
+    }
     double bottom = 0.0;
-    body += legend_svg(colours, k_plot_bottom + 68.0, k_width, bottom);
+    body += legend_svg(colours, top - k_row_height + k_plot_height + 68.0, k_width, bottom);
     const std::string height = px(bottom + 8.0);
     const std::string title = "sylva bench: " + report.scenario;
-    const std::string setup = report.machine + " · " + report.gl_renderer + " · " +
-                              std::to_string(report.width) + "×" + std::to_string(report.height) +
-                              " · " + std::to_string(report.frames) + " frames · " +
-                              std::to_string(report.threads) + " threads · reference " +
-                              std::to_string(report.reference_samples_per_pixel) + " spp";
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(k_width) +
-                      "\" height=\"" + height + "\" viewBox=\"0 0 " + px(k_width) + " " + height +
-                      "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n<title>" +
-                      xml_escaped(title) +
+    const std::string setup = report.machine + " · " + report.gl_renderer + " · " + std::to_string(report.width) +
+                              "×" + std::to_string(report.height) + " · " + std::to_string(report.frames) +
+                              " frames · " + std::to_string(report.threads) + " threads · each against the " +
+                              std::to_string(report.reference_samples_per_pixel) + " spp reference lit as it is";
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(k_width) + "\" height=\"" + height +
+                      "\" viewBox=\"0 0 " + px(k_width) + " " + height +
+                      "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n<title>" + xml_escaped(title) +
                       "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    svg +=
-        "<text x=\"600\" y=\"26\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" +
-        xml_escaped(title) +
-        "</text>\n<text x=\"600\" y=\"46\" text-anchor=\"middle\" font-size=\"12\" "
-        "fill=\"#444444\">" +
-        xml_escaped(setup) + "</text>\n";
+    svg += "<text x=\"600\" y=\"26\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" +
+           xml_escaped(title) + "</text>\n<text x=\"600\" y=\"46\" text-anchor=\"middle\" font-size=\"12\" fill=\"#444444\">" +
+           xml_escaped(setup) + "</text>\n";
     write_atomically(path, svg + body + "</svg>\n");
 }
 

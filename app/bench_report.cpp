@@ -16,7 +16,9 @@
 #include <tuple>
 
 #include "app/atomic_file.h"
+#include "app/bench_catalogue.h"
 #include "app/bench_format.h"
+#include "app/bench_verdict.h"
 
 namespace sylva {
 
@@ -46,10 +48,22 @@ ordered_json rounded_list(const std::vector<double>& values) {
     return j;
 }
 
+ordered_json transitions_json(const bench_error& e) {
+    ordered_json by_kind = ordered_json::object();
+    for (const auto& [kind, n] : e.transitions_by_kind) by_kind[kind] = n;
+    return {{"measured", e.transitions},
+            {"by_kind", by_kind},
+            {"mean_frames", e.transitions ? number(double(e.transition_frames) / double(e.transitions))
+                                          : ordered_json(nullptr)},
+            {"too_few_pixels", e.transitions_too_small},
+            {"cut_off_by_path", e.transitions_cut_off}};
+}
+
 ordered_json configuration_json(const bench_configuration& c, bool on_front) {
     const bench_error& e = c.error;
     return {{"name", c.name},
             {"family", c.family},
+            {"lighting", c.lighting},
             {"description", c.description},
             {"quality", number(c.quality)},
             {"frames", c.frames},
@@ -73,8 +87,26 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
               {"popping", number(e.popping)},
               {"lighting_jump", number(e.lighting_jump)},
               {"rmse", number(e.rmse)},
-              {"switches", e.switches}}},
+              {"transitions", transitions_json(e)}}},
             {"on_pareto_front", on_front}};
+}
+
+ordered_json verdicts_json(const bench_report& report) {
+    ordered_json out = ordered_json::array();
+    for (const family_verdict& v : baseline_verdicts(report)) {
+        ordered_json points = ordered_json::array();
+        for (const baseline_point_verdict& p : v.points)
+            points.push_back({{"baseline", p.baseline},
+                              {"beaten_by", p.beaten_by.empty() ? ordered_json(nullptr) : ordered_json(p.beaten_by)},
+                              {"time_ratio", p.beaten_by.empty() ? ordered_json(nullptr) : number(p.time_ratio)},
+                              {"why_not", p.why_not}});
+        out.push_back({{"lighting", v.lighting},
+                       {"family", v.family},
+                       {"configurations", v.configurations},
+                       {"beats_every_baseline_point", v.beats_every_point()},
+                       {"points", points}});
+    }
+    return out;
 }
 
 // --- bench.csv ---------------------------------------------------------------------------------
@@ -89,9 +121,9 @@ std::string csv_field(std::string_view text) {
     return quoted + '"';
 }
 
-// Empty when not measured (NaN or absent), "inf" for an infinite PSNR.
+// "n/a" when not measured (NaN or absent), "inf" for an infinite PSNR.
 std::string csv_number(double v) {
-    return std::isnan(v) ? std::string() : plain(rounded(v));
+    return std::isnan(v) ? std::string("n/a") : plain(rounded(v));
 }
 
 // --- summary.md --------------------------------------------------------------------------------
@@ -104,15 +136,15 @@ std::string ratio_text(double ratio) {
     return fixed(ratio, ratio < 10.0 ? 2 : ratio < 100.0 ? 1 : 0) + "×";
 }
 
-std::string or_dash(double v, int decimals) {
-    if (std::isnan(v)) return "—";
+std::string measured_text(double v, int decimals) {
+    if (std::isnan(v)) return "n/a";
     if (std::isinf(v)) return v > 0 ? "∞" : "−∞";
     return fixed(v, decimals);
 }
 
 // Whole number with thousands separators: 2000000 -> "2,000,000".
 std::string grouped(double v) {
-    if (!std::isfinite(v)) return "—";
+    if (!std::isfinite(v)) return "n/a";
     const std::string digits = fixed(std::fabs(v), 0);
     std::string out = v < 0 ? "-" : "";
     for (std::size_t i = 0; i < digits.size(); ++i) {
@@ -131,44 +163,43 @@ std::string md_cell(std::string_view text) {
     return out;
 }
 
-std::string table_md(const bench_report& report, const std::vector<bool>& on_front) {
-    const bench_configuration* brute = find_configuration(report, "brute_force");
-    std::vector<std::size_t> order(report.configurations.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+// The rows of one lighting family, fastest first.
+std::string table_md(const bench_report& report, const std::string& lighting, const std::vector<bool>& on_front) {
+    const bench_configuration* brute = family_brute_force(report, lighting);
+    std::vector<std::size_t> order = in_lighting_family(report, lighting);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return report.configurations[a].frame_ms_median < report.configurations[b].frame_ms_median;
     });
-    std::string md =
-        "| configuration | median ms [min–max] | speed-up vs brute_force | PSNR dB | SSIM | FLIP | "
-        "coverage IoU | popping | lighting jump | triangles/frame | points/frame | lines/frame | Pareto (FLIP) |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+    std::string md = "| configuration | median ms [min–max] | speed-up vs " + md_cell(brute ? brute->name : "brute force") +
+                     " | PSNR dB | SSIM | FLIP | coverage IoU | popping | lighting jump | transitions | "
+                     "triangles/frame | points/frame | lines/frame | Pareto (FLIP) |\n"
+                     "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
     for (const std::size_t i : order) {
         const bench_configuration& c = report.configurations[i];
         const bench_error& e = c.error;
         const bool has_speed_up = brute && brute->frame_ms_median > 0 && c.frame_ms_median > 0;
-        md += "| " + md_cell(c.name) + " | " + ms_text(c.frame_ms_median) + " [" +
-              ms_text(c.frame_ms_min) + "–" + ms_text(c.frame_ms_max) + "] | " +
-              (has_speed_up ? ratio_text(brute->frame_ms_median / c.frame_ms_median) : "—") +
-              " | " + or_dash(e.psnr_db, 1) + " | " + or_dash(e.ssim, 4) + " | " +
-              or_dash(e.perceptual, 4) + " | " + or_dash(e.coverage_iou, 4) + " | " +
-              or_dash(e.popping, 2) + " | " + or_dash(e.lighting_jump, 2) + " | " +
-              grouped(entry_or_nan(c.primitives, "triangles")) + " | " +
+        md += "| " + md_cell(c.name) + " | " + ms_text(c.frame_ms_median) + " [" + ms_text(c.frame_ms_min) + "–" +
+              ms_text(c.frame_ms_max) + "] | " +
+              (has_speed_up ? ratio_text(brute->frame_ms_median / c.frame_ms_median) : "n/a") + " | " +
+              measured_text(e.psnr_db, 1) + " | " + measured_text(e.ssim, 4) + " | " +
+              measured_text(e.perceptual, 4) + " | " + measured_text(e.coverage_iou, 4) + " | " +
+              measured_text(e.popping, 2) + " | " + measured_text(e.lighting_jump, 2) + " | " +
+              std::to_string(e.transitions) + " | " + grouped(entry_or_nan(c.primitives, "triangles")) + " | " +
               grouped(entry_or_nan(c.primitives, "points")) + " | " + grouped(entry_or_nan(c.primitives, "lines")) +
               " | " + (on_front[i] ? "★" : "") + " |\n";
     }
     return md;
 }
 
-bool is_candidate(const bench_configuration& c) {
-    return c.name != "reference" && c.family != "reference";
-}
+bool is_candidate(const bench_configuration& c) { return c.family != k_family_reference; }
 
-std::string brute_force_sentence(const bench_report& report, const std::vector<bool>& on_front) {
-    const bench_configuration* brute = find_configuration(report, "brute_force");
+std::string brute_force_sentence(const bench_report& report, const std::string& lighting,
+                                 const std::vector<bool>& on_front) {
+    const bench_configuration* brute = family_brute_force(report, lighting);
     if (!brute) return "";
     const bench_configuration* fastest = nullptr;  // with FLIP no worse than brute force's
     const bench_configuration* closest = nullptr;  // lowest FLIP otherwise
-    for (std::size_t i = 0; i < report.configurations.size(); ++i) {
+    for (const std::size_t i : in_lighting_family(report, lighting)) {
         const bench_configuration& c = report.configurations[i];
         if (!on_front[i] || !is_candidate(c) || &c == brute) continue;
         if (c.error.perceptual <= brute->error.perceptual &&
@@ -177,80 +208,93 @@ std::string brute_force_sentence(const bench_report& report, const std::vector<b
         if (!closest || c.error.perceptual < closest->error.perceptual) closest = &c;
     }
     if (!fastest) {
-        std::string sentence =
-            "No configuration on the FLIP Pareto front has error no worse than brute_force's "
-            "(FLIP " +
-            or_dash(brute->error.perceptual, 4) + " at " + ms_text(brute->frame_ms_median) + " ms)";
+        std::string sentence = "No configuration on the FLIP Pareto front has error no worse than " + brute->name +
+                               "'s (FLIP " + measured_text(brute->error.perceptual, 4) + " at " +
+                               ms_text(brute->frame_ms_median) + " ms)";
         if (closest && closest->frame_ms_median > 0)
             sentence += "; the closest is " + closest->name + " at FLIP " +
-                        or_dash(closest->error.perceptual, 4) + ", " +
-                        ratio_text(brute->frame_ms_median / closest->frame_ms_median) + " faster";
+                        measured_text(closest->error.perceptual, 4) + ", " +
+                        ratio_text(time_ratio(*brute, *closest)) + " faster";
         return sentence + ".";
     }
-    return "The fastest configuration on the FLIP Pareto front with error no worse than "
-           "brute_force's is " +
-           fastest->name + ": FLIP " + or_dash(fastest->error.perceptual, 4) + " against " +
-           or_dash(brute->error.perceptual, 4) + ", at " + ms_text(fastest->frame_ms_median) +
+    return "The fastest configuration on the FLIP Pareto front with error no worse than " + brute->name +
+           "'s is " + fastest->name + ": FLIP " + measured_text(fastest->error.perceptual, 4) + " against " +
+           measured_text(brute->error.perceptual, 4) + ", at " + ms_text(fastest->frame_ms_median) +
            " ms against " + ms_text(brute->frame_ms_median) + " ms (" +
-           ratio_text(brute->frame_ms_median / fastest->frame_ms_median) + " faster).";
+           ratio_text(time_ratio(*brute, *fastest)) + " faster).";
 }
 
-// `c`'s frame time over the baseline's: the median of the round-by-round ratios when the run
-// measured them (bench_configuration::frame_ms_vs_baseline), else the ratio of the medians.
-double time_vs_baseline(const bench_configuration& c, const bench_configuration& baseline) {
-    if (std::isfinite(c.frame_ms_vs_baseline)) return c.frame_ms_vs_baseline;
-    return c.frame_ms_median / baseline.frame_ms_median;
-}
-
-// With several timing rounds: each configuration's time against the baseline's, as the median
-// of the round-by-round ratios (bench_runner.h: timing_rounds).
-std::string rounds_sentence(const bench_report& report) {
+// With several timing rounds, for an empty `lighting`: how frame times were taken; else each
+// configuration's time against its family's baseline, as the median of the round-by-round
+// ratios (bench_runner.h: timing_rounds).
+std::string rounds_sentence(const bench_report& report, const std::string& lighting) {
     if (report.timing_rounds < 2) return "";
-    std::string out =
-        "Frame times are medians over " + std::to_string(report.timing_rounds) +
-        " timing rounds of every frame, the configurations alternating round by round.";
-    const bench_configuration* baseline = find_configuration(report, "baseline");
-    if (!baseline) return out;
-    out += " Time against the baseline, the median of the " + std::to_string(report.timing_rounds) +
-           " round-by-round ratios:";
+    if (lighting.empty())
+        return "Frame times are medians over " + std::to_string(report.timing_rounds) +
+               " timing rounds of every frame, the configurations alternating round by round; time ratios are "
+               "medians of the round-by-round ratios.";
+    const bench_configuration* baseline = family_baseline(report, lighting);
+    if (!baseline) return "";
+    std::string out = "Time against " + baseline->name + ":";
     bool first = true;
-    for (const auto& c : report.configurations) {
+    for (const std::size_t i : in_lighting_family(report, lighting)) {
+        const bench_configuration& c = report.configurations[i];
         if (&c == baseline || !std::isfinite(c.frame_ms_vs_baseline)) continue;
-        out += std::string(first ? " " : ", ") + md_cell(c.name) + " " +
-               ratio_text(c.frame_ms_vs_baseline);
+        out += std::string(first ? " " : ", ") + md_cell(c.name) + " " + ratio_text(c.frame_ms_vs_baseline);
         first = false;
     }
     return out + ".";
 }
 
-// "Similar" frame time: within 10% of the baseline's, or faster.
-std::string baseline_sentence(const bench_report& report) {
-    const bench_configuration* baseline = find_configuration(report, "baseline");
+// "Similar" frame time: within 10% of the family's baseline, or faster.
+std::string baseline_sentence(const bench_report& report, const std::string& lighting) {
+    const bench_configuration* baseline = family_baseline(report, lighting);
     if (!baseline) return "";
     const bench_configuration* best = nullptr;
-    for (const auto& c : report.configurations) {
-        if (&c == baseline || !is_candidate(c) || !(time_vs_baseline(c, *baseline) <= 1.1) ||
+    for (const std::size_t i : in_lighting_family(report, lighting)) {
+        const bench_configuration& c = report.configurations[i];
+        if (&c == baseline || !is_candidate(c) || !(time_ratio(c, *baseline) <= 1.1) ||
             std::isnan(c.error.perceptual))
             continue;
         if (!best || c.error.perceptual < best->error.perceptual) best = &c;
     }
-    const std::string at = "the baseline (FLIP " + or_dash(baseline->error.perceptual, 4) + " at " +
+    const std::string at = baseline->name + " (FLIP " + measured_text(baseline->error.perceptual, 4) + " at " +
                            ms_text(baseline->frame_ms_median) + " ms)";
-    if (!best)
-        return "No other configuration runs within 10% of the frame time of " + at + " or faster.";
+    if (!best) return "No other configuration runs within 10% of the frame time of " + at + " or faster.";
     if (!(best->error.perceptual < baseline->error.perceptual))
-        return "No configuration within 10% of the frame time of " + at +
-               " or faster has a lower FLIP error.";
-    const std::string lower =
-        best->error.perceptual > 0
-            ? ratio_text(baseline->error.perceptual / best->error.perceptual) + " lower"
-            : "zero";
+        return "No configuration within 10% of the frame time of " + at + " or faster has a lower FLIP error.";
+    const std::string lower = best->error.perceptual > 0
+                                  ? ratio_text(baseline->error.perceptual / best->error.perceptual) + " lower"
+                                  : "zero";
     return "At similar or lower frame time, " + best->name + " reaches FLIP " +
-           or_dash(best->error.perceptual, 4) + " at " + ms_text(best->frame_ms_median) +
-           " ms against " + at + ": " + lower + " error, PSNR " + or_dash(best->error.psnr_db, 1) +
-           " against " + or_dash(baseline->error.psnr_db, 1) + " dB, popping " +
-           or_dash(best->error.popping, 2) + " against " + or_dash(baseline->error.popping, 2) +
-           ".";
+           measured_text(best->error.perceptual, 4) + " at " + ms_text(best->frame_ms_median) + " ms against " +
+           at + ": " + lower + " error, PSNR " + measured_text(best->error.psnr_db, 1) + " against " +
+           measured_text(baseline->error.psnr_db, 1) + " dB, popping " + measured_text(best->error.popping, 2) +
+           " against " + measured_text(baseline->error.popping, 2) + ".";
+}
+
+// Issue 18 item 9: per representation family, whether its sweep beats every baseline point.
+std::string verdict_md(const bench_report& report, const std::string& lighting) {
+    std::vector<family_verdict> verdicts;
+    for (family_verdict& v : baseline_verdicts(report))
+        if (v.lighting == lighting) verdicts.push_back(std::move(v));
+    if (verdicts.empty()) return "";
+    std::string md = "Does each representation's sweep beat the engine baseline's? A baseline point is beaten "
+                     "by a configuration of the sweep at least as fast (time ratio ≤ 1";
+    md += report.timing_rounds > 1 ? ", median of the round-by-round ratios" : ", one timing round";
+    md += ") with SSIM at least and FLIP at most the baseline point's.\n\n| sweep |";
+    for (const baseline_point_verdict& p : verdicts.front().points) md += " " + md_cell(p.baseline) + " |";
+    md += " verdict |\n|---|";
+    for (std::size_t i = 0; i < verdicts.front().points.size(); ++i) md += "---|";
+    md += "---|\n";
+    for (const family_verdict& v : verdicts) {
+        md += "| " + md_cell(v.family) + " (" + std::to_string(v.configurations.size()) + ") |";
+        for (const baseline_point_verdict& p : v.points)
+            md += p.beaten_by.empty() ? " ✗ " + md_cell(p.why_not) + " |"
+                                      : " ✓ " + md_cell(p.beaten_by) + " (" + fixed(p.time_ratio, 2) + "×) |";
+        md += " " + md_cell(v.summary()) + " |\n";
+    }
+    return md;
 }
 
 std::string reference_sentence(const bench_report& report) {
@@ -260,8 +304,8 @@ std::string reference_sentence(const bench_report& report) {
     const bool identical = std::isinf(e.psnr_db) && e.psnr_db > 0 && e.ssim == 1.0 &&
                            e.perceptual == 0.0 && e.coverage_iou == 1.0;
     return std::string("The reference measured against itself gives PSNR ") +
-           or_dash(e.psnr_db, 1) + " dB, SSIM " + or_dash(e.ssim, 4) + ", FLIP " +
-           or_dash(e.perceptual, 4) + ", coverage IoU " + or_dash(e.coverage_iou, 4) +
+           measured_text(e.psnr_db, 1) + " dB, SSIM " + measured_text(e.ssim, 4) + ", FLIP " +
+           measured_text(e.perceptual, 4) + ", coverage IoU " + measured_text(e.coverage_iou, 4) +
            (identical ? ": identical images, as it must."
                       : ": NOT identical, so the error measurement is suspect.");
 }
@@ -293,6 +337,11 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
     ordered_json configurations = ordered_json::array();
     for (std::size_t i = 0; i < report.configurations.size(); ++i)
         configurations.push_back(configuration_json(report.configurations[i], on_front[i]));
+    ordered_json families = ordered_json::array();
+    for (const bench_lighting_family& f : report.lighting_families)
+        families.push_back({{"name", f.name},
+                            {"reference_lit", f.description},
+                            {"reference_frame_ms_median", number(f.reference_frame_ms_median)}});
     const ordered_json root = {{"scenario", report.scenario},
                                {"source", report.source},
                                {"machine", report.machine},
@@ -302,48 +351,47 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"height", report.height},
                                {"frames", report.frames},
                                {"timing_rounds", report.timing_rounds},
-                               {"reference",
-                                {{"samples_per_pixel", report.reference_samples_per_pixel},
-                                 {"frame_ms_median", number(report.reference_frame_ms_median)}}},
+                               {"reference", {{"samples_per_pixel", report.reference_samples_per_pixel}}},
+                               {"lighting_families", families},
                                {"primitive_costs", report.primitive_costs},
-                               {"configurations", configurations}};
+                               {"configurations", configurations},
+                               {"verdicts", verdicts_json(report)}};
     write_atomically(path, root.dump(2) + "\n");
 }
 
 void write_bench_csv(const std::filesystem::path& path, const bench_report& report) {
     const std::vector<bool> on_front = front_flags(report, flip_error);
     std::string csv =
-        "name,family,quality,frames,frame_ms_median,frame_ms_min,frame_ms_max,cpu_ms_total,gpu_ms_"
-        "total,"
-        "triangles,points,lines,upload_bytes,peak_memory_mb,psnr_db,ssim,perceptual,coverage_iou,"
-        "popping,"
-        "lighting_jump,switches,on_pareto_front\n";
+        "name,family,lighting,quality,frames,frame_ms_median,frame_ms_min,frame_ms_max,frame_ms_vs_baseline,"
+        "cpu_ms_total,gpu_ms_total,triangles,points,lines,upload_bytes,peak_memory_mb,psnr_db,ssim,perceptual,"
+        "coverage_iou,popping,lighting_jump,transitions,on_pareto_front\n";
     for (std::size_t i = 0; i < report.configurations.size(); ++i) {
         const bench_configuration& c = report.configurations[i];
         const bench_error& e = c.error;
-        const std::vector<std::string> fields = {
-            csv_field(c.name),
-            csv_field(c.family),
-            csv_number(c.quality),
-            std::to_string(c.frames),
-            csv_number(c.frame_ms_median),
-            csv_number(c.frame_ms_min),
-            csv_number(c.frame_ms_max),
-            csv_number(entry_or_nan(c.cpu_ms, "total")),
-            csv_number(entry_or_nan(c.gpu_ms, "total")),
-            csv_number(entry_or_nan(c.primitives, "triangles")),
-            csv_number(entry_or_nan(c.primitives, "points")),
-            csv_number(entry_or_nan(c.primitives, "lines")),
-            csv_number(c.upload_bytes),
-            csv_number(c.peak_memory_mb),
-            csv_number(e.psnr_db),
-            csv_number(e.ssim),
-            csv_number(e.perceptual),
-            csv_number(e.coverage_iou),
-            csv_number(e.popping),
-            csv_number(e.lighting_jump),
-            std::to_string(e.switches),
-            on_front[i] ? "true" : "false"};
+        const std::vector<std::string> fields = {csv_field(c.name),
+                                                 csv_field(c.family),
+                                                 csv_field(c.lighting),
+                                                 csv_number(c.quality),
+                                                 std::to_string(c.frames),
+                                                 csv_number(c.frame_ms_median),
+                                                 csv_number(c.frame_ms_min),
+                                                 csv_number(c.frame_ms_max),
+                                                 csv_number(c.frame_ms_vs_baseline),
+                                                 csv_number(entry_or_nan(c.cpu_ms, "total")),
+                                                 csv_number(entry_or_nan(c.gpu_ms, "total")),
+                                                 csv_number(entry_or_nan(c.primitives, "triangles")),
+                                                 csv_number(entry_or_nan(c.primitives, "points")),
+                                                 csv_number(entry_or_nan(c.primitives, "lines")),
+                                                 csv_number(c.upload_bytes),
+                                                 csv_number(c.peak_memory_mb),
+                                                 csv_number(e.psnr_db),
+                                                 csv_number(e.ssim),
+                                                 csv_number(e.perceptual),
+                                                 csv_number(e.coverage_iou),
+                                                 csv_number(e.popping),
+                                                 csv_number(e.lighting_jump),
+                                                 std::to_string(e.transitions),
+                                                 on_front[i] ? "true" : "false"};
         for (std::size_t f = 0; f < fields.size(); ++f) csv += (f ? "," : "") + fields[f];
         csv += "\n";
     }
@@ -353,27 +401,35 @@ void write_bench_csv(const std::filesystem::path& path, const bench_report& repo
 void write_bench_summary_md(const std::filesystem::path& path, const bench_report& report) {
     const std::vector<bool> on_front = front_flags(report, flip_error);
     std::string md = "# sylva bench: " + report.scenario + "\n\n";
-    md += std::to_string(report.frames) + " frames of `" + report.scenario + "` at " +
-          std::to_string(report.width) + "×" + std::to_string(report.height) + " against a " +
-          std::to_string(report.reference_samples_per_pixel) + " spp reference (" +
-          ms_text(report.reference_frame_ms_median) + " ms/frame); " + report.machine + "; " +
-          report.gl_renderer + "; " + std::to_string(report.threads) + " threads.\n\n";
-    md += table_md(report, on_front) + "\n";
-    md +=
-        "Errors are means over the frames against the reference; ★ marks the Pareto front of "
-        "median frame "
-        "time against FLIP.\n\n";
-    for (const std::string& sentence :
-         {rounds_sentence(report), brute_force_sentence(report, on_front),
-          baseline_sentence(report), reference_sentence(report)})
-        if (!sentence.empty()) md += sentence + "\n\n";
+    md += std::to_string(report.frames) + " frames of `" + report.scenario + "` at " + std::to_string(report.width) +
+          "×" + std::to_string(report.height) + "; " + report.machine + "; " + report.gl_renderer + "; " +
+          std::to_string(report.threads) + " threads. Each configuration is measured against the " +
+          std::to_string(report.reference_samples_per_pixel) +
+          " spp full-geometry reference lit as it is, and compared only with the configurations of its "
+          "lighting family (same reference): each family has its own table, Pareto front, brute force, "
+          "baseline and verdict.\n\n";
+    if (const std::string rounds = rounds_sentence(report, ""); !rounds.empty()) md += rounds + "\n\n";
+    for (const bench_lighting_family& family : report.lighting_families) {
+        md += "## Lighting: " + family.name + "\n\nReference: full geometry, " + family.description + " (" +
+              ms_text(family.reference_frame_ms_median) + " ms/frame).\n\n";
+        md += table_md(report, family.name, on_front) + "\n";
+        md += "Errors are means over the frames against this reference; ★ marks the Pareto front of median "
+              "frame time against FLIP among these configurations. The lighting jump is the mean colour change "
+              "over whole transitions beyond the reference's (n/a: no transition measured).\n\n";
+        for (const std::string& sentence :
+             {rounds_sentence(report, family.name), brute_force_sentence(report, family.name, on_front),
+              baseline_sentence(report, family.name)})
+            if (!sentence.empty()) md += sentence + "\n\n";
+        if (const std::string verdict = verdict_md(report, family.name); !verdict.empty())
+            md += "### Verdict against the engine baseline\n\n" + verdict + "\n";
+    }
+    if (const std::string reference = reference_sentence(report); !reference.empty()) md += reference + "\n\n";
     bool any_description = false;
-    for (const auto& c : report.configurations)
-        any_description = any_description || !c.description.empty();
+    for (const auto& c : report.configurations) any_description = any_description || !c.description.empty();
     if (any_description) {
         md += "## Configurations\n\n";
         for (const auto& c : report.configurations)
-            if (!c.description.empty()) md += "- `" + c.name + "`: " + c.description + "\n";
+            if (!c.description.empty()) md += "- `" + c.name + "` (" + c.lighting + "): " + c.description + "\n";
     }
     write_atomically(path, md);
 }

@@ -4,8 +4,8 @@
 //
 // Every configuration plays the same frames of the scenario's camera path in one process, side
 // by side, so their timing ratios hold on a noisy machine. Error figures are means over the
-// frames against the supersampled full-geometry reference of the same frame (DESIGN.md §3);
-// they do not depend on the thread count, timings do.
+// frames against the supersampled full-geometry reference of the same frame, lit as the
+// configuration is (DESIGN.md §3); they do not depend on the thread count, timings do.
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -15,7 +15,8 @@
 
 namespace sylva {
 
-// Image error of a configuration against the reference, averaged over its frames.
+// Image error of a configuration against its lighting family's reference, averaged over its
+// frames.
 struct bench_error {
     double rmse = 0.0;           // RGB, 0..1
     double psnr_db = 0.0;        // of the mean squared error over all frames (inf when zero)
@@ -23,13 +24,25 @@ struct bench_error {
     double perceptual = 0.0;     // mean LDR-FLIP error, 0..1 (Andersson et al. 2020)
     double coverage_iou = 1.0;   // plant mask intersection over union, from the ID buffers
     double popping = 0.0;        // mean |E_t - E_(t-1)| of the error image E (8-bit luminance units)
-    double lighting_jump = 0.0;  // mean colour jump at representation switches (8-bit units)
-    std::uint64_t switches = 0;  // representation switches measured for lighting_jump
+    // Mean colour jump over whole transitions between representations, beyond the reference's
+    // change over the same frames (8-bit units; measure/transition_windows.h). NaN when the
+    // configuration made no transition the metric could measure: "n/a", never a flattering 0.
+    double lighting_jump = std::numeric_limits<double>::quiet_NaN();
+    // Transitions along the path: measured (lighting_jump is their mean), by kind (fade,
+    // switch, blend, eco_tile_set); complete but covering too few pixels to measure; cut off by
+    // the path's first or last frame.
+    std::uint64_t transitions = 0;
+    std::map<std::string, std::uint64_t> transitions_by_kind;
+    std::uint64_t transition_frames = 0;  // frames the measured transitions span, summed
+    std::uint64_t transitions_too_small = 0;
+    std::uint64_t transitions_cut_off = 0;
 };
 
 struct bench_configuration {
     std::string name;         // unique, e.g. "brute_force", "baseline", "mesh_lod", "lod_scale_0.5"
     std::string family;       // what the configuration varies: "brute_force", "baseline", ...
+    // Its lighting family (bench_lighting_family::name): the reference its errors are against.
+    std::string lighting;
     std::string description;  // one line for the summary
     double quality = 0.0;     // the swept setting's value (0 when the family has no sweep)
     std::uint32_t frames = 0;
@@ -37,9 +50,9 @@ struct bench_configuration {
     double frame_ms_min = 0.0;
     double frame_ms_max = 0.0;
     std::vector<double> frame_ms_rounds;  // the median of each timing round, in round order
-    // Median over the rounds of this configuration's round median over the baseline's of the
-    // same round; NaN without a baseline configuration, or for one timed in fewer rounds than
-    // the baseline (the reference; bench_runner.h: timing_rounds).
+    // Median over the rounds of this configuration's round median over its lighting family's
+    // baseline's of the same round; NaN without a baseline there, or for one timed in fewer
+    // rounds than the baseline (the reference; bench_runner.h: timing_rounds).
     double frame_ms_vs_baseline = std::numeric_limits<double>::quiet_NaN();
     std::map<std::string, double> cpu_ms;       // median per system, plus "total"
     std::map<std::string, double> gpu_ms;       // median per pass, plus "total"
@@ -53,6 +66,15 @@ struct bench_configuration {
     bench_error error;
 };
 
+// Configurations are compared only with others measured against the same reference: one lit as
+// they are. Each lighting family has its reference, and within it its own brute force, baseline
+// sweep, Pareto fronts and verdict.
+struct bench_lighting_family {
+    std::string name;         // "normal" (normal-mapped and pre-lit), "sh", or "scenario" (mixed)
+    std::string description;  // what its reference is lit by
+    double reference_frame_ms_median = 0.0;
+};
+
 struct bench_report {
     std::string scenario;
     std::string source;
@@ -64,7 +86,7 @@ struct bench_report {
     std::uint32_t frames = 0;
     std::uint32_t timing_rounds = 1;
     std::uint32_t reference_samples_per_pixel = 9;
-    double reference_frame_ms_median = 0.0;
+    std::vector<bench_lighting_family> lighting_families;  // in order of first use
     // Costs fixed for every point/line configuration (bench_settings::costs); empty when each
     // used the device's own (bench_configuration::primitive_costs).
     std::map<std::string, double> primitive_costs;
@@ -79,8 +101,9 @@ std::vector<std::size_t> pareto_front(const std::vector<double>& frame_ms, const
 // Each writes atomically (temporary file, then rename) and throws naming the path on failure.
 // Numbers keep six significant digits (whole numbers from 1e6 up). JSON has no infinity: an
 // infinite value (PSNR of the reference against itself) is written as the string "inf" ("-inf"),
-// NaN as null. The CSV writes inf as inf and leaves NaN or absent values empty. Each
-// configuration's "on_pareto_front" is for (median frame ms, perceptual error).
+// a value not measured (NaN) as null. The CSV writes inf as inf and "n/a" for what was not
+// measured. Each configuration's "on_pareto_front" is for (median frame ms, perceptual error)
+// within its lighting family. The summary and the plot treat each lighting family apart.
 void write_bench_json(const std::filesystem::path& path, const bench_report& report);
 void write_bench_csv(const std::filesystem::path& path, const bench_report& report);
 void write_bench_plot_svg(const std::filesystem::path& path, const bench_report& report);

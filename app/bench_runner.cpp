@@ -5,25 +5,26 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "app/bench_format.h"
+#include "app/drawn_mix.h"
 #include "app/metrics.h"
+#include "app/process_memory.h"
 #include "components/lod_state.h"
 #include "measure/image_metrics.h"
 #include "measure/temporal_metrics.h"
+#include "measure/transition_windows.h"
 #include "models/image_ops.h"
 #include "models/textures.h"
 
 namespace sylva {
 namespace {
 
-// What the configurations are compared against, one entry per frame.
+// What the configurations of one lighting family are compared against, one entry per frame.
 struct reference_frames {
     std::vector<image_rgba8> images;
     std::vector<std::vector<std::uint8_t>> masks;
@@ -38,10 +39,8 @@ struct error_accumulator {
     double perceptual = 0.0;
     double coverage_iou = 0.0;
     double popping = 0.0;
-    double lighting_jump = 0.0;
     std::uint32_t frames = 0;
     std::uint32_t popping_frames = 0;
-    std::uint64_t switches = 0;
 
     bench_error result() const {
         bench_error e;
@@ -53,11 +52,30 @@ struct error_accumulator {
         e.perceptual = perceptual / frames;
         e.coverage_iou = coverage_iou / frames;
         e.popping = popping_frames ? popping / popping_frames : 0.0;
-        e.lighting_jump = switches ? lighting_jump / double(switches) : 0.0;
-        e.switches = switches;
         return e;
     }
 };
+
+// Species lit by SH transfer, and the scenario's species count.
+std::size_t sh_species(const scenario& s) {
+    return std::size_t(std::count_if(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+    }));
+}
+
+// The player_options::lighting a family's reference is drawn with: the scenario's own when the
+// family is what the scenario draws anyway (so its reference is the one `play --reference`
+// writes), else every species lit the family's way.
+std::string reference_lighting(const scenario& s, const std::string& family) {
+    if (family == lighting_family(s, "")) return "";
+    return family == "sh" ? "sh" : "normal_mapped";
+}
+
+std::string family_description(const std::string& family) {
+    if (family == "sh") return "every species lit by SH transfer (Behrendt 2005 §4)";
+    if (family == "normal") return "every species lit by its normals (normal-mapped; pre-lit clouds compare here too)";
+    return "every species lit as the scenario says (its species are lit in different ways)";
+}
 
 scenario configured(const scenario& s, const bench_configuration_spec& c) {
     scenario out = s;
@@ -67,17 +85,12 @@ scenario configured(const scenario& s, const bench_configuration_spec& c) {
     return out;
 }
 
-player_options measured(player_options options) {
+// How the player of configuration `spec` draws: what it names exactly (not the scenario's lod
+// section), with an ID buffer, and with the bench's fixed costs when it has them.
+player_options configuration_options(const bench_configuration_spec& spec, const bench_settings& settings) {
+    player_options options = spec.options;
     options.id_buffer = true;
-    options.scenario_lod = false;  // each configuration draws exactly what it names
-    return options;
-}
-
-// How the player of configuration `spec` draws: as measured(), with the bench's fixed costs
-// when it has them (bench_settings::costs).
-player_options configuration_options(const bench_configuration_spec& spec,
-                                     const bench_settings& settings) {
-    player_options options = measured(spec.options);
+    options.scenario_lod = false;
     if (settings.costs) {
         options.costs = *settings.costs;
         options.measure_costs = false;
@@ -127,38 +140,29 @@ void save_frame(const image_rgba8& image, const std::filesystem::path& dir, std:
     write_image(image, dir / name);
 }
 
-// `lighting`: as player_options::lighting (empty: the scenario's own).
-reference_frames render_reference(const scenario& s, render::gl_context& context, bake_cache* cache,
-                                  const bench_settings& settings, std::size_t configurations,
-                                  const std::string& lighting = {}) {
+reference_frames render_reference(const scenario& s, const std::string& family, render::gl_context& context,
+                                  bake_cache* cache, const bench_settings& settings, std::size_t configurations) {
     bench_configuration_spec spec;
     spec.options.geometry = geometry_mode::full;
-    spec.options.lighting = lighting;
+    spec.options.lighting = reference_lighting(s, family);
     spec.samples = k_bench_reference_samples;
-    scenario_player player(configured(s, spec), settings.threads, &context, cache, measured(spec.options));
+    scenario_player player(configured(s, spec), settings.threads, &context, cache,
+                           configuration_options(spec, settings));
     warm_up(player);
+    const std::string folder = spec.options.lighting.empty() ? "_reference" : "_reference_" + family;
     reference_frames ref;
     for (std::uint32_t f = 0; f < s.frames; ++f) {
         if (settings.progress)
-            settings.progress({-1, configurations, 0, settings.timing_rounds, f, s.frames});
+            settings.progress({-1, configurations, 0, settings.timing_rounds, f, s.frames, family});
         const frame_record record = player.step();
         ref.frame_ms.push_back(record.frame_ms);
         ref.images.push_back(box_downsample(player.capture(), spec.samples));
-        if (!settings.frames_dir.empty())
-            save_frame(
-                ref.images.back(),
-                settings.frames_dir / (lighting.empty() ? "_reference" : "_reference_" + lighting),
-                f);
+        if (!settings.frames_dir.empty()) save_frame(ref.images.back(), settings.frames_dir / folder, f);
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         ref.masks.push_back(plant_mask(ids));
         ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
     }
     return ref;
-}
-
-bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
-    const auto it = colors.find(id);
-    return it != colors.end() && it->second.pixels >= k_lighting_jump_min_pixels;
 }
 
 // One timing round after round 0 (bench_settings::timing_rounds): `spec` plays the same frames
@@ -167,8 +171,8 @@ bool enough_pixels(const plant_colors& colors, std::uint32_t id) {
 std::vector<double> time_configuration(const scenario& s, const bench_configuration_spec& spec,
                                        render::gl_context& context, bake_cache* cache,
                                        const bench_settings& settings, bench_progress progress) {
-    const player_options options = configuration_options(spec, settings);
-    scenario_player player(configured(s, spec), settings.threads, &context, cache, options);
+    scenario_player player(configured(s, spec), settings.threads, &context, cache,
+                           configuration_options(spec, settings));
     warm_up(player);
     std::vector<double> frame_ms;
     for (std::uint32_t f = 0; f < s.frames; ++f) {
@@ -196,6 +200,26 @@ void add_timing_rounds(bench_configuration& c, std::vector<double> round0_frame_
     c.frame_ms_max = *std::max_element(all.begin(), all.end());
 }
 
+// The lighting jump over every complete transition `finder` found (measure/transition_windows.h),
+// into `e`: their mean, or NaN when none could be measured.
+void add_transitions(bench_error& e, const transition_finder& finder, const std::vector<plant_colors>& test,
+                     const reference_frames& ref) {
+    double sum = 0.0;
+    for (const transition_window& w : finder.complete_windows()) {
+        const double jump = window_lighting_jump(w, test, ref.colors, k_lighting_jump_min_pixels);
+        if (jump < 0.0) {
+            ++e.transitions_too_small;
+            continue;
+        }
+        sum += jump;
+        ++e.transitions;
+        e.transition_frames += w.to_frame - w.from_frame;
+        ++e.transitions_by_kind[transition_kind(w)];
+    }
+    e.transitions_cut_off = finder.incomplete_windows();
+    e.lighting_jump = e.transitions ? sum / double(e.transitions) : std::numeric_limits<double>::quiet_NaN();
+}
+
 // Round 0 of `spec`: its errors against `ref` and its time; `frame_ms` receives the frame times.
 bench_configuration run_configuration(const scenario& s, const bench_configuration_spec& spec,
                                       const reference_frames& ref, render::gl_context& context,
@@ -214,6 +238,7 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
     out.primitive_costs = std::move(out_costs);
     out.name = spec.name;
     out.family = spec.family;
+    out.lighting = lighting_family(s, spec.options.lighting);
     out.description = spec.description;
     out.quality = spec.quality;
     out.frames = s.frames;
@@ -223,10 +248,11 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
     std::vector<double> upload;
     std::vector<std::map<std::string, double>> cpu, gpu, primitives;
     image_rgba8 previous_image;
-    plant_colors previous_colors;
+    std::vector<plant_colors> colors;
+    std::vector<drawn_mix> mixes;
+    transition_finder transitions(player.world().table<lod_state>().size());
     for (std::uint32_t f = 0; f < s.frames; ++f) {
-        if (settings.progress)
-            settings.progress({index, count, 0, settings.timing_rounds, f, s.frames});
+        if (settings.progress) settings.progress({index, count, 0, settings.timing_rounds, f, s.frames, {}});
         const frame_record record = player.step();
         frame_ms.push_back(record.frame_ms);
         upload.push_back(double(record.upload_bytes));
@@ -237,13 +263,15 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
         for (const auto& [name, ms] : record.passes) passes[name] = ms;
         gpu.push_back(std::move(passes));
         primitives.push_back(primitives_of(record));
+        read_drawn_mixes(player.world(), mixes);
+        transitions.add_frame(mixes);
 
         const image_rgba8 image = box_downsample(player.capture(), spec.samples);
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         if (!settings.frames_dir.empty()) save_frame(image, settings.frames_dir / spec.name, f);
         const image_rgba8& reference = ref.images[f];
         // The metrics are independent of each other; running them side by side changes no
-        // result (each is a serial, deterministic computation).
+        // value, only the time the bench takes.
         double e_rmse = 0.0, e_ssim = 0.0, e_flip = 0.0;
         tbb::parallel_invoke([&] { e_rmse = rmse(reference, image); }, [&] { e_ssim = mean_ssim(reference, image); },
                              [&] { e_flip = flip_error(reference, image, k_bench_flip_pixels_per_degree); });
@@ -252,29 +280,12 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
         errors.perceptual += e_flip;
         errors.coverage_iou += coverage_iou(ref.masks[f], plant_mask(ids));
         ++errors.frames;
-
-        plant_colors colors = mean_plant_colors(image, ids);
+        colors.push_back(mean_plant_colors(image, ids));
         if (f > 0) {
             errors.popping += popping_score(image, previous_image, reference, ref.images[f - 1]);
             ++errors.popping_frames;
-            // Plants that changed representation between the previous frame and this one.
-            const auto& lod = player.world().table<lod_state>();
-            for (std::size_t k = 0; k < lod.size(); ++k) {
-                const lod_state& state = lod.data()[k];
-                if (state.current == state.previous || state.current == representation::none ||
-                    state.previous == representation::none)
-                    continue;
-                const auto id = std::uint32_t(k + 1);
-                if (!enough_pixels(colors, id) || !enough_pixels(previous_colors, id) ||
-                    !enough_pixels(ref.colors[f], id) || !enough_pixels(ref.colors[f - 1], id))
-                    continue;
-                errors.lighting_jump += lighting_jump(previous_colors.at(id), colors.at(id),
-                                                      ref.colors[f - 1].at(id), ref.colors[f].at(id));
-                ++errors.switches;
-            }
         }
         previous_image = image;
-        previous_colors = std::move(colors);
     }
     out.frame_ms_median = median_of(frame_ms);
     out.frame_ms_min = frame_ms.empty() ? 0.0 : *std::min_element(frame_ms.begin(), frame_ms.end());
@@ -286,162 +297,49 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
     out.upload_bytes = median_of(upload);
     out.peak_memory_mb = peak_resident_mb();
     out.error = errors.result();
+    add_transitions(out.error, transitions, colors, ref);
     return out;
 }
 
-bench_configuration_spec mesh_lod(double factor) {
-    bench_configuration_spec c;
-    std::ostringstream name;
-    name << "mesh_lod";
-    if (factor != 1.0) name << "_x" << factor;
-    c.name = name.str();
-    c.family = "mesh_lod";
-    std::ostringstream description;
-    description << "the runtime's mesh levels (full, reduced, far) by distance";
-    if (factor != 1.0) description << ", switch distances x" << factor;
-    c.description = description.str();
-    c.quality = factor;
-    c.lod_scale_factor = float(factor);
-    return c;
-}
-
-bench_configuration_spec single(representation r, std::string description) {
-    bench_configuration_spec c;
-    c.name = std::string(representation_name(r)) + "_only";
-    c.family = "single_representation";
-    c.description = std::move(description);
-    c.options.policy = {lod_policy::kind::single, r, r, 0.0f};
-    return c;
-}
-
-bench_configuration_spec baseline(float distance_m, bool named_baseline) {
-    bench_configuration_spec c;
-    c.name = named_baseline ? "baseline" : "baseline_" + std::to_string(int(distance_m)) + "m";
-    c.family = "baseline";
-    c.description = "engine baseline: full mesh nearer than " + std::to_string(int(distance_m)) +
-                    " m x plant scale, one crossed-quad billboard beyond, hard switch";
-    c.quality = distance_m;
-    c.options.policy = {lod_policy::kind::hard_switch, representation::mesh_full, representation::crossed_billboard,
-                        distance_m};
-    return c;
-}
-
-// Deussen 2002: every plant as prefixes of its random-order triangles, points and lines, with
-// sample distance d' (pixels); the sweep trades error for time (§5.4). Soft splats, fog-weighted,
-// by default; `_opaque` draws the paper's opaque squares, `_uniform` spaces samples d' apart
-// however much fog lies between them and the eye (point_line_lod.h fog_sample_distance).
-bench_configuration_spec points_lines(float sample_distance_px,
-                                      splat_style splats = splat_style::soft,
-                                      bool fog_weighted = true) {
-    bench_configuration_spec c;
-    std::ostringstream name;
-    name << "points_lines";
-    if (sample_distance_px != 1.0f) name << "_d" << sample_distance_px;
-    if (splats == splat_style::opaque) name << "_opaque";
-    if (!fog_weighted) name << "_uniform";
-    c.name = name.str();
-    c.family = "points_lines";
-    std::ostringstream description;
-    description << "points and lines (Deussen 2002), d' = " << sample_distance_px
-                << " px, c_p = 1.3, "
-                << (splats == splat_style::soft ? "soft splats" : "opaque splats (the paper's)")
-                << (fog_weighted ? ", fog-weighted" : ", d' everywhere (no fog weighting)");
-    c.description = description.str();
-    c.quality = sample_distance_px;
-    c.options.policy.mode = lod_policy::kind::points_lines;
-    c.options.policy.points = {sample_distance_px, 1.3f, true, splats, fog_weighted};
-    return c;
-}
-
-// Behrendt 2005 §2.3: meshes near, billboard clouds from 30 m x plant scale, crossed billboards
-// beyond the species' far distance, each switch cross-faded without sorting.
-// `lighting`: every species lit as "normal_mapped", "pre_lit" or "sh" (§2.3, §4).
-bench_configuration_spec billboard_clouds(const std::string& lighting) {
-    bench_configuration_spec c;
-    c.name = lighting == "normal_mapped" ? "billboard_clouds" : "billboard_clouds_" + lighting;
-    c.family = "billboard_clouds";
-    c.description =
-        "billboard clouds (Behrendt 2005), " + lighting +
-        ": full mesh nearer than 30 m x plant scale, cloud beyond, crossed billboard beyond "
-        "the far distance, sort-free fades";
-    c.options.policy.mode = lod_policy::kind::billboard_clouds;
-    c.options.lighting = lighting;
-    return c;
-}
-
-// `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`.
-bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
-    c.name += "_sh";
-    c.description += ", every species lit by SH transfer (Behrendt 2005 §4)";
-    c.options.lighting = "sh";
-    return c;
-}
-
-}  // namespace
-
-std::vector<bench_configuration_spec> default_bench_configurations() {
-    std::vector<bench_configuration_spec> list;
-    bench_configuration_spec reference;
-    reference.name = "reference";
-    reference.family = "reference";
-    reference.description = "the reference rendered again (full geometry, 3x3 samples): must give zero error";
-    reference.options.geometry = geometry_mode::full;
-    reference.samples = k_bench_reference_samples;
-    list.push_back(reference);
-
-    bench_configuration_spec brute;
-    brute.name = "brute_force";
-    brute.family = "brute_force";
-    brute.description = "every plant at full geometry, one sample per pixel";
-    brute.options.geometry = geometry_mode::full;
-    list.push_back(brute);
-
-    for (double factor : {1.0, 0.25, 0.5, 2.0}) list.push_back(mesh_lod(factor));
-    list.push_back(single(representation::mesh_reduced, "every plant as its reduced mesh"));
-    list.push_back(single(representation::mesh_far, "every plant as its far mesh"));
-    list.push_back(single(representation::crossed_billboard, "every plant as one crossed-quad billboard"));
-    list.push_back(single(representation::billboard_cloud, "every plant as its billboard cloud (Behrendt 2005)"));
-    list.push_back(baseline(50.0f, true));
-    list.push_back(baseline(25.0f, false));
-    list.push_back(baseline(100.0f, false));
-    list.push_back(billboard_clouds("normal_mapped"));
-    list.push_back(billboard_clouds("pre_lit"));
-    list.push_back(billboard_clouds("sh"));
-    for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
-    for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
-    for (float d : {1.0f, 2.0f, 2.5f, 3.0f}) list.push_back(points_lines(d, splat_style::soft, false));
-    // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
-    // with about 1 M primitives).
-    bench_configuration_spec budget = points_lines(1.0f);
-    budget.name = "points_lines_budget_1m";
-    budget.description = "points and lines, d' adapted every frame to 1 M triangle equivalents (Deussen 2002 §5.4)";
-    budget.options.budget.primitives = 1e6;
-    list.push_back(budget);
-    // The same without §6.2's tile sets: every plant drawn on its own, to measure what they do.
-    bench_configuration_spec plants_only = points_lines(1.0f);
-    plants_only.name = "points_lines_no_tile_sets";
-    plants_only.description = "points and lines, d' = 1 px, every plant on its own (no eco-tile point sets, §6.2)";
-    plants_only.options.policy.tile_sets = false;
-    list.push_back(plants_only);
-    // Behrendt 2005 §4: the same representations lit by precomputed radiance transfer.
-    list.push_back(lit_by_transfer(mesh_lod(1.0)));
-    list.push_back(lit_by_transfer(points_lines(1.0f)));
-    return list;
-}
-
-bench_report run_bench(const scenario& s, const std::vector<bench_configuration_spec>& configurations,
-                       render::gl_context& context, bake_cache* cache, bench_settings settings) {
-    std::vector<const bench_configuration_spec*> selected;
-    for (const auto& c : configurations)
-        if (settings.only.empty() || std::find(settings.only.begin(), settings.only.end(), c.name) != settings.only.end())
-            selected.push_back(&c);
-    for (const auto& name : settings.only)
+std::vector<const bench_configuration_spec*> select(const std::vector<bench_configuration_spec>& configurations,
+                                                    const std::vector<std::string>& only) {
+    for (const auto& name : only)
         if (std::none_of(configurations.begin(), configurations.end(), [&](const auto& c) { return c.name == name; })) {
             std::string known;
             for (const auto& c : configurations) known += (known.empty() ? "" : ", ") + c.name;
             throw std::invalid_argument("--only: no configuration named '" + name + "' (known: " + known + ")");
         }
+    std::vector<const bench_configuration_spec*> selected;
+    for (const auto& c : configurations)
+        if (only.empty() || std::find(only.begin(), only.end(), c.name) != only.end()) selected.push_back(&c);
+    return selected;
+}
 
+// Ratios to the baseline of each configuration's lighting family, round by round, for
+// configurations timed in as many rounds as it (not the reference: its one round says nothing
+// about drift).
+void add_baseline_ratios(bench_report& report) {
+    for (auto& c : report.configurations) {
+        const bench_configuration* baseline = bench_format::family_baseline(report, c.lighting);
+        if (!baseline || c.frame_ms_rounds.size() != baseline->frame_ms_rounds.size()) continue;
+        c.frame_ms_vs_baseline = bench_format::time_ratio(c, *baseline);
+    }
+}
+
+}  // namespace
+
+std::string lighting_family(const scenario& s, const std::string& lighting) {
+    if (lighting == "sh") return "sh";
+    if (lighting == "normal_mapped" || lighting == "pre_lit") return "normal";
+    const std::size_t sh = sh_species(s);
+    if (sh == s.species.size() && sh > 0) return "sh";
+    if (sh == 0) return "normal";
+    return "scenario";
+}
+
+bench_report run_bench(const scenario& s, const std::vector<bench_configuration_spec>& configurations,
+                       render::gl_context& context, bake_cache* cache, bench_settings settings) {
+    const std::vector<const bench_configuration_spec*> selected = select(configurations, settings.only);
     bench_report report;
     report.scenario = s.name;
     report.source = s.source;
@@ -455,36 +353,19 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.reference_samples_per_pixel = k_bench_reference_samples * k_bench_reference_samples;
     report.threads = settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 
-    const reference_frames ref = render_reference(s, context, cache, settings, selected.size());
-    report.reference_frame_ms_median = median_of(ref.frame_ms);
-    // A configuration that lights every species another way is compared with a reference lit
-    // that way too (full geometry, 3x3 samples), so its errors are its representation's alone.
-    // Full geometry draws no clouds, so pre-lit and normal-mapped references are one image.
-    auto reference_lighting = [](const std::string& l) {
-        return l == "sh" ? l : std::string("normal_mapped");
-    };
-    const bool scenario_all_sh =
-        std::all_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
-            return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
-        });
-    const bool scenario_no_sh =
-        std::none_of(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
-            return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
-        });
-    std::map<std::string, reference_frames> lit_references;
+    // Round 0: each lighting family's reference when its first configuration needs it, then
+    // the configuration's errors against it.
+    std::map<std::string, reference_frames> references;
     std::vector<std::vector<double>> round0_frame_ms(selected.size());
     for (std::size_t i = 0; i < selected.size(); ++i) {
-        const std::string lighting = selected[i]->options.lighting.empty()
-                                         ? std::string()
-                                         : reference_lighting(selected[i]->options.lighting);
-        const bool own = lighting.empty() || (lighting == "sh" && scenario_all_sh) ||
-                         (lighting == "normal_mapped" && scenario_no_sh);
-        if (!own && !lit_references.contains(lighting))
-            lit_references.emplace(
-                lighting, render_reference(s, context, cache, settings, selected.size(), lighting));
-        report.configurations.push_back(
-            run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting), context,
-                              cache, settings, int(i), selected.size(), round0_frame_ms[i]));
+        const std::string family = lighting_family(s, selected[i]->options.lighting);
+        if (!references.contains(family)) {
+            references.emplace(family, render_reference(s, family, context, cache, settings, selected.size()));
+            report.lighting_families.push_back(
+                {family, family_description(family), median_of(references.at(family).frame_ms)});
+        }
+        report.configurations.push_back(run_configuration(s, *selected[i], references.at(family), context, cache,
+                                                          settings, int(i), selected.size(), round0_frame_ms[i]));
     }
     // Later timing rounds visit the configurations forwards and backwards in turn, so drift
     // over the run weighs on each about equally. The reference's replay is a check of the
@@ -494,41 +375,19 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     for (std::uint32_t round = 1; round < report.timing_rounds; ++round)
         for (std::size_t n = 0; n < selected.size(); ++n) {
             const std::size_t i = round % 2 ? selected.size() - 1 - n : n;
-            if (selected[i]->family == "reference") continue;
+            if (selected[i]->family == k_family_reference) continue;
             later_rounds[i].push_back(time_configuration(
                 s, *selected[i], context, cache, settings,
-                {int(i), selected.size(), round, report.timing_rounds, 0, s.frames}));
+                {int(i), selected.size(), round, report.timing_rounds, 0, s.frames, {}}));
         }
     for (std::size_t i = 0; i < selected.size(); ++i)
         add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
-    // Ratios to the baseline round by round, for configurations timed in every round (not the
-    // reference: its one round says nothing about drift).
-    if (const bench_configuration* baseline = bench_format::find_configuration(report, "baseline"))
-        for (auto& c : report.configurations) {
-            if (c.frame_ms_rounds.size() != baseline->frame_ms_rounds.size()) continue;
-            std::vector<double> ratios;
-            for (std::size_t r = 0; r < c.frame_ms_rounds.size(); ++r)
-                ratios.push_back(c.frame_ms_rounds[r] / baseline->frame_ms_rounds[r]);
-            c.frame_ms_vs_baseline = median_of(std::move(ratios));
-        }
+    add_baseline_ratios(report);
     if (settings.costs)
         report.primitive_costs = {{"triangle", settings.costs->triangle},
                                   {"point", settings.costs->point},
                                   {"line", settings.costs->line}};
     return report;
-}
-
-double peak_resident_mb() {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
-    return 0.0;
-}
-
-void reset_peak_resident() {
-    std::ofstream clear("/proc/self/clear_refs");
-    clear << "5";  // resets VmHWM to the current resident size (Linux 4.0+); ignored elsewhere
 }
 
 }  // namespace sylva

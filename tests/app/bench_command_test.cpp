@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "../gl/gl_test_support.h"
 #include "run_sylva.h"
@@ -48,8 +50,46 @@ TEST(bench_command, writes_table_plot_and_summary) {
     EXPECT_GT(brute.at("frame_ms").at("median").get<double>(), 0.0);
     EXPECT_GT(brute.at("peak_memory_mb").get<double>(), 1.0);
     EXPECT_EQ(json.at("configurations").at(1).at("name"), "baseline");
-    // The stdout table has a row per configuration.
+    // The stdout table has a row per configuration, and the verdict follows it.
     EXPECT_NE(r.output.find("baseline"), std::string::npos);
+    // Only the instance counts of representations that exist (no stub figures).
+    for (const auto& c : json.at("configurations"))
+        for (const char* stub : {"instances_lines", "instances_shell", "instances_foliage_clusters"})
+            EXPECT_FALSE(c.at("primitives").contains(stub)) << stub;
+}
+
+// The representation options are measured, not ignored: each adds the configuration `play` would
+// draw with them (issue 18 item 7), named as --list names it.
+TEST(bench_command, representation_options_add_the_configuration_play_would_draw) {
+    SYLVA_REQUIRE_GL();
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_bench_options";
+    std::filesystem::remove_all(dir);
+    const auto r = test::run_sylva("bench tiny --frames 2 --only baseline --representation points_lines "
+                                   "--sample-distance 3 --splats opaque --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(dir / "bench.json");
+    const auto json = nlohmann::json::parse(in);
+    std::vector<std::string> names;
+    for (const auto& c : json.at("configurations")) names.push_back(c.at("name"));
+    EXPECT_EQ(names, (std::vector<std::string>{"baseline", "points_lines_d3_opaque"}));
+    const auto& extra = json.at("configurations").at(1);
+    EXPECT_GT(extra.at("primitives").at("points").get<double>(), 0.0);
+    EXPECT_NE(extra.at("description").get<std::string>().find("from the command line"), std::string::npos);
+}
+
+TEST(bench_command, options_that_do_not_apply_are_refused_not_ignored) {
+    // tiny draws mesh levels: d' and budgets mean nothing there.
+    for (const char* option : {"--sample-distance 2", "--splats soft", "--primitive-budget 1000", "--target-frame-ms 30"}) {
+        const auto dir = std::filesystem::temp_directory_path() / "sylva_bench_refused";
+        std::filesystem::remove_all(dir);
+        const auto r = test::run_sylva(std::string("bench tiny --frames 1 --only baseline ") + option + " --out " +
+                                       dir.string());
+        EXPECT_EQ(r.exit_code, 2) << option << ": " << r.output;
+        const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+        EXPECT_NE(r.output.find(name + " sets points and lines"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("add --representation points_lines"), std::string::npos) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "bench.json"));
+    }
 }
 
 }  // namespace

@@ -1,0 +1,225 @@
+#include "app/bench_catalogue.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace sylva {
+namespace {
+
+bench_configuration_spec brute_force() {
+    bench_configuration_spec c;
+    c.name = "brute_force";
+    c.family = k_family_brute_force;
+    c.description = "every plant at full geometry, one sample per pixel";
+    c.options.geometry = geometry_mode::full;
+    return c;
+}
+
+bench_configuration_spec mesh_lod(double factor) {
+    bench_configuration_spec c;
+    std::ostringstream name;
+    name << "mesh_lod";
+    if (factor != 1.0) name << "_x" << factor;
+    c.name = name.str();
+    c.family = "mesh_lod";
+    std::ostringstream description;
+    description << "the runtime's mesh levels (full, reduced, far) by distance";
+    if (factor != 1.0) description << ", switch distances x" << factor;
+    c.description = description.str();
+    c.quality = factor;
+    c.lod_scale_factor = float(factor);
+    return c;
+}
+
+bench_configuration_spec single(representation r, std::string description) {
+    bench_configuration_spec c;
+    c.name = std::string(representation_name(r)) + "_only";
+    c.family = "single_representation";
+    c.description = std::move(description);
+    c.options.policy = {lod_policy::kind::single, r, r, 0.0f};
+    return c;
+}
+
+// The engine baseline's sweep point at `distance_m` (0: the crossed billboard everywhere, which
+// is where the sweep ends: every plant as one crossed-quad billboard).
+bench_configuration_spec baseline(float distance_m) {
+    if (distance_m <= 0.0f) {
+        bench_configuration_spec c = single(representation::crossed_billboard, "");
+        c.family = k_family_baseline;
+        c.description =
+            "engine baseline at switch distance 0: every plant as one crossed-quad billboard";
+        return c;
+    }
+    bench_configuration_spec c;
+    const bool named = double(distance_m) == k_named_baseline_distance_m;
+    c.name = named ? "baseline" : "baseline_" + std::to_string(int(distance_m)) + "m";
+    c.family = k_family_baseline;
+    c.description = "engine baseline: full mesh nearer than " + std::to_string(int(distance_m)) +
+                    " m x plant scale, one crossed-quad billboard beyond, hard switch";
+    c.quality = distance_m;
+    c.options.policy = {lod_policy::kind::hard_switch, representation::mesh_full,
+                        representation::crossed_billboard, distance_m};
+    return c;
+}
+
+// Deussen 2002: every plant as prefixes of its random-order triangles, points and lines, with
+// sample distance d' (pixels); the sweep trades error for time (§5.4). Soft splats, fog-weighted,
+// by default; `_opaque` draws the paper's opaque squares, `_uniform` spaces samples d' apart
+// however much fog lies between them and the eye (point_line_lod.h fog_sample_distance).
+// A splat factor other than the catalogue's c_p = 1.3 is named `_cp<c_p>`.
+bench_configuration_spec points_lines(float sample_distance_px,
+                                      splat_style splats = splat_style::soft,
+                                      bool fog_weighted = true, float splat_factor = 1.3f) {
+    bench_configuration_spec c;
+    std::ostringstream name;
+    name << "points_lines";
+    if (sample_distance_px != 1.0f) name << "_d" << sample_distance_px;
+    if (splat_factor != 1.3f) name << "_cp" << splat_factor;
+    if (splats == splat_style::opaque) name << "_opaque";
+    if (!fog_weighted) name << "_uniform";
+    c.name = name.str();
+    c.family = "points_lines";
+    std::ostringstream description;
+    description << "points and lines (Deussen 2002), d' = " << sample_distance_px
+                << " px, c_p = " << splat_factor << ", "
+                << (splats == splat_style::soft ? "soft splats" : "opaque splats (the paper's)")
+                << (fog_weighted ? ", fog-weighted" : ", d' everywhere (no fog weighting)");
+    c.description = description.str();
+    c.quality = sample_distance_px;
+    c.options.policy.mode = lod_policy::kind::points_lines;
+    c.options.policy.points = {sample_distance_px, splat_factor, true, splats, fog_weighted};
+    return c;
+}
+
+// Behrendt 2005 §2.3: meshes near, billboard clouds from 30 m x plant scale, crossed billboards
+// beyond the species' far distance, each switch cross-faded without sorting.
+// `lighting`: every species lit as "normal_mapped", "pre_lit" or "sh" (§2.3, §4).
+bench_configuration_spec billboard_clouds(const std::string& lighting,
+                                          float cloud_distance_m = 30.0f) {
+    bench_configuration_spec c;
+    c.name = lighting == "normal_mapped" ? "billboard_clouds" : "billboard_clouds_" + lighting;
+    if (cloud_distance_m != 30.0f) {
+        std::ostringstream suffix;
+        suffix << "_c" << cloud_distance_m << "m";
+        c.name += suffix.str();
+    }
+    c.family = "billboard_clouds";
+    std::ostringstream description;
+    description << "billboard clouds (Behrendt 2005), " << lighting << ": full mesh nearer than "
+                << cloud_distance_m
+                << " m x plant scale, cloud beyond, crossed billboard beyond the far distance, "
+                   "sort-free fades";
+    c.description = description.str();
+    c.options.policy.mode = lod_policy::kind::billboard_clouds;
+    c.options.policy.cloud_distance_m = cloud_distance_m;
+    c.options.lighting = lighting;
+    return c;
+}
+
+// `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`: measured
+// against the SH-lit reference, beside the other SH configurations.
+bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
+    c.name += "_sh";
+    c.description += ", every species lit by SH transfer (Behrendt 2005 §4)";
+    c.options.lighting = "sh";
+    return c;
+}
+
+}  // namespace
+
+std::vector<bench_configuration_spec> default_bench_configurations() {
+    std::vector<bench_configuration_spec> list;
+    bench_configuration_spec reference;
+    reference.name = "reference";
+    reference.family = k_family_reference;
+    reference.description =
+        "the reference rendered again (full geometry, 3x3 samples): must give zero error";
+    reference.options.geometry = geometry_mode::full;
+    reference.samples = k_bench_reference_samples;
+    list.push_back(reference);
+    list.push_back(brute_force());
+
+    for (double factor : {1.0, 0.25, 0.5, 2.0}) list.push_back(mesh_lod(factor));
+    list.push_back(single(representation::mesh_reduced, "every plant as its reduced mesh"));
+    list.push_back(single(representation::mesh_far, "every plant as its far mesh"));
+    list.push_back(single(representation::billboard_cloud,
+                          "every plant as its billboard cloud (Behrendt 2005)"));
+    for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) list.push_back(baseline(d));
+    list.push_back(billboard_clouds("normal_mapped"));
+    list.push_back(billboard_clouds("pre_lit"));
+    for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
+    for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
+    for (float d : {1.0f, 2.0f, 2.5f, 3.0f})
+        list.push_back(points_lines(d, splat_style::soft, false));
+    // §5.4: d' adapted every frame to hold a budget (the paper's Table 1 draws 10 M triangles
+    // with about 1 M primitives).
+    bench_configuration_spec budget = points_lines(1.0f);
+    budget.name = "points_lines_budget_1m";
+    budget.description =
+        "points and lines, d' adapted every frame to 1 M triangle equivalents (Deussen 2002 §5.4)";
+    budget.options.budget.primitives = 1e6;
+    list.push_back(budget);
+    // The same without §6.2's tile sets: every plant drawn on its own, to measure what they do.
+    bench_configuration_spec plants_only = points_lines(1.0f);
+    plants_only.name = "points_lines_no_tile_sets";
+    plants_only.description =
+        "points and lines, d' = 1 px, every plant on its own (no eco-tile point sets, §6.2)";
+    plants_only.options.policy.tile_sets = false;
+    list.push_back(plants_only);
+    // Behrendt 2005 §4: SH-lit configurations, each family with its own brute force and baseline
+    // sweep, measured against the SH-lit reference.
+    list.push_back(lit_by_transfer(brute_force()));
+    for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) list.push_back(lit_by_transfer(baseline(d)));
+    list.push_back(lit_by_transfer(mesh_lod(1.0)));
+    list.push_back(billboard_clouds("sh"));
+    list.push_back(lit_by_transfer(points_lines(1.0f)));
+    list.push_back(lit_by_transfer(points_lines(2.0f)));
+    return list;
+}
+
+std::optional<bench_configuration_spec> command_line_configuration(const scenario& s,
+                                                                   const scenario_options& o) {
+    const bool points_options =
+        o.sample_distance_px || o.splats || o.primitive_budget || o.target_frame_ms;
+    if (!o.representation && !points_options) return std::nullopt;
+    const std::string& representation = s.lod.representation;
+    if (points_options && representation != "points_lines") {
+        const char* option = o.sample_distance_px ? "--sample-distance"
+                             : o.splats           ? "--splats"
+                             : o.primitive_budget ? "--primitive-budget"
+                                                  : "--target-frame-ms";
+        throw std::invalid_argument(
+            std::string(option) + " sets points and lines (Deussen 2002), but scenario '" + s.name +
+            "' draws " + representation + ": add --representation points_lines");
+    }
+    bench_configuration_spec c;
+    if (representation == "mesh_levels") {
+        c = mesh_lod(1.0);
+    } else if (representation == "billboard_clouds") {
+        c = billboard_clouds(s.lod.lighting, s.lod.cloud_distance_m);
+        c.options.lighting.clear();  // the scenario's own lighting, as `play` draws it
+    } else {
+        const lod_settings& lod = s.lod;
+        c = points_lines(lod.sample_distance_px,
+                         lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
+                         lod.fog_weighted_samples, lod.splat_factor);
+        std::ostringstream value;
+        if (lod.primitive_budget > 0.0) {
+            value << lod.primitive_budget;
+            c.name += "_budget_" + value.str();
+            c.options.budget.primitives = lod.primitive_budget;
+            c.description += ", d' adapted every frame to " + value.str() +
+                             " triangle equivalents (Deussen 2002 §5.4)";
+        } else if (lod.target_frame_ms > 0.0) {
+            value << lod.target_frame_ms;
+            c.name += "_target_" + value.str() + "ms";
+            c.options.budget.frame_ms = lod.target_frame_ms;
+            c.description += ", d' adapted every frame to a GPU frame time of " + value.str() +
+                             " ms (timing-dependent: its errors vary from run to run)";
+        }
+    }
+    c.description += " (from the command line)";
+    return c;
+}
+
+}  // namespace sylva
