@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
     auto* bench = app.add_subcommand(
         "bench", "Measure frame time against image error for every configuration; writes a table and a plot");
     commands.emplace_back(bench, sylva::add_bench_command(*bench));
+    auto* calibrate = app.add_subcommand(
+        "calibrate", "Measure what a triangle, a point and a line cost on this GL device, and cache it");
+    commands.emplace_back(calibrate, sylva::add_calibrate_command(*calibrate));
     auto* stress = app.add_subcommand("stress", "Run the numerical stress suite and print a table of its checks");
     commands.emplace_back(stress, sylva::add_stress_command(*stress));
     try {

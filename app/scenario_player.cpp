@@ -3,6 +3,7 @@
 #include <chrono>
 #include <thread>
 
+#include "app/device_costs.h"
 #include "components/camera.h"
 #include "components/lod_state.h"
 #include "systems/adapt_sample_distance_system.h"
@@ -13,7 +14,6 @@
 #include "systems/frame_stats.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/pass_timer.h"
-#include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/submit_system.h"
 #include "systems/select_representation_system.h"
 #include "systems/spawn_scenario.h"
@@ -81,32 +81,6 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
     return policy;
 }
 
-// The device's primitive costs for this renderer and d', from the cache or measured now.
-primitive_costs device_costs(render::renderer& r, const render::gl_context& context, const lod_policy& policy,
-                             bake_cache& cache) {
-    render::calibration_settings settings;
-    settings.sample_distance_px = policy.points.sample_distance_px;
-    settings.splat_factor = policy.points.splat_factor;
-    settings.splats = policy.points.splats;
-    std::uint64_t key = hash_string("primitive_costs/1");
-    key = hash_string(context.renderer() + "/" + context.version(), key);
-    key =
-        hash_string(std::to_string(r.settings().width) + "x" + std::to_string(r.settings().height) +
-                        "/" + std::to_string(settings.sample_distance_px) + "/" +
-                        std::to_string(settings.splat_factor) +
-                        (settings.splats == splat_style::soft ? "/soft" : ""),
-                    key);
-    auto measure = [&] {
-        const render::calibration_result result = render::calibrate_primitive_costs(r, settings);
-        binary_writer out;
-        out.pod(result.costs);
-        return out.bytes();
-    };
-    const std::vector<std::byte> bytes = cache.get_or_bake("primitive_costs", key, measure);
-    binary_reader in(bytes);
-    return in.pod<primitive_costs>();
-}
-
 }  // namespace
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
@@ -164,7 +138,9 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         // Measured once per device and setting, then read from the cache: without a cache the
         // paper's costs, so a run's images never depend on a timing taken during it.
         if (options.measure_costs && cache && policy.uses_point_lines())
-            m_world.set_resource(device_costs(*m_renderer, *context, policy, *cache));
+            m_world.set_resource(device_cost_model(*m_renderer, *context, *cache, policy.points.splat_factor,
+                                                   false, options.calibration)
+                                     .costs_for(policy.points));
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();

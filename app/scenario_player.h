@@ -13,6 +13,7 @@
 #include "models/image.h"
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
+#include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/renderer.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "systems/lod_policy.h"
@@ -41,8 +42,9 @@ struct player_options {
     // paper's by default, measured ones from systems/render/primitive_cost_calibration.h.
     primitive_costs costs{};
     // With the point/line representation, a GL device and a bake cache: use the device's costs
-    // (systems/render/primitive_cost_calibration.h), measured once and cached.
+    // (app/device_costs.h), calibrated once per device with `calibration` and cached.
     bool measure_costs = true;
+    render::calibration_settings calibration{};
     bool id_buffer = false;
     // Every species lit this way ("normal_mapped", "pre_lit" or "sh"; scenario `lighting`),
     // whatever the scenario says; empty: as the scenario says. The bench compares variants so.

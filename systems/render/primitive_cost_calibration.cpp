@@ -1,7 +1,9 @@
 #include "systems/render/primitive_cost_calibration.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <glm/trigonometric.hpp>
 #include <vector>
 
@@ -11,19 +13,25 @@
 namespace sylva::render {
 namespace {
 
-constexpr float k_distance_m = 20.0f;  // where the calibration primitives float, in front of the eye
+constexpr float k_distance_m =
+    20.0f;  // where the calibration primitives float, in front of the eye
 
 // `count` primitives of one kind scattered over the middle of the view at k_distance_m, as leaf
-// samples (the leaf texture's opaque centre), facing the eye.
-mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m, float triangle_px,
+// samples (the leaf texture's opaque centre), facing the eye: triangles with legs of
+// k_calibration_triangle_px, lines k_calibration_line_px long.
+mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m,
                            float half_width_m, float half_height_m) {
     mesh_data mesh;
     mesh.primitive = kind;
     rng random(0xca1b7a7eULL, std::uint64_t(kind));
-    const std::uint32_t per = kind == primitive_kind::triangles ? 3u : (kind == primitive_kind::lines ? 2u : 1u);
-    const float edge = triangle_px * pixel_m;
+    const std::uint32_t per =
+        kind == primitive_kind::triangles ? 3u : (kind == primitive_kind::lines ? 2u : 1u);
+    const float triangle_leg = float(k_calibration_triangle_px) * pixel_m;
+    const float line_length = float(k_calibration_line_px) * pixel_m;
+    const float edge = kind == primitive_kind::lines ? line_length : triangle_leg;
     for (std::uint32_t i = 0; i < count; ++i) {
-        const glm::vec3 c{random.uniform(-half_width_m, half_width_m), random.uniform(-half_height_m, half_height_m),
+        const glm::vec3 c{random.uniform(-half_width_m, half_width_m),
+                          random.uniform(-half_height_m, half_height_m),
                           random.uniform(-1.0f, 1.0f)};
         const float angle = random.uniform(0.0f, 6.2831853f);
         const glm::vec3 a{std::cos(angle) * edge, std::sin(angle) * edge, 0.0f};
@@ -38,43 +46,93 @@ mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel
     return mesh;
 }
 
-double median(std::vector<double> v) {
+primitive_kind kind_of(cost_path path) {
+    switch (path) {
+        case cost_path::triangles:
+            return primitive_kind::triangles;
+        case cost_path::native_lines:
+        case cost_path::wide_lines:
+            return primitive_kind::lines;
+        default:
+            return primitive_kind::points;
+    }
+}
+
+double pixels_of(const calibration_point& p) {
+    switch (kind_of(p.path)) {
+        case primitive_kind::triangles:
+            return triangle_pixels();
+        case primitive_kind::lines:
+            return line_pixels(p.quality);
+        case primitive_kind::points:
+            break;
+    }
+    return splat_pixels(p.quality);
+}
+
+// Median and the standard error of the median (1.2533 σ/√n, σ from the median absolute
+// deviation: robust to the odd frame a busy machine stretches).
+std::pair<double, double> median_and_error(std::vector<double> v) {
+    if (v.empty()) return {0.0, 0.0};
     std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
+    const std::size_t n = v.size();
+    const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    std::vector<double> deviation;
+    for (const double x : v) deviation.push_back(std::abs(x - median));
+    std::sort(deviation.begin(), deviation.end());
+    const double mad = n % 2 ? deviation[n / 2] : 0.5 * (deviation[n / 2 - 1] + deviation[n / 2]);
+    return {median, 1.2533 * 1.4826 * mad / std::sqrt(double(n))};
 }
 
 }  // namespace
 
-double quantize_cost_ratio(double ratio) {
-    if (!std::isfinite(ratio) || ratio <= 0.0) return 1.0;
-    return std::clamp(std::round(ratio * 4.0) / 4.0, 0.25, 64.0);
+double wall_clock_ms(const calibration_frame&, const std::function<void()>& draw) {
+    const auto start = std::chrono::steady_clock::now();
+    draw();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+double process_cpu_ms(const calibration_frame&, const std::function<void()>& draw) {
+    timespec before{}, after{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &before);
+    draw();
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &after);
+    return double(after.tv_sec - before.tv_sec) * 1e3 +
+           double(after.tv_nsec - before.tv_nsec) * 1e-6;
+}
+
+frame_timer device_frame_timer(const std::string& gl_renderer) {
+    const bool cpu = gl_renderer.find("llvmpipe") != std::string::npos ||
+                     gl_renderer.find("softpipe") != std::string::npos ||
+                     gl_renderer.find("swrast") != std::string::npos;
+    return cpu ? frame_timer(process_cpu_ms) : frame_timer(wall_clock_ms);
 }
 
 calibration_result calibrate_primitive_costs(renderer& r, const calibration_settings& settings) {
+    const auto start = std::chrono::steady_clock::now();
     camera cam;
     cam.position = {0.0, 0.0, 0.0};
     cam.forward = {0.0f, 0.0f, -1.0f};
     cam.aspect = float(r.settings().width) / float(r.settings().height);
     cam.viewport_height_px = float(r.settings().height);
     derive_camera_matrices(cam);
-    const auto pixel_m = float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_distance_m;
+    const auto pixel_m =
+        float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_distance_m;
     const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_distance_m;
     const float half_width = half_height * cam.aspect;
-
-    const std::uint32_t n = settings.primitives;
-    const std::array<std::uint16_t, 3> meshes{
-        r.add_mesh(calibration_mesh(primitive_kind::triangles, n, pixel_m, settings.triangle_px, half_width, half_height)),
-        r.add_mesh(calibration_mesh(primitive_kind::points, n, pixel_m, settings.triangle_px, half_width, half_height)),
-        r.add_mesh(calibration_mesh(primitive_kind::lines, n, pixel_m, settings.triangle_px, half_width, half_height))};
+    const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
+    std::array<std::uint16_t, 3> meshes{};
+    for (const primitive_kind kind :
+         {primitive_kind::triangles, primitive_kind::points, primitive_kind::lines})
+        meshes[std::size_t(kind)] =
+            r.add_mesh(calibration_mesh(kind, capacity, pixel_m, half_width, half_height));
 
     sun light;
     light.direction = glm::normalize(glm::vec3(0.3f, 0.8f, 0.4f));
     environment sky;
-    cascade_set cascades;  // no shadow pass: the opaque pass (and soft splats' passes) are timed
+    cascade_set cascades;  // no shadow pass: the view's passes are timed
     draw_list list;
-    instance_gpu instance;
-    instance.position = {0.0f, 0.0f, -k_distance_m};
-    instance.fade = float(n);  // every splat whole (draw_list.h instance_gpu::fade)
     frame_view view;
     view.view_camera = &cam;
     view.sun_light = &light;
@@ -82,39 +140,75 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     view.cascades = &cascades;
     view.draws = &list;
     view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
-    // Splats of one size: the cost of a primitive, not of the fog's larger far splats.
-    view.set_samples(
-        {settings.sample_distance_px, settings.splat_factor, true, settings.splats, false});
 
-    auto time_frame = [&](int which) {
-        list.instances.clear();
-        list.batches.clear();
-        if (which >= 0) {
-            list.instances.push_back(instance);
-            list.batches.push_back({render_pass::opaque, meshes[std::size_t(which)], 0, 1, 0});
-        }
-        r.render(view);
-        const frame_stats stats = r.finish();
-        return stats.gpu_pass_ms[std::size_t(gpu_pass::opaque)] +
-               stats.gpu_pass_ms[std::size_t(gpu_pass::splats)];
+    const frame_timer timer = settings.timer ? settings.timer : frame_timer(process_cpu_ms);
+    auto time_frame = [&](const calibration_frame& frame) {
+        instance_gpu instance;
+        instance.position = {0.0f, 0.0f, -k_distance_m};
+        instance.fade = float(frame.count);  // every splat whole (draw_list.h instance_gpu::fade)
+        list.instances = {instance};
+        list.batches = {
+            {render_pass::opaque, meshes[std::size_t(kind_of(frame.path))], 0, 1, frame.count}};
+        view.set_samples(frame.quality);
+        return timer(frame, [&] {
+            r.render(view);
+            (void)r.finish();
+        });
     };
-    time_frame(0);  // compile the programs and touch the buffers before timing anything
-    time_frame(1);
-    time_frame(2);
-    std::array<std::vector<double>, 4> ms;
-    for (int rep = 0; rep < settings.repetitions; ++rep)
-        for (int which = -1; which < 3; ++which)
-            ms[std::size_t(which + 1)].push_back(time_frame(which));
-    const double empty = median(ms[0]);
-    const double per_million = 1e6 / double(n);
+
+    const std::vector<calibration_point> plan = calibration_plan(settings.splat_factor);
     calibration_result result;
-    result.triangle_ms_per_million = std::max(median(ms[1]) - empty, 1e-6) * per_million;
-    result.point_ms_per_million = std::max(median(ms[2]) - empty, 1e-6) * per_million;
-    result.line_ms_per_million = std::max(median(ms[3]) - empty, 1e-6) * per_million;
-    // Costs relative to a triangle, each ratio rounded to a quarter.
-    result.costs.triangle = 1.0;
-    result.costs.point = 1.0 / quantize_cost_ratio(result.triangle_ms_per_million / result.point_ms_per_million);
-    result.costs.line = quantize_cost_ratio(result.line_ms_per_million / result.triangle_ms_per_million);
+    // N per plan point: the first count that makes 2N cost min_marginal_ms more than N (after a
+    // frame that compiles the point's programs and touches its buffers).
+    for (const calibration_point& p : plan) {
+        std::uint32_t n = settings.first_count;
+        (void)time_frame({p.path, p.quality, 2 * n});
+        while (2 * n < settings.max_count &&
+               time_frame({p.path, p.quality, 2 * n}) - time_frame({p.path, p.quality, n}) <
+                   settings.min_marginal_ms)
+            n *= 2;
+        result.counts.push_back(std::min(n, settings.max_count / 2));
+    }
+    std::vector<std::vector<double>> marginal_us(plan.size());
+    auto settled = [&] {
+        for (const auto& samples : marginal_us) {
+            const auto [us, error] = median_and_error(samples);
+            if (!(error <= settings.target_relative_error * us)) return false;
+        }
+        return true;
+    };
+    for (int rep = 0;
+         rep < settings.max_repetitions && (rep < settings.min_repetitions || !settled()); ++rep)
+        for (std::size_t k = 0; k < plan.size(); ++k) {
+            const std::size_t i =
+                (k + std::size_t(rep)) % plan.size();  // a different order each time
+            const calibration_frame once{plan[i].path, plan[i].quality, result.counts[i]};
+            const calibration_frame twice{plan[i].path, plan[i].quality, 2 * result.counts[i]};
+            double t_once = 0.0, t_twice = 0.0;
+            if (rep % 2 == 0) {
+                t_once = time_frame(once);
+                t_twice = time_frame(twice);
+            } else {
+                t_twice = time_frame(twice);
+                t_once = time_frame(once);
+            }
+            marginal_us[i].push_back(1000.0 * (t_twice - t_once) / double(result.counts[i]));
+        }
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+        const auto [us, error] = median_and_error(marginal_us[i]);
+        result.samples.push_back({plan[i].path, pixels_of(plan[i]), us, error});
+    }
+    try {
+        try {
+            result.model = fit_cost_model(result.samples, settings.splat_factor);
+        } catch (const calibration_refused& e) {
+            result.refusal = e.what();
+        }
+    } catch (const calibration_refused& e) {
+        result.refusal = e.what();
+    }
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

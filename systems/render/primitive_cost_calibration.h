@@ -1,42 +1,78 @@
 #pragma once
-// What a triangle, a point and a line cost on this GL device, measured (issue 5, item 6). The
-// paper's point/line selection assumes a triangle costs about three points (Deussen 2002 §4.1);
-// on llvmpipe a point costs about half a triangle and a wide line several triangles, so a
-// selection that trusted the paper would pick representations that are slower where Sylva runs.
+// Measures what one more triangle, point or line costs on this GL device (issue 5 item 6; made
+// robust by issue 18 item 3) and fits the physical model of systems/primitive_cost_model.h.
 //
-// The calibration draws the same number of leaf-sized triangles, d'-sized splats and d'-wide
-// lines through the renderer's own opaque pass (the programs every frame uses; soft splats add
-// their visibility and blend passes, drawn after the sky), in front of a
-// camera like the scenario's, times each on the GPU timer, subtracts an empty frame, and takes
-// the median of a few repetitions. Ratios are rounded to quarter steps so noise does not move
-// thresholds from run to run; the result is cached per device and setting by the caller.
-#include "systems/point_line_lod.h"
+// For each point of the model's calibration plan (a drawing path at a size), the calibration
+// draws N and then 2N leaf-sized primitives of that kind through the renderer's own passes (the
+// programs every frame uses; soft splats with their visibility pass, through the splat layer
+// from 4 px on) in front of a camera like a scene's, and takes the difference: the marginal
+// time of N primitives, free of everything a frame costs whatever it draws. N starts small and
+// doubles until that difference is well above the frame's own jitter. The repetitions then
+// interleave every plan point, N and 2N alternating which goes first, so a machine that slows
+// down over the calibration slows every point alike; each point's cost is the median of its
+// repetitions, with the median's standard error, and the fit refuses points whose cost is not
+// clearly above that error (calibration_refused): the caller then keeps the paper's costs.
+//
+// What a frame costs is measured up to glFinish, and on a CPU rasteriser (llvmpipe, softpipe)
+// as the CPU time of the whole process: the device is the CPU, and a primitive costs the time
+// every thread (the one issuing GL calls, where llvmpipe shades vertices, and its rasteriser
+// threads) spends on it. Unlike wall-clock time it does not count the time the process waits
+// for a core another program holds, so a busy machine calibrates like an idle one: with the
+// machine's other core loaded, per-primitive times by wall clock came out 1.6-2x larger and
+// with 2-4x the spread of the same run's CPU times. Elsewhere (a GPU) it is wall-clock time.
+// GPU timer queries are not used: llvmpipe's miss the vertex work done while calls are issued.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "systems/primitive_cost_model.h"
 #include "systems/render/renderer.h"
 
 namespace sylva::render {
 
+// One frame the calibration times: `count` primitives on `path`, drawn at `quality`.
+struct calibration_frame {
+    cost_path path = cost_path::triangles;
+    point_line_quality quality;
+    std::uint32_t count = 0;
+};
+
+// Runs `draw` (which renders the frame and waits for it) and returns how long it took, in ms.
+// Tests inject a broken one to see the calibration refuse it.
+using frame_timer =
+    std::function<double(const calibration_frame&, const std::function<void()>& draw)>;
+double wall_clock_ms(const calibration_frame& frame, const std::function<void()>& draw);
+double process_cpu_ms(const calibration_frame& frame, const std::function<void()>& draw);
+// process_cpu_ms on a CPU rasteriser (by its GL_RENDERER string), wall_clock_ms elsewhere.
+frame_timer device_frame_timer(const std::string& gl_renderer);
+
 struct calibration_settings {
-    std::uint32_t primitives = 40000;  // of each kind per draw
-    int repetitions = 5;
-    float sample_distance_px = 1.0f;  // d': splat and line size
-    float splat_factor = 1.3f;
-    splat_style splats = splat_style::soft;  // soft splats are timed with their two passes
-    float triangle_px = 4.0f;  // edge length of the calibration triangles on screen
+    float splat_factor = 1.3f;          // c_p the splats are sized with
+    std::uint32_t first_count = 16000;  // N's first try per plan point
+    std::uint32_t max_count = 256000;   // 2N never exceeds it (the meshes hold this many)
+    double min_marginal_ms = 25.0;      // N doubles until 2N costs this much more than N
+    // Repetitions of every plan point: at least the first, then more until every point's
+    // standard error is below target_relative_error of its cost, or the most are done.
+    int min_repetitions = 7;
+    int max_repetitions = 21;
+    double target_relative_error = 0.03;
+    frame_timer timer;  // empty: process_cpu_ms (device_cost_model picks the device's)
 };
 
-// Raw medians, milliseconds per million primitives (for the report), and the rounded costs.
 struct calibration_result {
-    double triangle_ms_per_million = 0.0;
-    double point_ms_per_million = 0.0;
-    double line_ms_per_million = 0.0;
-    primitive_costs costs;
+    std::optional<primitive_cost_model> model;  // none when the fit refused the samples
+    std::string refusal;                        // why
+    std::vector<cost_sample> samples;           // one per plan point
+    std::vector<std::uint32_t> counts;          // N of each
+    double seconds = 0.0;
 };
 
-// Adds its three meshes to the renderer's pool, renders 4 × repetitions frames into the
-// renderer's target (overwriting its last image) and returns the costs. GL thread only.
-calibration_result calibrate_primitive_costs(renderer& r, const calibration_settings& settings);
-
-// Rounds a measured cost ratio to the nearest quarter in [0.25, 64] (the cached form).
-double quantize_cost_ratio(double ratio);
+// Adds its three meshes to the renderer's pool, renders into the renderer's target (overwriting
+// its last image) and returns the samples and the fitted model, or the reason the fit refused
+// them (calibration_refused: timings that cannot be trusted). GL thread only.
+calibration_result calibrate_primitive_costs(renderer& r,
+                                             const calibration_settings& settings = {});
 
 }  // namespace sylva::render

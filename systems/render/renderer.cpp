@@ -23,8 +23,6 @@ namespace {
 constexpr GLuint k_instance_binding = 1;
 constexpr int k_sky_width = 128;
 constexpr int k_sky_height = 64;
-// Lines up to this width (pixels) are drawn as GL's one-pixel lines, wider ones by line.geom.
-constexpr float k_native_line_width_px = 1.25f;
 
 constexpr std::size_t material_index(material_kind m) { return static_cast<std::size_t>(m); }
 constexpr std::uint32_t vertices_per(primitive_kind p) {

@@ -16,15 +16,12 @@
 // visibility pass and, with the frame's ID buffer, the visibility splats' IDs. The composite
 // (shaders/splat_layer.frag) writes the nearest depth of its 2x2 footprint as its own, so the
 // frame's depth test hides what the terrain and other surfaces cover, pixel by pixel.
+#include "systems/point_line_lod.h"
 #include "systems/render/gl_objects.h"
 
 namespace sylva::render {
 
-// Soft splats narrower than this (on screen, pixels) are drawn straight into the frame: in the
-// half-size layer they would be under 2 texels wide and lose the detail they carry. At d' = 1
-// (2.3 px) the layer raised forest's popping from 6.37 to 6.51 (fog-weighted) and 6.34 to 6.64
-// (uniform); from d' = 2 (4.6 px) it lowered it on landscape, forest and meadow alike.
-inline constexpr float k_splat_layer_min_side_px = 4.0f;
+// Soft splats of at least k_splat_layer_min_side_px (systems/point_line_lod.h) are drawn here.
 
 class splat_layer {
 public:

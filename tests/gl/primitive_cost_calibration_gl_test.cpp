@@ -1,7 +1,7 @@
-// The device calibration of primitive costs (issue 5, item 6): it measures something for every
-// kind, and its rounded ratios are what the selection uses.
-#include "systems/render/primitive_cost_calibration.h"
-
+// The device calibration of primitive costs (issue 5 item 6, issue 18 item 3) through the real
+// renderer: its bookkeeping recovers a known cost exactly from a timer that reports it, it refuses
+// a timer that reports garbage, it gets a model out of this device, and it leaves no trace in the
+// frames after it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,46 +10,119 @@
 #include "app/scenario_player.h"
 #include "gl_test_support.h"
 #include "models/bake_cache.h"
+#include "models/random.h"
 #include "scenarios/scenario_loader.h"
+#include "systems/render/primitive_cost_calibration.h"
 #include "systems/spawn_scenario.h"
 
 namespace sylva {
 namespace {
 
-TEST(primitive_cost_calibration, ratios_are_rounded_to_quarters_within_bounds) {
-    EXPECT_EQ(render::quantize_cost_ratio(2.1), 2.0);
-    EXPECT_EQ(render::quantize_cost_ratio(2.13), 2.25);
-    EXPECT_EQ(render::quantize_cost_ratio(0.01), 0.25);
-    EXPECT_EQ(render::quantize_cost_ratio(1e9), 64.0);
-    EXPECT_EQ(render::quantize_cost_ratio(std::nan("")), 1.0);
-    EXPECT_EQ(render::quantize_cost_ratio(-2.0), 1.0);
-}
-
-TEST(primitive_cost_calibration, measures_positive_costs_for_triangles_points_and_lines) {
-    SYLVA_REQUIRE_GL();
-    scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
-    const scene_assets assets = build_scene_assets(s, nullptr);
+std::unique_ptr<render::renderer> small_renderer(const scene_assets& assets) {
     render::renderer_settings settings;
     settings.width = 320;
     settings.height = 180;
     settings.shadows = false;
-    render::renderer r(settings, assets);
-    render::calibration_settings calibration;
-    calibration.primitives = 20000;
-    calibration.repetitions = 3;
-    calibration.sample_distance_px = 2.0f;
-    const render::calibration_result result = render::calibrate_primitive_costs(r, calibration);
-    EXPECT_GT(result.triangle_ms_per_million, 0.0);
-    EXPECT_GT(result.point_ms_per_million, 0.0);
-    EXPECT_GT(result.line_ms_per_million, 0.0);
-    EXPECT_EQ(result.costs.triangle, 1.0);
-    const double rho = 1.0 / result.costs.point;
-    EXPECT_EQ(rho, render::quantize_cost_ratio(rho));
-    EXPECT_GE(result.costs.line, 0.25);
-    EXPECT_LE(result.costs.line, 64.0);
-    std::printf("calibration: %.1f ms per million triangles, %.1f points, %.1f lines -> costs 1 : %.3f : %.2f\n",
-                result.triangle_ms_per_million, result.point_ms_per_million, result.line_ms_per_million,
-                result.costs.point, result.costs.line);
+    return std::make_unique<render::renderer>(settings, assets);
+}
+
+scene_assets tiny_assets() {
+    return build_scene_assets(
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json"),
+        nullptr);
+}
+
+render::calibration_settings quick(render::frame_timer timer) {
+    render::calibration_settings s;
+    s.first_count = 2000;
+    s.max_count = 8000;
+    s.min_marginal_ms = 1.0;
+    s.min_repetitions = 3;
+    s.max_repetitions = 3;
+    s.timer = std::move(timer);
+    return s;
+}
+
+// What a frame of `f` costs in a made-up device: 7 ms of its own, plus per primitive
+// 0.5 + 0.02·pixels µs (soft splats), 1 + 0.01·pixels (triangles), 0.3 + 0.05·pixels (the rest).
+double made_up_ms(const render::calibration_frame& f) {
+    double a = 0.3, b = 0.05, pixels = 0.0;
+    switch (f.path) {
+        case cost_path::triangles:
+            a = 1.0, b = 0.01, pixels = triangle_pixels();
+            break;
+        case cost_path::soft_splats:
+            a = 0.5, b = 0.02, pixels = splat_pixels(f.quality);
+            break;
+        case cost_path::native_lines:
+        case cost_path::wide_lines:
+            pixels = line_pixels(f.quality);
+            break;
+        default:
+            pixels = splat_pixels(f.quality);
+    }
+    return 7.0 + 1e-3 * double(f.count) * (a + b * pixels);
+}
+
+TEST(primitive_cost_calibration, recovers_a_known_device_exactly_through_the_renderer) {
+    SYLVA_REQUIRE_GL();
+    const scene_assets assets = tiny_assets();
+    auto r = small_renderer(assets);
+    const render::calibration_result result = render::calibrate_primitive_costs(
+        *r, quick([](const render::calibration_frame& f, const auto& draw) {
+            draw();
+            return made_up_ms(f);
+        }));
+    ASSERT_TRUE(result.model) << result.refusal;
+    const primitive_cost_model& m = *result.model;
+    EXPECT_NEAR(m.paths[std::size_t(cost_path::triangles)].a_us +
+                    8.0 * m.paths[std::size_t(cost_path::triangles)].b_us_per_px,
+                1.08, 1e-9);
+    EXPECT_NEAR(m.paths[std::size_t(cost_path::soft_splats)].a_us, 0.5, 1e-9);
+    EXPECT_NEAR(m.paths[std::size_t(cost_path::soft_splats)].b_us_per_px, 0.02, 1e-9);
+    EXPECT_NEAR(m.paths[std::size_t(cost_path::wide_lines)].b_us_per_px, 0.05, 1e-9);
+    // d' = 1, soft: (0.5 + 0.02·5.2) / 1.08 = 0.55926 triangles a splat (pixels from float sizes).
+    EXPECT_NEAR(m.costs_for({1.0f, 1.3f, true, splat_style::soft, true}).point, 0.604 / 1.08, 1e-7);
+    EXPECT_EQ(result.samples.size(), calibration_plan(1.3f).size());
+}
+
+TEST(primitive_cost_calibration, refuses_a_timer_that_reports_noise_or_nothing) {
+    SYLVA_REQUIRE_GL();
+    const scene_assets assets = tiny_assets();
+    auto r = small_renderer(assets);
+    rng random(42, 0);
+    const render::calibration_result noise = render::calibrate_primitive_costs(
+        *r, quick([&](const render::calibration_frame&, const auto& draw) {
+            draw();
+            return double(random.uniform(0.0f, 50.0f));
+        }));
+    EXPECT_FALSE(noise.model);
+    EXPECT_NE(noise.refusal, "");
+    const render::calibration_result constant = render::calibrate_primitive_costs(
+        *r, quick([](const render::calibration_frame&, const auto& draw) {
+            draw();
+            return 16.0;
+        }));
+    EXPECT_FALSE(constant.model);
+    EXPECT_NE(constant.refusal.find("not above the timer's noise"), std::string::npos)
+        << constant.refusal;
+}
+
+TEST(primitive_cost_calibration, measures_this_device) {
+    SYLVA_REQUIRE_GL();
+    const scene_assets assets = tiny_assets();
+    auto r = small_renderer(assets);
+    render::calibration_settings s;
+    s.timer = render::device_frame_timer(testing::shared_gl_context()->renderer());
+    s.max_repetitions = 15;  // a quiet machine settles in about 7, a loaded one within 15
+    const render::calibration_result result = render::calibrate_primitive_costs(*r, s);
+    ASSERT_TRUE(result.model) << result.refusal;
+    for (const cost_sample& sample : result.samples)
+        std::printf("%-20s %6.2f px %.4f ± %.4f us\n", cost_path_name(sample.path), sample.pixels,
+                    sample.us, sample.error_us);
+    const primitive_costs c = result.model->costs_for({2.0f, 1.3f, true, splat_style::soft, true});
+    EXPECT_GT(c.point, 0.0);
+    EXPECT_GT(c.line, 0.0);
 }
 
 TEST(primitive_cost_calibration, leaves_no_trace_in_the_frames_after_it) {
@@ -57,14 +130,17 @@ TEST(primitive_cost_calibration, leaves_no_trace_in_the_frames_after_it) {
     // after it must equal the same frame without it (it once left its own sky behind, because
     // both environments carried revision 1).
     SYLVA_REQUIRE_GL();
-    const scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
-    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "sylva_calibration_trace";
+    const scenario s =
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    const std::filesystem::path dir =
+        std::filesystem::path(::testing::TempDir()) / "sylva_calibration_trace";
     std::filesystem::remove_all(dir);
     bake_cache cache(dir);
     player_options options;
     options.policy.mode = lod_policy::kind::points_lines;
     options.policy.points = {2.0f, 1.3f};
     options.measure_costs = true;
+    options.calibration = quick(render::process_cpu_ms);
     scenario_player calibrated(s, 2, testing::shared_gl_context(), &cache, options);
     calibrated.step();
     const image_rgba8 after = calibrated.capture();

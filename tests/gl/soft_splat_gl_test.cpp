@@ -247,7 +247,7 @@ TEST(soft_splat_gl, a_surface_in_front_of_the_splat_layer_hides_it) {
     render::renderer renderer(settings, scene.assets);
 
     // d' = 2 px: soft splats 4.6 px wide, drawn through the layer (k_splat_layer_min_side_px).
-    ASSERT_GE(2.0f * 2.0f * std::sqrt(1.3f), render::k_splat_layer_min_side_px);
+    ASSERT_GE(2.0f * 2.0f * std::sqrt(1.3f), k_splat_layer_min_side_px);
     const auto without = render_luma(renderer, scene, field, {}, splat_style::soft, 0, 0.0f, 2.0f);
     const auto with =
         render_luma(renderer, scene, field, {{{0.0, 1.0, 0.0}}}, splat_style::soft, 0, 0.0f, 2.0f);

@@ -1,0 +1,103 @@
+#include "app/device_costs.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <set>
+
+#include "app/metrics.h"
+
+namespace sylva {
+namespace {
+
+// Entry layout (little-endian): u8 status (0 model, 1 refused), then the model's lines or the
+// reason.
+constexpr std::uint8_t k_model = 0;
+constexpr std::uint8_t k_refused = 1;
+
+std::vector<std::byte> encode(const device_calibration& c) {
+    binary_writer out;
+    if (c.model) {
+        out.pod(k_model);
+        out.pod(c.model->paths);
+    } else {
+        out.pod(k_refused);
+        out.text(c.refusal);
+    }
+    return out.bytes();
+}
+
+device_calibration decode(const std::vector<std::byte>& bytes) {
+    binary_reader in(bytes);
+    device_calibration c;
+    const auto status = in.pod<std::uint8_t>();
+    if (status == k_model) {
+        c.model.emplace();
+        c.model->paths = in.pod<decltype(primitive_cost_model::paths)>();
+    } else if (status == k_refused) {
+        c.refusal = in.text();
+    } else {
+        throw std::runtime_error("primitive cost model: unknown status " + std::to_string(status));
+    }
+    return c;
+}
+
+// A refusal is said once per process and device, not once per player.
+void warn_once(const std::string& device, const std::string& why) {
+    static std::mutex mutex;
+    static std::set<std::string> said;
+    const std::lock_guard lock(mutex);
+    if (!said.insert(device).second) return;
+    spdlog::warn(
+        "the device calibration of primitive costs was refused ({}); points and lines select "
+        "with the paper's costs (a triangle as three points). `sylva calibrate --force` "
+        "measures again",
+        why);
+}
+
+}  // namespace
+
+std::string describe_cost_device(const render::gl_context& context, const render::renderer& r,
+                                 float splat_factor) {
+    const char* rasteriser_threads = std::getenv("LP_NUM_THREADS");
+    return describe_machine() + "; LP_NUM_THREADS " +
+           (rasteriser_threads ? rasteriser_threads : "unset") + "; " + context.renderer() + "; " +
+           context.version() + "; " + std::to_string(r.settings().width) + "x" +
+           std::to_string(r.settings().height) + "; c_p " + std::to_string(splat_factor);
+}
+
+primitive_costs device_calibration::costs_for(const point_line_quality& q) const {
+    return model ? model->costs_for(q) : primitive_costs{};
+}
+
+device_calibration device_cost_model(render::renderer& r, const render::gl_context& context,
+                                     bake_cache& cache, float splat_factor, bool force,
+                                     const render::calibration_settings& settings) {
+    const std::string device = describe_cost_device(context, r, splat_factor);
+    const std::uint64_t key = hash_string(device, hash_string("primitive_cost_model/1"));
+    if (!force)
+        if (const auto bytes = cache.load("primitive_cost_model", key)) {
+            try {
+                device_calibration c = decode(*bytes);
+                if (!c.model) warn_once(device, c.refusal);
+                return c;
+            } catch (const std::exception& e) {
+                spdlog::warn("bake cache entry {} is damaged ({}); calibrating again",
+                             cache.path_of("primitive_cost_model", key).string(), e.what());
+            }
+        }
+    device_calibration c;
+    c.measured_now = true;
+    render::calibration_settings s = settings;
+    s.splat_factor = splat_factor;
+    if (!s.timer) s.timer = render::device_frame_timer(context.renderer());
+    c.measurement = render::calibrate_primitive_costs(r, s);
+    c.model = c.measurement->model;
+    c.refusal = c.measurement->refusal;
+    if (!c.model) warn_once(device, c.refusal);
+    cache.store("primitive_cost_model", key, encode(c));
+    return c;
+}
+
+}  // namespace sylva
