@@ -2,8 +2,6 @@
 // screenshot, and the screenshot must match the headless (OSMesa) render of the same frame.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cstdlib>
 #include <unistd.h>
 #include <filesystem>
@@ -16,17 +14,6 @@ namespace sylva {
 namespace {
 
 namespace fs = std::filesystem;
-
-image_rgba8 read_png(const fs::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return {};
-    image_rgba8 image;
-    image.width = std::uint32_t(in->spec().width);
-    image.height = std::uint32_t(in->spec().height);
-    image.texels.resize(std::size_t(image.width) * image.height * 4);
-    in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, image.texels.data());
-    return image;
-}
 
 int run(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
 
@@ -41,8 +28,8 @@ TEST(viewer, xvfb_screenshot_matches_the_headless_render_of_the_same_frame) {
     ASSERT_EQ(run("env -u WAYLAND_DISPLAY xvfb-run -a -s '-screen 0 640x480x24' " + binary + " view " +
                   scenario + " --exit-after 3 --no-overlay --screenshot " + (dir / "window.png").string()),
               0);
-    const image_rgba8 headless = read_png(dir / "headless/frame_0002.png");
-    const image_rgba8 window = read_png(dir / "window.png");
+    const image_rgba8 headless = testing::read_png(dir / "headless/frame_0002.png");
+    const image_rgba8 window = testing::read_png(dir / "window.png");
     ASSERT_FALSE(headless.texels.empty());
     ASSERT_FALSE(window.texels.empty());
     const auto d = testing::compare_images(headless, window);
