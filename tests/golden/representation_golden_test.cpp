@@ -85,7 +85,7 @@ TEST(representation_golden, opaque_splats) {
 TEST(representation_golden, soft_splats_in_the_frame) {
     SYLVA_REQUIRE_GL();
     const player_options options = points_and_lines(1.0f, splat_style::soft);
-    ASSERT_LT(soft_splat_size_px(options.policy.points), render::k_splat_layer_min_side_px);
+    ASSERT_LT(soft_splat_size_px(options.policy.points), k_splat_layer_min_side_px);
     const auto frame = testing::render_frame(scene("grove.json"), 0, options);
     EXPECT_EQ(drawn(frame.record, representation::points), k_grove_plants);
     EXPECT_GT(frame.record.points, 10 * frame.record.triangles);
@@ -102,7 +102,7 @@ TEST(representation_golden, soft_splats_in_the_splat_layer) {
     s.camera.keyframes.at(0).key.position.y = 10.0;  // metres above the terrain
     s.camera.keyframes.at(0).key.target.y = 3.0;
     const player_options options = points_and_lines(2.0f, splat_style::soft);
-    ASSERT_GE(soft_splat_size_px(options.policy.points), render::k_splat_layer_min_side_px);
+    ASSERT_GE(soft_splat_size_px(options.policy.points), k_splat_layer_min_side_px);
     const auto frame = testing::render_frame(s, 0, options);
     EXPECT_EQ(drawn(frame.record, representation::points), k_grove_plants);
     EXPECT_EQ(frame.record.triangles, 0u);
