@@ -41,7 +41,7 @@ struct frame_record {
     std::uint32_t aggregated_tiles = 0;
     std::uint32_t aggregated_plants = 0;
     std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)
-    std::uint64_t state_hash = 0;  // FNV-1a of the LOD state and the draw list
+    std::uint64_t state_hash = 0;  // FNV-1a of the frame's component state and draw list
 };
 
 struct run_info {

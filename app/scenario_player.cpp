@@ -5,7 +5,11 @@
 
 #include "app/device_costs.h"
 #include "components/camera.h"
+#include "components/fade_alpha.h"
 #include "components/lod_state.h"
+#include "components/octree_cell.h"
+#include "components/point_prefix.h"
+#include "components/tile_visibility.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "systems/aggregate_eco_tiles_system.h"
 #include "systems/build_draw_list_system.h"
@@ -122,6 +126,7 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         cam.full_geometry = true;
         cam.lod_scale = 1e6f;  // no distance is far enough to switch or cull
     }
+    m_world.set_chunk_size(options.chunk_size);
     register_frame_systems(m_schedule);
 
     render_device device;
@@ -244,6 +249,20 @@ void scenario_player::present(int window_width, int window_height) const {
 std::uint64_t scenario_player::state_hash() const {
     const auto& lod = m_world.table<lod_state>();
     std::uint64_t h = fnv1a(lod.data(), lod.size() * sizeof(lod_state));
+    // Every component a parallel loop writes, not only what reaches the draw list: a wrong
+    // write is then caught where it happens, even for a plant whose items it does not change
+    // (a shadow-only plant's prefix, a fade that ends up drawn as nothing).
+    const auto& prefixes = m_world.table<point_prefix>();
+    h = fnv1a(prefixes.data(), prefixes.size() * sizeof(point_prefix), h);
+    const auto& cells = m_world.table<cell_prefix>();
+    h = fnv1a(cells.data(), cells.size() * sizeof(cell_prefix), h);
+    const auto& tiles = m_world.table<tile_visibility>();
+    h = fnv1a(tiles.data(), tiles.size() * sizeof(tile_visibility), h);
+    const auto& fades = m_world.table<fade_alpha>();
+    for (std::size_t i = 0; i < fades.size(); ++i) {  // field by field: fade_alpha has padding
+        h = fnv1a(&fades.data()[i].value, sizeof(float), h);
+        h = fnv1a(&fades.data()[i].partner, sizeof(representation), h);
+    }
     const draw_list& draws = m_world.resource<draw_list>();
     h = fnv1a(draws.items.data(), draws.items.size() * sizeof(draw_item), h);
     h = fnv1a(draws.instances.data(), draws.instances.size() * sizeof(instance_gpu), h);

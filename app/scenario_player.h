@@ -46,6 +46,11 @@ struct player_options {
     bool measure_costs = true;
     render::calibration_settings calibration{};
     bool id_buffer = false;
+    // Entities per task of the frame's parallel loops (ecs::world::chunk_size). Chunking never
+    // depends on the thread count, and no result depends on the chunk size: a smaller chunk only
+    // exercises the same per-chunk paths (counts, prefix sums, merges) on a small scene, which
+    // is what the chunk-boundary determinism test uses it for.
+    std::size_t chunk_size = ecs::k_default_chunk;
     // Every species lit this way ("normal_mapped", "pre_lit" or "sh"; scenario `lighting`),
     // whatever the scenario says; empty: as the scenario says. The bench compares variants so.
     std::string lighting;
@@ -71,7 +76,9 @@ public:
     void set_frame(std::uint64_t frame);
     std::uint64_t frame() const { return m_frame; }
 
-    // FNV-1a over every plant's LOD state and the sorted draw list: equal for any thread count.
+    // FNV-1a over the state the frame's parallel loops write (every plant's LOD state, fade and
+    // point prefix, every octree cell's prefix, every eco tile's visibility) and the sorted draw
+    // list with its instance records: equal for any thread count and any chunk size.
     std::uint64_t state_hash() const;
 
     const scenario& settings() const { return m_scenario; }

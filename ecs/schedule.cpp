@@ -73,6 +73,10 @@ bool schedule::depends_on(std::string_view later, std::string_view earlier) cons
     return std::find(preds.begin(), preds.end(), index_of(earlier)) != preds.end();
 }
 
+const std::vector<loop_record>& schedule::last_loops(std::string_view system) const {
+    return m_systems[index_of(system)].loops;
+}
+
 std::vector<std::string_view> schedule::system_names() const {
     std::vector<std::string_view> names;
     names.reserve(m_systems.size());
@@ -127,7 +131,8 @@ void schedule::run_concurrent(const phase_group& group, world& w) {
 void schedule::run_one(std::uint32_t system, world& w) {
     system_entry& s = m_systems[system];
     const auto start = std::chrono::steady_clock::now();
-    s.run(w, s.commands);
+    s.loops.clear();
+    s.run(w, s.commands, s.loops);
     const std::chrono::duration<double, std::milli> elapsed =
         std::chrono::steady_clock::now() - start;
     m_timings[system].second = elapsed.count();

@@ -48,6 +48,7 @@ public:
                          detail::list_ids<typename traits::write_list>::get(),
                          &run_system<S>,
                          &prepare_tables<typename traits::read_list, typename traits::write_list>,
+                         {},
                          {}});
     }
 
@@ -67,9 +68,12 @@ public:
     const std::vector<std::pair<std::string_view, double>>& last_timings() const {
         return m_timings;
     }
+    // The parallel loops `system` ran in the last run, in the order it ran them (a loop it
+    // skipped is absent). Throws on an unknown name.
+    const std::vector<loop_record>& last_loops(std::string_view system) const;
 
 private:
-    using run_fn = void (*)(world&, command_buffer&);
+    using run_fn = void (*)(world&, command_buffer&, std::vector<loop_record>&);
     using prepare_fn = void (*)(world&);
 
     struct system_entry {
@@ -81,6 +85,7 @@ private:
         run_fn run;
         prepare_fn prepare;
         command_buffer commands;
+        std::vector<loop_record> loops;  // last run's; cleared, not freed, each run
     };
     struct phase_group {
         phase stage;
@@ -89,8 +94,8 @@ private:
     };
 
     template <class S>
-    static void run_system(world& w, command_buffer& commands) {
-        system_context<S> ctx(w, commands);
+    static void run_system(world& w, command_buffer& commands, std::vector<loop_record>& loops) {
+        system_context<S> ctx(w, commands, &loops);
         S::run(ctx);
     }
 

@@ -4,10 +4,12 @@
 // writes<> ..."), so a system's declaration is always a truthful input to the scheduler's graph.
 // Read access (read, single, resource, const query types) needs T in reads<> or writes<>;
 // write access (write, single_mut, resource_mut, non-const query types) needs T in writes<>.
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "ecs/access.h"
 #include "ecs/command_buffer.h"
@@ -16,12 +18,25 @@
 
 namespace sylva::ecs {
 
+// One parallel loop a system ran in a frame: the items it covered, the chunk size it cut them
+// by, and how many chunk tasks really ran (counted as they ran, not computed). The schedule
+// keeps these per system (schedule::last_loops) so a test can prove which loops crossed chunk
+// boundaries; counting costs one relaxed atomic add per chunk.
+struct loop_record {
+    std::size_t count = 0;
+    std::size_t chunk = 0;
+    std::size_t chunks_run = 0;
+    friend bool operator==(const loop_record&, const loop_record&) = default;
+};
+
 template <class S>
 class system_context {
     using traits = system_traits<S>;
 
 public:
-    system_context(world& w, command_buffer& commands) : m_world(w), m_commands(commands) {}
+    // `loops` (may be null) receives a loop_record per parallel_for this system runs.
+    system_context(world& w, command_buffer& commands, std::vector<loop_record>* loops = nullptr)
+        : m_world(w), m_commands(commands), m_loops(loops) {}
 
     template <class T>
     const component_table<T>& read() const {
@@ -92,14 +107,35 @@ public:
     bool alive(entity e) const { return m_world.alive(e); }
     std::uint64_t frame_index() const { return m_world.frame_index(); }
 
+    // Entities per task of a parallel loop over entity tables: the world's chunk size
+    // (world::chunk_size, k_default_chunk unless set). Loops over entities use it, so one
+    // setting splits every such loop of the frame the same way.
+    std::size_t chunk() const { return m_world.chunk_size(); }
+
+    // ecs::parallel_for over [0, count) in chunks of chunk(); f(begin, end, chunk_index).
+    template <class F>
+    void parallel_for(std::size_t count, F&& f) const {
+        parallel_for(count, chunk(), std::forward<F>(f));
+    }
+    // The same with a chunk in other units (e.g. leaf tiles); recorded like the above.
     template <class F>
     void parallel_for(std::size_t count, std::size_t chunk, F&& f) const {
-        ecs::parallel_for(count, chunk, std::forward<F>(f));
+        if (!m_loops) {
+            ecs::parallel_for(count, chunk, std::forward<F>(f));
+            return;
+        }
+        std::atomic<std::size_t> ran{0};
+        ecs::parallel_for(count, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
+            f(begin, end, c);
+            ran.fetch_add(1, std::memory_order_relaxed);
+        });
+        m_loops->push_back({count, chunk, ran.load(std::memory_order_relaxed)});
     }
 
 private:
     world& m_world;
     command_buffer& m_commands;
+    std::vector<loop_record>* m_loops;
 };
 
 }  // namespace sylva::ecs

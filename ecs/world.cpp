@@ -61,6 +61,12 @@ void world::require_alive(entity e, const char* operation) const {
                                ": entity is dead or stale");
 }
 
+void world::set_chunk_size(std::size_t chunk) {
+    if (chunk == 0)
+        throw std::invalid_argument("ecs::world::set_chunk_size: chunk must be positive, got 0");
+    m_chunk_size = chunk;
+}
+
 std::size_t world::checked_single_index(std::size_t size, const char* type_name) {
     if (size != 1)
         throw std::logic_error("ecs::world::single: expected exactly one entity with " +

@@ -20,6 +20,7 @@
 
 #include "ecs/component_table.h"
 #include "ecs/entity.h"
+#include "ecs/parallel.h"
 #include "ecs/query.h"
 #include "ecs/type_id.h"
 #include "ecs/type_list.h"
@@ -166,6 +167,13 @@ public:
     std::uint64_t frame_index() const { return m_frame_index; }
     void set_frame_index(std::uint64_t frame) { m_frame_index = frame; }
 
+    // How many entities one task of a system's parallel loop handles (system_context::chunk()).
+    // Chunking never depends on the thread count, so results do not depend on this either: a
+    // smaller chunk only splits the same loops into more tasks and exercises the same per-chunk
+    // paths (counts, prefix sums, merges) on a small scene. Set it between frames.
+    std::size_t chunk_size() const { return m_chunk_size; }
+    void set_chunk_size(std::size_t chunk);  // throws std::invalid_argument for 0
+
 private:
     struct slot {
         std::uint32_t generation = 0;
@@ -222,6 +230,7 @@ private:
     std::vector<resource_ptr> m_resources;              // indexed by type_id
     std::unique_ptr<alignment_cache> m_alignment;
     std::uint64_t m_frame_index = 0;
+    std::size_t m_chunk_size = k_default_chunk;
 };
 
 }  // namespace sylva::ecs

@@ -35,10 +35,15 @@
 // precision (every kernel above is a sum of products of 1D kernels; convolution and correlation
 // differ only in the sign of the antisymmetric edge kernel, whose response enters as a length).
 //
+// (The authors' later python/flip_api.py replicates the edge pixel instead, a a a | a b c; the
+// two differ only within a filter radius of the border.)
+//
 // What this leaves out compared with the reference tools: HDR-FLIP (exposure bracketing), error
-// maps, histograms and percentile pooling; only the mean is returned. Alpha is ignored. The
-// numbers have been checked by hand-computed cases (tests/measure/image_metrics_test.cpp), not
-// yet against the authors' tool itself.
+// map output, histograms and percentile pooling; only the mean is returned (the per-pixel map is
+// flip_detail::error_map, for tests). Alpha is ignored. The numbers have been checked by
+// hand-computed cases (tests/measure/image_metrics_test.cpp for constant images,
+// tests/measure/flip_detail_test.cpp for each spatial step on a step edge, a single bright
+// pixel and sinusoids), not yet against the authors' tool itself.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,11 +52,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "measure/flip_detail.h"
 #include "measure/image_checks.h"
 #include "measure/image_metrics.h"
 
 namespace sylva {
 
+namespace flip_detail {
 namespace {
 
 using vec3 = std::array<double, 3>;
@@ -132,13 +139,6 @@ double hyab(const vec3& p, const vec3& q) {
     return std::abs(p[0] - q[0]) + std::hypot(p[1] - q[1], p[2] - q[2]);
 }
 
-// One channel of an image, row-major.
-struct plane {
-    std::size_t width = 0;
-    std::size_t height = 0;
-    std::vector<double> v;
-};
-
 // Mirror an index into [0, n): ... 1 0 | 0 1 ... n-1 | n-1 n-2 ..., for any distance outside.
 std::size_t mirror(std::ptrdiff_t i, std::ptrdiff_t n) {
     const std::ptrdiff_t period = 2 * n;
@@ -172,14 +172,10 @@ plane correlate(const plane& in, const std::vector<double>& kx, const std::vecto
     return out;
 }
 
-// A contrast sensitivity function a1 sqrt(pi/b1) exp(-pi^2 x^2/b1) + a2 sqrt(pi/b2) exp(...).
-struct csf {
-    double a1, b1, a2, b2;
-};
-constexpr csf k_csf_achromatic{1.0, 0.0047, 0.0, 1e-5};
-constexpr csf k_csf_red_green{1.0, 0.0053, 0.0, 1e-5};
-constexpr csf k_csf_blue_yellow{34.1, 0.04, 13.5, 0.025};
+// The largest b of the three CSFs sets one filter radius for all, as in the reference code.
 constexpr double k_csf_max_b = 0.04;
+
+}  // namespace
 
 // Filters with the CSF sampled on the (2r+1)^2 grid and normalised to sum 1. Each Gaussian term
 // is separable, a * sqrt(pi/b) * k(x) k(y) with k(x) = exp(-pi^2 (x/ppd)^2 / b), so the 2D
@@ -215,6 +211,8 @@ plane filter_csf(const plane& in, const csf& f, double ppd) {
     return out;
 }
 
+namespace {
+
 // Hunt-adjusted CIELAB of the CSF-filtered image (steps 1-3), and its normalised luminance Y/Yn.
 struct prepared {
     std::vector<vec3> lab;
@@ -246,15 +244,12 @@ prepared prepare(const image_rgba8& image, double ppd) {
     return out;
 }
 
+}  // namespace
+
 // The 1D kernels of a feature detector (step 5): `across` is the derivative direction (first
 // derivative of a Gaussian for edges, second for points), positive and negative weights
 // normalised to 1 and -1; `along` is the Gaussian normalised to sum 1. Their outer product is
 // the reference code's 2D kernel.
-struct feature_kernels {
-    std::vector<double> across;
-    std::vector<double> along;
-};
-
 feature_kernels make_feature_kernels(double ppd, bool points) {
     const double sd = 0.5 * k_feature_width_degrees * ppd;
     const auto r = std::ptrdiff_t(std::ceil(3.0 * sd));
@@ -287,14 +282,12 @@ std::vector<double> feature_strength(const plane& luminance, const feature_kerne
     return out;
 }
 
-}  // namespace
-
-double flip_error(const image_rgba8& a, const image_rgba8& b, double pixels_per_degree) {
+std::vector<double> error_map(const image_rgba8& a, const image_rgba8& b, double pixels_per_degree) {
     require_same_size(a, b, "flip_error");
     if (!(pixels_per_degree > 0.0) || !std::isfinite(pixels_per_degree))
         throw std::invalid_argument("flip_error: pixels_per_degree must be positive and finite");
     const std::size_t count = std::size_t(a.width) * a.height;
-    if (count == 0) return 0.0;
+    if (count == 0) return {};
 
     const prepared ref = prepare(a, pixels_per_degree);
     const prepared test = prepare(b, pixels_per_degree);
@@ -309,7 +302,7 @@ double flip_error(const image_rgba8& a, const image_rgba8& b, double pixels_per_
     const std::vector<double> point_a = feature_strength(ref.luminance, points);
     const std::vector<double> point_b = feature_strength(test.luminance, points);
 
-    double sum = 0.0;
+    std::vector<double> map(count);
     for (std::size_t i = 0; i < count; ++i) {
         // Step 4: colour difference, compressed and redistributed into [0, 1].
         const double p = std::pow(hyab(ref.lab[i], test.lab[i]), k_qc);
@@ -318,9 +311,19 @@ double flip_error(const image_rgba8& a, const image_rgba8& b, double pixels_per_
         const double feature_delta = std::max(std::abs(edge_a[i] - edge_b[i]), std::abs(point_a[i] - point_b[i]));
         const double feature = std::pow(feature_delta / std::numbers::sqrt2, k_qf);
         // Step 7.
-        sum += std::pow(color, 1.0 - feature);
+        map[i] = std::pow(color, 1.0 - feature);
     }
-    return sum / double(count);
+    return map;
+}
+
+}  // namespace flip_detail
+
+double flip_error(const image_rgba8& a, const image_rgba8& b, double pixels_per_degree) {
+    const std::vector<double> map = flip_detail::error_map(a, b, pixels_per_degree);
+    if (map.empty()) return 0.0;
+    double sum = 0.0;
+    for (const double error : map) sum += error;
+    return sum / double(map.size());
 }
 
 }  // namespace sylva

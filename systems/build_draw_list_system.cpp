@@ -204,9 +204,9 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
                             const fade_alpha, const point_prefix>();
     auto cells = ctx.query<const octree_cell, const cell_prefix>();
     const std::size_t n = plants.size();
-    const std::size_t chunk = ecs::k_default_chunk;
-    const std::size_t chunks = (n + chunk - 1) / chunk;
-    const std::size_t cell_chunks = (cells.size() + chunk - 1) / chunk;
+    const std::size_t chunk = ctx.chunk();
+    const std::size_t chunks = ecs::chunk_count(n, chunk);
+    const std::size_t cell_chunks = ecs::chunk_count(cells.size(), chunk);
     draw_list& list = ctx.resource_mut<draw_list>();
     const auto transforms = ctx.read<world_transform>().data();
     const auto bounds_of = ctx.read<bounds>().data();

@@ -180,10 +180,9 @@ void cull_tiled(const ecs::system_context<cull_system>& ctx, const cull_view& vi
                          }
                      });
     // Plants the tiles do not cover (spawned outside the tree) are culled flat.
-    ctx.parallel_for(plants.size() - covered, ecs::k_default_chunk,
-                     [&](std::size_t begin, std::size_t end, std::size_t) {
-                         cull_plants(view, plants, covered + begin, covered + end);
-                     });
+    ctx.parallel_for(plants.size() - covered, [&](std::size_t begin, std::size_t end, std::size_t) {
+        cull_plants(view, plants, covered + begin, covered + end);
+    });
 }
 
 }  // namespace
@@ -200,10 +199,9 @@ void cull_system::run(ecs::system_context<cull_system>& ctx) {
         ctx.query<const world_transform, const bounds, const plant_instance, lod_state>();
     const auto& tiles = ctx.read<tile>();
     if (tiles.size() == 0) {
-        ctx.parallel_for(plants.size(), ecs::k_default_chunk,
-                         [&](std::size_t begin, std::size_t end, std::size_t) {
-                             cull_plants(view, plants, begin, end);
-                         });
+        ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+            cull_plants(view, plants, begin, end);
+        });
         return;
     }
     auto& visibility = ctx.write<tile_visibility>();

@@ -39,7 +39,12 @@ bool sphere_in_frustum(const frustum_planes& f, glm::vec3 center, float radius);
 // Conservative box test: false only when the box is wholly outside one plane.
 bool box_in_frustum(const frustum_planes& f, glm::vec3 lo, glm::vec3 hi);
 
-// Leaf tiles per parallel chunk of the plant pass (fixed: results never depend on threads).
+// Tiles per parallel chunk of the plant pass (fixed: results never depend on threads). Not the
+// context's chunk(), which counts plant entities: a leaf tile stands for up to
+// max_plants_per_tile plants, so 8 tiles make a task of the order of a 4096-plant chunk. It can
+// not change a result: each tile writes only its own plants' lod_state and the loop has no
+// per-chunk output to merge. Any scene of more than 16 tiles runs it in three chunks or more
+// (tests/determinism/chunk_boundary_determinism_test.cpp checks that its scene does).
 inline constexpr std::size_t k_cull_tile_chunk = 8;
 
 struct cull_system {

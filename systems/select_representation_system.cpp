@@ -37,7 +37,7 @@ void select_representation_system::run(ecs::system_context<select_representation
     const auto& library = ctx.resource<species_library>().species;
     const lod_policy& policy = ctx.resource<lod_policy>();
     auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
-    ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+    ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                           lod_state& lod, fade_alpha& fade) {
             lod.previous = lod.current;

@@ -99,7 +99,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const double fog = policy.points.fog_weighted ? k_fog_density_per_m : 0.0;
     const primitive_costs& costs = ctx.resource<primitive_costs>();
     auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
-    ctx.parallel_for(plants.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+    ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                           const lod_state& lod, point_prefix& prefix) {
             if (lod.current != representation::points) {
@@ -117,7 +117,7 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const auto lods = ctx.read<lod_state>().data();
     const auto instances = ctx.read<plant_instance>().data();
     auto cells = ctx.query<const octree_cell, cell_prefix>();
-    ctx.parallel_for(cells.size(), ecs::k_default_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+    ctx.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, cell_prefix& out) {
             if (lods[cell.plant].current != representation::points) {
                 out.prefix = {};

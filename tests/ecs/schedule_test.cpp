@@ -5,8 +5,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 #include "ecs/system.h"
 
@@ -265,6 +267,49 @@ TEST(schedule_run, last_timings_has_one_entry_per_system_in_registration_order) 
     EXPECT_EQ(timings[1].first, "slow_cull");
     EXPECT_GE(timings[1].second, 25.0);
     EXPECT_EQ(timings[2].first, "record_helper");
+}
+
+// --- loop records: which parallel loops a system ran, in how many chunks.
+struct chunk_sums {
+    std::vector<int> per_chunk;  // the sum of a_comp values in each chunk of the first loop
+};
+struct two_loops_system {
+    static constexpr std::string_view k_name = "two_loops";
+    static constexpr phase k_phase = phase::cull;
+    using reads = ecs::reads<a_comp>;
+    using writes = ecs::writes<chunk_sums>;
+    static void run(system_context<two_loops_system>& ctx) {
+        const auto& values = ctx.read<a_comp>();
+        auto& sums = ctx.resource_mut<chunk_sums>().per_chunk;
+        sums.assign(chunk_count(values.size(), ctx.chunk()), 0);
+        ctx.parallel_for(values.size(), [&](std::size_t begin, std::size_t end, std::size_t c) {
+            for (std::size_t i = begin; i < end; ++i) sums[c] += values.data()[i].v;
+        });
+        ctx.parallel_for(10, 4, [](std::size_t, std::size_t, std::size_t) {});  // other units
+        if (values.size() > 1000) ctx.parallel_for(1, [](std::size_t, std::size_t, std::size_t) {});
+    }
+};
+
+TEST(schedule_run, loops_are_recorded_with_the_worlds_chunk_and_the_chunks_that_ran) {
+    world w;
+    for (int i = 0; i < 250; ++i) w.emplace<a_comp>(w.create(), {1});
+    w.set_resource(chunk_sums{});
+    EXPECT_EQ(w.chunk_size(), k_default_chunk);
+    EXPECT_THROW(w.set_chunk_size(0), std::invalid_argument);
+    w.set_chunk_size(100);
+    schedule s;
+    s.add<two_loops_system>();
+    executor exec(2);
+    exec.run([&] { s.run(w, exec); });
+    // 250 entities in chunks of 100: 3 chunks; 10 items in chunks of 4: 3; the skipped loop is
+    // absent.
+    const std::vector<loop_record> expected = {{250, 100, 3}, {10, 4, 3}};
+    EXPECT_EQ(s.last_loops("two_loops"), expected);
+    EXPECT_EQ(w.resource<chunk_sums>().per_chunk, (std::vector<int>{100, 100, 50}));
+    // The records are the last run's, not accumulated.
+    exec.run([&] { s.run(w, exec); });
+    EXPECT_EQ(s.last_loops("two_loops"), expected);
+    EXPECT_THROW(s.last_loops("no_such_system"), std::invalid_argument);
 }
 
 }  // namespace
