@@ -106,6 +106,17 @@ TEST(primitive_cost_calibration, refuses_a_timer_that_reports_noise_or_nothing) 
     EXPECT_FALSE(constant.model);
     EXPECT_NE(constant.refusal.find("not above the timer's noise"), std::string::npos)
         << constant.refusal;
+    // A timer that sees the work but whose noise swamps it: each frame N·1 µs·(1 + u), u uniform
+    // in [0, 1), so every marginal time c(1 + 2u₂ − u₁) is positive, but its spread is as large
+    // as its value: the signal-to-noise rule alone refuses it.
+    const render::calibration_result swamped = render::calibrate_primitive_costs(
+        *r, quick([&](const render::calibration_frame& f, const auto& draw) {
+            draw();
+            return 1e-3 * double(f.count) * (1.0 + double(random.uniform(0.0f, 1.0f)));
+        }));
+    EXPECT_FALSE(swamped.model);
+    EXPECT_NE(swamped.refusal.find("not above the timer's noise"), std::string::npos)
+        << swamped.refusal;
 }
 
 TEST(primitive_cost_calibration, measures_this_device) {
