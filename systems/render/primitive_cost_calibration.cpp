@@ -160,13 +160,18 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     calibration_result result;
     // N per plan point: the first count that makes 2N cost min_marginal_ms more than N (after a
     // frame that compiles the point's programs and touches its buffers).
+    // The median of three differences decides, so one stretched frame does not stop the search.
+    auto marginal_ms = [&](const calibration_point& p, std::uint32_t n) {
+        std::vector<double> d;
+        for (int k = 0; k < 3; ++k)
+            d.push_back(time_frame({p.path, p.quality, 2 * n}) - time_frame({p.path, p.quality, n}));
+        std::sort(d.begin(), d.end());
+        return d[1];
+    };
     for (const calibration_point& p : plan) {
         std::uint32_t n = settings.first_count;
         (void)time_frame({p.path, p.quality, 2 * n});
-        while (2 * n < settings.max_count &&
-               time_frame({p.path, p.quality, 2 * n}) - time_frame({p.path, p.quality, n}) <
-                   settings.min_marginal_ms)
-            n *= 2;
+        while (2 * n < settings.max_count && marginal_ms(p, n) < settings.min_marginal_ms) n *= 2;
         result.counts.push_back(std::min(n, settings.max_count / 2));
     }
     std::vector<std::vector<double>> marginal_us(plan.size());

@@ -52,7 +52,7 @@ struct calibration_settings {
     float splat_factor = 1.3f;          // c_p the splats are sized with
     std::uint32_t first_count = 16000;  // N's first try per plan point
     std::uint32_t max_count = 256000;   // 2N never exceeds it (the meshes hold this many)
-    double min_marginal_ms = 25.0;      // N doubles until 2N costs this much more than N
+    double min_marginal_ms = 40.0;      // N doubles until 2N costs this much more than N
     // Repetitions of every plan point: at least the first, then more until every point's
     // standard error is below target_relative_error of its cost, or the most are done.
     int min_repetitions = 7;
