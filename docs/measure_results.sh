@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Measures the figures of docs/results/: one `sylva bench` per scenario, then
+# docs/generate_results.py turns the outputs into pages. Run it on a quiet machine; it takes
+# hours (the supersampled references of landscape alone take half an hour on two cores).
+#
+#   docs/measure_results.sh [SCENARIO ...]      default: default forest landscape meadow time_of_day
+#
+# Environment: ROUNDS (timing rounds, default 5), OUT (bench outputs, default out/results).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$here"
+rounds="${ROUNDS:-5}"
+out="${OUT:-out/results}"
+scenarios=("$@")
+[ ${#scenarios[@]} -eq 0 ] && scenarios=(default forest landscape meadow time_of_day)
+
+# What every scenario measures: each lighting family's brute force and engine baseline sweep,
+# and the sweeps of each representation family against them.
+normal="reference,brute_force,crossed_billboard_only,baseline_25m,baseline,baseline_100m"
+normal+=",mesh_lod,mesh_lod_x0.25,mesh_lod_x0.5,mesh_lod_x2,billboard_clouds,billboard_clouds_pre_lit"
+normal+=",points_lines,points_lines_d2,points_lines_d2.5,points_lines_d3,points_lines_d4"
+sh="brute_force_sh,crossed_billboard_only_sh,baseline_25m_sh,baseline_sh,baseline_100m_sh"
+sh+=",mesh_lod_sh,billboard_clouds_sh,points_lines_sh,points_lines_d2_sh"
+
+frames_of() {  # the supersampled reference costs most where the plants are many
+  case "$1" in
+    landscape) echo 6 ;;
+    forest | meadow) echo 12 ;;
+    *) echo 24 ;;
+  esac
+}
+
+./sylva build >&2
+runs=()
+for s in "${scenarios[@]}"; do
+  dir="$out/$s"
+  mkdir -p "$dir"
+  cmd="./sylva bench $s --frames $(frames_of "$s") --timing-rounds $rounds --only $normal,$sh --out $dir"
+  echo "[measure] $cmd" >&2
+  $cmd
+  commit="$(git rev-parse HEAD)"
+  dirty=false
+  [ -n "$(git status --porcelain --untracked-files=no)" ] && dirty=true
+  printf '{"date": "%s", "commit": "%s", "dirty": %s, "command": "%s"}\n' \
+    "$(date -u +%Y-%m-%d)" "$commit" "$dirty" "$cmd" > "$dir/meta.json"
+  runs+=("$dir")
+done
+python3 docs/generate_results.py "${runs[@]}"
