@@ -121,34 +121,30 @@ TEST(representation_golden, lines) {
     testing::expect_matches_golden(frame.image, "meadow_lines.png");
 }
 
-TEST(representation_golden, billboard_clouds_normal_mapped) {
-    SYLVA_REQUIRE_GL();
-    const auto frame = testing::render_frame(
-        scene("grove.json"), 0, every_plant_as(representation::billboard_cloud, "normal_mapped"));
+// Every grove plant as its billboard cloud, lit one way: only clouds are drawn, and every
+// species is lit as asked.
+void expect_cloud_golden(const char* lighting, lighting_variant variant, const char* golden) {
+    const auto frame = testing::render_frame(scene("grove.json"), 0,
+                                             every_plant_as(representation::billboard_cloud, lighting));
     EXPECT_EQ(drawn(frame.record, representation::billboard_cloud), k_grove_plants);
     EXPECT_EQ(drawn_total(frame.record), k_grove_plants);
-    expect_lit(frame, lighting_variant::normal_mapped);
-    testing::expect_matches_golden(frame.image, "grove_clouds_normal_mapped.png");
+    expect_lit(frame, variant);
+    testing::expect_matches_golden(frame.image, golden);
+}
+
+TEST(representation_golden, billboard_clouds_normal_mapped) {
+    SYLVA_REQUIRE_GL();
+    expect_cloud_golden("normal_mapped", lighting_variant::normal_mapped, "grove_clouds_normal_mapped.png");
 }
 
 TEST(representation_golden, billboard_clouds_pre_lit) {
     SYLVA_REQUIRE_GL();
-    const auto frame = testing::render_frame(
-        scene("grove.json"), 0, every_plant_as(representation::billboard_cloud, "pre_lit"));
-    EXPECT_EQ(drawn(frame.record, representation::billboard_cloud), k_grove_plants);
-    EXPECT_EQ(drawn_total(frame.record), k_grove_plants);
-    expect_lit(frame, lighting_variant::pre_lit);
-    testing::expect_matches_golden(frame.image, "grove_clouds_pre_lit.png");
+    expect_cloud_golden("pre_lit", lighting_variant::pre_lit, "grove_clouds_pre_lit.png");
 }
 
 TEST(representation_golden, billboard_clouds_sh) {
     SYLVA_REQUIRE_GL();
-    const auto frame = testing::render_frame(scene("grove.json"), 0,
-                                             every_plant_as(representation::billboard_cloud, "sh"));
-    EXPECT_EQ(drawn(frame.record, representation::billboard_cloud), k_grove_plants);
-    EXPECT_EQ(drawn_total(frame.record), k_grove_plants);
-    expect_lit(frame, lighting_variant::sh);
-    testing::expect_matches_golden(frame.image, "grove_clouds_sh.png");
+    expect_cloud_golden("sh", lighting_variant::sh, "grove_clouds_sh.png");
 }
 
 // Behrendt 2005 §2.3's sort-free fades, as the bench's billboard_clouds configuration draws
