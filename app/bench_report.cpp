@@ -15,7 +15,7 @@
 #include <system_error>
 #include <tuple>
 
-#include "app/atomic_file.h"
+#include "io/atomic_file.h"
 #include "app/bench_format.h"
 
 namespace sylva {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "app/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace sylva {
 
