@@ -1,6 +1,8 @@
 #include "app/scenario_player.h"
 
 #include <chrono>
+#include <cmath>
+#include <span>
 #include <thread>
 
 #include "components/camera.h"
@@ -81,6 +83,18 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
     return policy;
 }
 
+// A cache entry of primitive costs, refused unless it holds exactly three positive finite
+// costs: a damaged entry would otherwise fail, or skew, every later play.
+primitive_costs read_primitive_costs(std::span<const std::byte> bytes) {
+    binary_reader in(bytes);
+    const auto costs = in.pod<primitive_costs>();
+    if (!in.at_end()) throw std::runtime_error("primitive costs entry has trailing bytes");
+    for (const double cost : {costs.triangle, costs.point, costs.line})
+        if (!(std::isfinite(cost) && cost > 0.0))
+            throw std::runtime_error("primitive costs entry holds a cost of " + std::to_string(cost));
+    return costs;
+}
+
 // The device's primitive costs for this renderer and d', from the cache or measured now.
 primitive_costs device_costs(render::renderer& r, const render::gl_context& context, const lod_policy& policy,
                              bake_cache& cache) {
@@ -102,9 +116,7 @@ primitive_costs device_costs(render::renderer& r, const render::gl_context& cont
         out.pod(result.costs);
         return out.bytes();
     };
-    const std::vector<std::byte> bytes = cache.get_or_bake("primitive_costs", key, measure);
-    binary_reader in(bytes);
-    return in.pod<primitive_costs>();
+    return read_or_bake(&cache, "primitive_costs", key, measure, read_primitive_costs);
 }
 
 }  // namespace
