@@ -306,7 +306,8 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                 {{"samples_per_pixel", report.reference_samples_per_pixel},
                                  {"frame_ms_median", number(report.reference_frame_ms_median)}}},
                                {"primitive_costs", report.primitive_costs},
-                               {"configurations", configurations}};
+                               {"configurations", configurations},
+                               {"partial", report.partial}};
     write_atomically(path, root.dump(2) + "\n");
 }
 
@@ -358,6 +359,8 @@ void write_bench_summary_md(const std::filesystem::path& path, const bench_repor
           std::to_string(report.reference_samples_per_pixel) + " spp reference (" +
           ms_text(report.reference_frame_ms_median) + " ms/frame); " + report.machine + "; " +
           report.gl_renderer + "; " + std::to_string(report.threads) + " threads.\n\n";
+    if (report.partial)
+        md += "**Partial:** the bench was interrupted; configurations may be missing or cut short.\n\n";
     md += table_md(report, on_front) + "\n";
     md +=
         "Errors are means over the frames against the reference; ★ marks the Pareto front of "

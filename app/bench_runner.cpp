@@ -120,6 +120,8 @@ std::map<std::string, double> primitives_of(const frame_record& r) {
     return p;
 }
 
+bool stop_requested(const bench_settings& settings) { return settings.stop && settings.stop(); }
+
 void save_frame(const image_rgba8& image, const std::filesystem::path& dir, std::uint32_t frame) {
     std::filesystem::create_directories(dir);
     char name[32];
@@ -152,6 +154,7 @@ reference_frames render_reference(const scenario& s, render::gl_context& context
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         ref.masks.push_back(plant_mask(ids));
         ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
+        if (stop_requested(settings)) break;
     }
     return ref;
 }
@@ -177,6 +180,7 @@ std::vector<double> time_configuration(const scenario& s, const bench_configurat
         frame_ms.push_back(player.step().frame_ms);
         (void)player.capture();
         (void)player.capture_plant_ids(spec.samples);
+        if (stop_requested(settings)) break;
     }
     return frame_ms;
 }
@@ -275,7 +279,9 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
         }
         previous_image = image;
         previous_colors = std::move(colors);
+        if (stop_requested(settings)) break;
     }
+    out.frames = std::uint32_t(frame_ms.size());
     out.frame_ms_median = median_of(frame_ms);
     out.frame_ms_min = frame_ms.empty() ? 0.0 : *std::min_element(frame_ms.begin(), frame_ms.end());
     out.frame_ms_max = frame_ms.empty() ? 0.0 : *std::max_element(frame_ms.begin(), frame_ms.end());
@@ -456,6 +462,7 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.threads = settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 
     const reference_frames ref = render_reference(s, context, cache, settings, selected.size());
+    report.partial = stop_requested(settings);
     report.reference_frame_ms_median = median_of(ref.frame_ms);
     // A configuration that lights every species another way is compared with a reference lit
     // that way too (full geometry, 3x3 samples), so its errors are its representation's alone.
@@ -473,7 +480,7 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
         });
     std::map<std::string, reference_frames> lit_references;
     std::vector<std::vector<double>> round0_frame_ms(selected.size());
-    for (std::size_t i = 0; i < selected.size(); ++i) {
+    for (std::size_t i = 0; i < selected.size() && !report.partial; ++i) {
         const std::string lighting = selected[i]->options.lighting.empty()
                                          ? std::string()
                                          : reference_lighting(selected[i]->options.lighting);
@@ -485,6 +492,7 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
         report.configurations.push_back(
             run_configuration(s, *selected[i], own ? ref : lit_references.at(lighting), context,
                               cache, settings, int(i), selected.size(), round0_frame_ms[i]));
+        report.partial = stop_requested(settings);
     }
     // Later timing rounds visit the configurations forwards and backwards in turn, so drift
     // over the run weighs on each about equally. The reference's replay is a check of the
@@ -494,12 +502,13 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     for (std::uint32_t round = 1; round < report.timing_rounds; ++round)
         for (std::size_t n = 0; n < selected.size(); ++n) {
             const std::size_t i = round % 2 ? selected.size() - 1 - n : n;
-            if (selected[i]->family == "reference") continue;
+            if (selected[i]->family == "reference" || i >= report.configurations.size()) continue;
+            if ((report.partial = report.partial || stop_requested(settings))) break;
             later_rounds[i].push_back(time_configuration(
                 s, *selected[i], context, cache, settings,
                 {int(i), selected.size(), round, report.timing_rounds, 0, s.frames}));
         }
-    for (std::size_t i = 0; i < selected.size(); ++i)
+    for (std::size_t i = 0; i < report.configurations.size(); ++i)
         add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
     // Ratios to the baseline round by round, for configurations timed in every round (not the
     // reference: its one round says nothing about drift).
