@@ -22,7 +22,8 @@ void scenario_loader(const std::uint8_t* data, std::size_t size) {
     }
 }
 
-void gltf_import(const std::uint8_t* data, std::size_t size, const std::filesystem::path& folder) {
+void gltf_import(const std::uint8_t* data, std::size_t size, const std::filesystem::path& folder,
+                 bool whole_plant) {
     spdlog::set_level(spdlog::level::off);  // warnings about the input are expected by the thousand
     gltf_source source;
     source.binary = size >= 4 && std::string_view(reinterpret_cast<const char*>(data), 4) == "glTF";
@@ -30,7 +31,8 @@ void gltf_import(const std::uint8_t* data, std::size_t size, const std::filesyst
     source.folder = folder;
     source.bytes.assign(reinterpret_cast<const char*>(data), size);
     try {
-        import_gltf_source(source, k_fuzz_texture_size);
+        import_gltf_source(source, k_fuzz_texture_size,
+                           whole_plant ? gltf_import_stage::plant : gltf_import_stage::read);
     } catch (const std::runtime_error&) {
     }
 }

@@ -4,6 +4,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "tests/app/hostile_inputs.h"
 #include "tests/models/gltf_fixtures.h"
 
 int main(int argc, char** argv) {
@@ -35,6 +36,15 @@ int main(int argc, char** argv) {
         t::write_only_zero_area_triangles(dir);
         t::write_draco_required(dir);
         t::write_no_meshes(dir);
+        // Small seeds: one triangle as .glb, as .gltf with an external buffer and with a data:
+        // URI, so short mutations reach every stage of the reader.
+        t::write_file(dir / "triangle.glb", t::make_glb(t::triangle_json(), t::make_triangle_buffer().bytes));
+        const auto bin = t::make_triangle_buffer().bytes;
+        t::write_file(dir / "triangle.bin", std::string(bin.begin(), bin.end()));
+        t::write_file(dir / "triangle.gltf", t::triangle_json("triangle.bin"));
+        t::write_file(dir / "triangle_data_uri.gltf",
+                      t::triangle_json("data:application/octet-stream;base64,AAAAAAEAAAACAAAAAAAAAAAAAAAAAAAAAACAPwAA"
+                                       "AAAAAAAAAAAAAAAAgD8AAAAA"));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "write_gltf_seeds: %s\n", e.what());
         return 1;

@@ -67,6 +67,7 @@ namespace {
 
 constexpr std::array<char, 8> k_entry_magic = {'S', 'Y', 'L', 'V', 'A', 'C', 'E', '1'};
 constexpr std::size_t k_entry_header_bytes = 24;
+constexpr std::string_view k_older_format = "not a Sylva cache entry of this version (no header)";
 // No bake comes near this; a larger "entry" is something else in the cache's place.
 constexpr std::uint64_t k_max_entry_bytes = 4ull << 30;
 
@@ -81,7 +82,7 @@ std::uint64_t read_u64(const std::string& bytes, std::size_t at) {
 std::optional<std::vector<std::byte>> payload_of(const std::string& bytes, std::string& problem) {
     if (bytes.size() < k_entry_header_bytes ||
         std::memcmp(bytes.data(), k_entry_magic.data(), k_entry_magic.size()) != 0) {
-        problem = "not a Sylva cache entry of this version (no header)";
+        problem = k_older_format;
         return std::nullopt;
     }
     const std::uint64_t size = read_u64(bytes, 8);
@@ -110,8 +111,11 @@ bool first_report(const std::filesystem::path& path) {
 }  // namespace
 
 void bake_cache::remove_damaged(const std::filesystem::path& path, const std::string& reason) {
+    // An entry from an older Sylva is expected after an upgrade; a damaged one is not.
+    const bool older_format = reason.starts_with(k_older_format);
     if (first_report(path))
-        spdlog::warn("bake cache: {}: {}; rebuilding it", path.string(), reason);
+        spdlog::log(older_format ? spdlog::level::info : spdlog::level::warn,
+                    "bake cache: {}: {}; rebuilding it", path.string(), reason);
     std::error_code ec;
     std::filesystem::remove_all(path, ec);  // a directory in an entry's place goes too
 }

@@ -437,7 +437,8 @@ gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture
     return import_gltf_source(read_gltf_source(file), texture_size);
 }
 
-gltf_import_result import_gltf_source(const gltf_source& source, std::uint32_t texture_size) {
+gltf_import_result import_gltf_source(const gltf_source& source, std::uint32_t texture_size,
+                                      gltf_import_stage stage) {
     import_context c;
     c.file = source.name;
     tinygltf::Model model;
@@ -505,6 +506,7 @@ gltf_import_result import_gltf_source(const gltf_source& source, std::uint32_t t
     result.hierarchy_depth = state.max_depth;
     // A branch structure needs at least trunk -> branch -> twig as nested mesh nodes.
     result.model.has_hierarchy = state.max_depth >= 3;
+    if (stage == gltf_import_stage::read) return result;
     build_gltf_plant(materials, state.primitives, texture_size, result);
     result.model.name = fs::path(source.name).stem().string();
     result.model.source_unit_scale = unit_scale;
