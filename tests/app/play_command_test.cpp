@@ -133,3 +133,51 @@ TEST(play_command, exr_frames_are_written_through_openimageio) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// FNV-1a 64, as models/bake_cache.h checksums entries (hand-written here so the test does not
+// trust the code under test to make its fixture).
+std::uint64_t fnv1a_64(const std::string& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : bytes) h = (h ^ std::uint8_t(c)) * 0x100000001b3ULL;
+    return h;
+}
+
+// A cache entry whose checksum is right but whose payload is not three positive costs.
+std::string entry_holding(const std::string& payload) {
+    std::string entry = "SYLVACE1";
+    const std::uint64_t size = payload.size(), sum = fnv1a_64(payload);
+    entry.append(reinterpret_cast<const char*>(&size), 8);
+    entry.append(reinterpret_cast<const char*>(&sum), 8);
+    return entry + payload;
+}
+
+// Issue 19: a damaged primitive_costs entry made every later play fail. It is now reported and
+// measured again, whether the damage is a truncation or costs that make no sense.
+TEST(play_command, a_damaged_primitive_costs_entry_is_rebuilt_not_fatal) {
+    const fs::path dir = temp_dir("costs");
+    const std::string play = "SYLVA_CACHE_DIR=" + (dir / "cache").string() + " " + test::sylva_binary() +
+                             " play tiny --headless --frames 1 --width 32 --height 18 --representation "
+                             "points_lines --out " + (dir / "out").string();
+    ASSERT_EQ(test::run_command(play).exit_code, 0);
+    const fs::path costs = dir / "cache" / "primitive_costs";
+    ASSERT_TRUE(fs::exists(costs)) << "points_lines must have measured and cached its costs";
+    const double nonsense[3] = {-1.0, 0.0, 1.0};
+    const std::string bad_costs(reinterpret_cast<const char*>(nonsense), sizeof(nonsense));
+    for (const std::string& damage : {std::string("trunc"), entry_holding(bad_costs)}) {
+        for (const auto& entry : fs::directory_iterator(costs)) std::ofstream(entry.path(), std::ios::binary) << damage;
+        const result r = test::run_command(play);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_NE(r.output.find("primitive_costs"), std::string::npos) << "the damage must be reported:\n" << r.output;
+        EXPECT_NE(r.output.find("rebuilding it"), std::string::npos) << r.output;
+        const result again = test::run_command(play);
+        EXPECT_EQ(again.exit_code, 0) << again.output;
+        EXPECT_EQ(again.output.find("rebuilding"), std::string::npos) << "rebuilt once:\n" << again.output;
+    }
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sylva
