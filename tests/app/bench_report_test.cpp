@@ -166,8 +166,9 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
     EXPECT_EQ(keys_of(j),
               (std::set<std::string>{"scenario", "source", "machine", "gl_renderer", "threads",
                                      "width", "height", "frames", "timing_rounds", "reference",
-                                     "primitive_costs", "configurations"}));
+                                     "primitive_costs", "configurations", "partial"}));
     EXPECT_EQ(j["timing_rounds"], 1);
+    EXPECT_EQ(j["partial"], false);
     EXPECT_EQ(j["scenario"], "meadow <dense>");
     EXPECT_EQ(j["reference"],
               (nlohmann::json{{"samples_per_pixel", 9}, {"frame_ms_median", 500.0}}));
