@@ -191,6 +191,7 @@ std::vector<std::byte> bake_cache::get_or_bake(std::string_view kind, std::uint6
 
 void binary_reader::take(void* out, std::size_t n) {
     if (n > m_bytes.size() - m_offset) throw_truncated();
+    if (n == 0) return;  // an empty array's data() may be null: memcpy(nullptr, ..., 0) is UB
     std::memcpy(out, m_bytes.data() + m_offset, n);
     m_offset += n;
 }
