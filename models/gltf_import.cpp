@@ -15,6 +15,7 @@
 #include <glm/mat4x4.hpp>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include "models/gltf_plant_builder.h"
 #include "models/gltf_container.h"
@@ -286,6 +287,14 @@ gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Pr
         normals = read_floats(c, attribute("NORMAL"), 3, part + " NORMAL");
     if (attribute("TEXCOORD_0") >= 0)
         uvs = read_floats(c, attribute("TEXCOORD_0"), 2, part + " TEXCOORD_0");
+    // The spec gives every attribute of a primitive the same count; a shorter one would be read
+    // past its end (found by the glTF fuzz target, tests/fuzz/regressions/gltf_import/).
+    for (const auto& [name, values, components] :
+         {std::tuple<const char*, const std::vector<float>&, std::size_t>{"NORMAL", normals, 3},
+          {"TEXCOORD_0", uvs, 2}})
+        if (!values.empty() && values.size() / components != n)
+            c.fail(part, std::string(name) + " has " + std::to_string(values.size() / components) +
+                             " elements but POSITION has " + std::to_string(n));
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(transform));
     out.vertices.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -267,6 +267,18 @@ TEST_F(gltf_import, counts_are_checked_against_the_buffer_before_allocating) {
     expect_error(m_dir / "liar.glb", {"liar.glb", "750000000 elements", "reads past the end of its buffer"});
 }
 
+// Found by the glTF fuzz target: a NORMAL accessor shorter than POSITION was read past its end
+// (a heap overflow under ASan, garbage normals without it, on main too).
+TEST_F(gltf_import, attributes_shorter_than_position_are_refused) {
+    fs::create_directories(m_dir);
+    std::string json = test::triangle_json();
+    json.replace(json.find(R"("attributes":{"POSITION":1})"), 26, R"("attributes":{"POSITION":1,"NORMAL":2})");
+    json.replace(json.rfind("]}"), 2,
+                 R"(,{"bufferView":1,"componentType":5126,"count":2,"type":"VEC3"}]})");
+    test::write_file(m_dir / "short_normals.glb", test::make_glb(json, test::make_triangle_buffer().bytes));
+    expect_error(m_dir / "short_normals.glb", {"short_normals.glb", "NORMAL has 2 elements but POSITION has 3"});
+}
+
 TEST_F(gltf_import, json_nested_beyond_256_levels_never_reaches_tinygltf) {
     fs::create_directories(m_dir);
     const std::string extras = ",\"extras\":" + std::string(100000, '[') + std::string(100000, ']');
