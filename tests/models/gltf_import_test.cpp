@@ -272,7 +272,8 @@ TEST_F(gltf_import, counts_are_checked_against_the_buffer_before_allocating) {
 TEST_F(gltf_import, attributes_shorter_than_position_are_refused) {
     fs::create_directories(m_dir);
     std::string json = test::triangle_json();
-    json.replace(json.find(R"("attributes":{"POSITION":1})"), 26, R"("attributes":{"POSITION":1,"NORMAL":2})");
+    const std::string position_only = R"("attributes":{"POSITION":1})";
+    json.replace(json.find(position_only), position_only.size(), R"("attributes":{"POSITION":1,"NORMAL":2})");
     json.replace(json.rfind("]}"), 2,
                  R"(,{"bufferView":1,"componentType":5126,"count":2,"type":"VEC3"}]})");
     test::write_file(m_dir / "short_normals.glb", test::make_glb(json, test::make_triangle_buffer().bytes));
