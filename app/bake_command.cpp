@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "app/scenario_options.h"
+#include "io/input_file.h"
 #include "models/bake_cache.h"
 #include "models/plant_model_io.h"
 #include "scenarios/scenario_loader.h"
@@ -87,6 +88,10 @@ int bake(const bake_options& o) {
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             progress(i + 1, species.size(), species[i].name + (cached ? " (cached)" : " (baked, " + std::to_string(int(ms)) + " ms)"));
         }
+    } catch (const input_error& e) {  // a model file that cannot be used: bad input
+        std::fprintf(stderr, "\n");
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "\n");
         spdlog::error("{}", e.what());

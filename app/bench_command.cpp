@@ -13,7 +13,9 @@
 #include "app/bench_runner.h"
 #include "app/bench_verdict.h"
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "app/scenario_options.h"
+#include "scenarios/scenario_loader.h"
 
 namespace sylva {
 namespace {
@@ -111,6 +113,7 @@ int bench(const bench_options& o) {
         spdlog::error("cannot create the output folder {}: {}", o.out_dir, ec.message());
         return k_exit_bad_input;
     }
+    const interrupt_guard interrupts;
     try {
         render::context_options context_options;
         context_options.width = 64;  // every player renders into its own framebuffer
@@ -126,6 +129,7 @@ int bench(const bench_options& o) {
         if (o.save_frames) settings.frames_dir = std::filesystem::path(o.out_dir) / "frames";
         settings.timing_rounds = o.timing_rounds;
         settings.progress = [&](const bench_progress& p) { print_progress(specs, only, p); };
+        settings.stop = interrupt_requested;
         const auto start = std::chrono::steady_clock::now();
         const bench_report report = run_bench(s, specs, *context, &cache, settings);
         const std::filesystem::path dir(o.out_dir);
@@ -133,10 +137,18 @@ int bench(const bench_options& o) {
         write_bench_csv(dir / "bench.csv", report);
         write_bench_plot_svg(dir / "bench.svg", report);
         write_bench_summary_md(dir / "summary.md", report);
+        if (report.partial) {
+            spdlog::warn("interrupted by {}: wrote what was measured ({} configurations) to {}, marked partial",
+                         interrupt_signal_name(), report.configurations.size(), o.out_dir);
+            return interrupt_exit_code();
+        }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         print_results(report);
         spdlog::info("wrote bench.json, bench.csv, bench.svg and summary.md to {} in {:.0f} s", o.out_dir, seconds);
     } catch (const std::invalid_argument& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
+    } catch (const scenario_error& e) {  // a file the scenario names cannot be used
         spdlog::error("{}", e.what());
         return k_exit_bad_input;
     } catch (const std::exception& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the writers of `sylva bench`'s outputs (app/bench_report.cpp: JSON, CSV, summary;
 // app/bench_plot.cpp: the SVG plot): locale-independent number formatting, atomic file writes
-// and the Pareto flags of a report. Files are written with app/atomic_file.h.
+// and the Pareto flags of a report. Files are written with io/atomic_file.h.
 #include <filesystem>
 #include <map>
 #include <string>

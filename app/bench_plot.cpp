@@ -9,7 +9,7 @@
 #include <string_view>
 #include <tuple>
 
-#include "app/atomic_file.h"
+#include "io/atomic_file.h"
 #include "app/bench_format.h"
 #include "app/bench_report.h"
 

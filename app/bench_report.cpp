@@ -15,8 +15,8 @@
 #include <system_error>
 #include <tuple>
 
-#include "app/atomic_file.h"
 #include "app/bench_catalogue.h"
+#include "io/atomic_file.h"
 #include "app/bench_format.h"
 #include "app/bench_verdict.h"
 
@@ -355,7 +355,8 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"lighting_families", families},
                                {"primitive_costs", report.primitive_costs},
                                {"configurations", configurations},
-                               {"verdicts", verdicts_json(report)}};
+                               {"verdicts", verdicts_json(report)},
+                               {"partial", report.partial}};
     write_atomically(path, root.dump(2) + "\n");
 }
 
@@ -408,6 +409,8 @@ void write_bench_summary_md(const std::filesystem::path& path, const bench_repor
           " spp full-geometry reference lit as it is, and compared only with the configurations of its "
           "lighting family (same reference): each family has its own table, Pareto front, brute force, "
           "baseline and verdict.\n\n";
+    if (report.partial)
+        md += "**Partial:** the bench was interrupted; configurations may be missing or cut short.\n\n";
     if (const std::string rounds = rounds_sentence(report, ""); !rounds.empty()) md += rounds + "\n\n";
     for (const bench_lighting_family& family : report.lighting_families) {
         md += "## Lighting: " + family.name + "\n\nReference: full geometry, " + family.description + " (" +

@@ -91,6 +91,9 @@ struct bench_report {
     // used the device's own (bench_configuration::primitive_costs).
     std::map<std::string, double> primitive_costs;
     std::vector<bench_configuration> configurations;
+    // Stopped early (bench_settings::stop, an interrupt): configurations may be missing or have
+    // fewer frames than `frames`.
+    bool partial = false;
 };
 
 // Indices of the configurations on the Pareto front of (median frame ms, error), both

@@ -133,6 +133,8 @@ std::map<std::string, double> primitives_of(const frame_record& r) {
     return p;
 }
 
+bool stop_requested(const bench_settings& settings) { return settings.stop && settings.stop(); }
+
 void save_frame(const image_rgba8& image, const std::filesystem::path& dir, std::uint32_t frame) {
     std::filesystem::create_directories(dir);
     char name[32];
@@ -161,6 +163,7 @@ reference_frames render_reference(const scenario& s, const std::string& family, 
         const std::vector<std::uint32_t> ids = player.capture_plant_ids(spec.samples);
         ref.masks.push_back(plant_mask(ids));
         ref.colors.push_back(mean_plant_colors(ref.images.back(), ids));
+        if (stop_requested(settings)) break;
     }
     return ref;
 }
@@ -181,6 +184,7 @@ std::vector<double> time_configuration(const scenario& s, const bench_configurat
         frame_ms.push_back(player.step().frame_ms);
         (void)player.capture();
         (void)player.capture_plant_ids(spec.samples);
+        if (stop_requested(settings)) break;
     }
     return frame_ms;
 }
@@ -286,7 +290,9 @@ bench_configuration run_configuration(const scenario& s, const bench_configurati
             ++errors.popping_frames;
         }
         previous_image = image;
+        if (stop_requested(settings)) break;
     }
+    out.frames = std::uint32_t(frame_ms.size());
     out.frame_ms_median = median_of(frame_ms);
     out.frame_ms_min = frame_ms.empty() ? 0.0 : *std::min_element(frame_ms.begin(), frame_ms.end());
     out.frame_ms_max = frame_ms.empty() ? 0.0 : *std::max_element(frame_ms.begin(), frame_ms.end());
@@ -354,18 +360,21 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.threads = settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 
     // Round 0: each lighting family's reference when its first configuration needs it, then
-    // the configuration's errors against it.
+    // the configuration's errors against it. An interrupt (bench_settings::stop) ends the bench
+    // after the frame in progress: what was measured is kept, and the report is partial.
     std::map<std::string, reference_frames> references;
     std::vector<std::vector<double>> round0_frame_ms(selected.size());
-    for (std::size_t i = 0; i < selected.size(); ++i) {
+    for (std::size_t i = 0; i < selected.size() && !report.partial; ++i) {
         const std::string family = lighting_family(s, selected[i]->options.lighting);
         if (!references.contains(family)) {
             references.emplace(family, render_reference(s, family, context, cache, settings, selected.size()));
             report.lighting_families.push_back(
                 {family, family_description(family), median_of(references.at(family).frame_ms)});
+            if ((report.partial = stop_requested(settings))) break;  // a reference cut short
         }
         report.configurations.push_back(run_configuration(s, *selected[i], references.at(family), context, cache,
                                                           settings, int(i), selected.size(), round0_frame_ms[i]));
+        report.partial = stop_requested(settings);
     }
     // Later timing rounds visit the configurations forwards and backwards in turn, so drift
     // over the run weighs on each about equally. The reference's replay is a check of the
@@ -375,12 +384,13 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     for (std::uint32_t round = 1; round < report.timing_rounds; ++round)
         for (std::size_t n = 0; n < selected.size(); ++n) {
             const std::size_t i = round % 2 ? selected.size() - 1 - n : n;
-            if (selected[i]->family == k_family_reference) continue;
+            if (selected[i]->family == k_family_reference || i >= report.configurations.size()) continue;
+            if ((report.partial = report.partial || stop_requested(settings))) break;
             later_rounds[i].push_back(time_configuration(
                 s, *selected[i], context, cache, settings,
                 {int(i), selected.size(), round, report.timing_rounds, 0, s.frames, {}}));
         }
-    for (std::size_t i = 0; i < selected.size(); ++i)
+    for (std::size_t i = 0; i < report.configurations.size(); ++i)
         add_timing_rounds(report.configurations[i], std::move(round0_frame_ms[i]), later_rounds[i]);
     add_baseline_ratios(report);
     if (settings.costs)

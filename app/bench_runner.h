@@ -59,6 +59,9 @@ struct bench_settings {
     std::uint32_t timing_rounds = 1;
     // Called before every frame for progress output.
     std::function<void(const bench_progress&)> progress;
+    // Asked after every frame; true ends the bench there (an interrupt): the report keeps what
+    // was measured, with the configuration in progress cut at its last frame, and is partial.
+    std::function<bool()> stop;
     // Fixed primitive costs for every point/line configuration (tests: a measurement differs
     // run to run). Unset: each configuration selects with the device's costs for its own d'
     // (scenario_player: from the cache, measured on first use), as `sylva play` with the same

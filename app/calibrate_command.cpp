@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "app/atomic_file.h"
+#include "io/atomic_file.h"
 #include "app/commands.h"
 #include "app/device_costs.h"
 #include "scenarios/scenario_loader.h"

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <set>
@@ -28,6 +29,8 @@ std::vector<std::byte> encode(const device_calibration& c) {
     return out.bytes();
 }
 
+// A damaged entry must not skew every later play: exactly a status and what it carries, and a
+// model's lines finite and non-negative (fit_cost_model never stores anything else).
 device_calibration decode(const std::vector<std::byte>& bytes) {
     binary_reader in(bytes);
     device_calibration c;
@@ -35,11 +38,17 @@ device_calibration decode(const std::vector<std::byte>& bytes) {
     if (status == k_model) {
         c.model.emplace();
         c.model->paths = in.pod<decltype(primitive_cost_model::paths)>();
+        for (const cost_line& line : c.model->paths)
+            if (!(std::isfinite(line.a_us) && std::isfinite(line.b_us_per_px) && line.a_us >= 0.0 &&
+                  line.b_us_per_px >= 0.0))
+                throw std::runtime_error("primitive cost model holds a cost line of " + std::to_string(line.a_us) +
+                                         " + " + std::to_string(line.b_us_per_px) + " x pixels");
     } else if (status == k_refused) {
         c.refusal = in.text();
     } else {
         throw std::runtime_error("primitive cost model: unknown status " + std::to_string(status));
     }
+    if (!in.at_end()) throw std::runtime_error("primitive cost model entry has trailing bytes");
     return c;
 }
 
@@ -82,9 +91,8 @@ device_calibration device_cost_model(render::renderer& r, const render::gl_conte
                 device_calibration c = decode(*bytes);
                 if (!c.model) warn_once(device, c.refusal);
                 return c;
-            } catch (const std::exception& e) {
-                spdlog::warn("bake cache entry {} is damaged ({}); calibrating again",
-                             cache.path_of("primitive_cost_model", key).string(), e.what());
+            } catch (const std::runtime_error& e) {
+                cache.discard("primitive_cost_model", key, e.what());  // reported once; calibrated again
             }
         }
     device_calibration c;
@@ -96,7 +104,7 @@ device_calibration device_cost_model(render::renderer& r, const render::gl_conte
     c.model = c.measurement->model;
     c.refusal = c.measurement->refusal;
     if (!c.model) warn_once(device, c.refusal);
-    cache.store("primitive_cost_model", key, encode(c));
+    cache.store_or_warn("primitive_cost_model", key, encode(c));
     return c;
 }
 

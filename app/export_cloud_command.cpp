@@ -82,9 +82,15 @@ int export_cloud(const export_cloud_options& o) {
         spdlog::error("export-cloud: {}: file not found", o.model);
         return k_exit_bad_input;
     }
+    plant_model model;
     try {
-        const plant_model model = is_gltf(o.model) ? import_plant_model(o.model, o.texture_size)
-                                                   : generate_plant_model(o.model, o.seed, o.texture_size);
+        model = is_gltf(o.model) ? import_plant_model(o.model, o.texture_size)
+                                 : generate_plant_model(o.model, o.seed, o.texture_size);
+    } catch (const std::exception& e) {  // the model cannot be used: bad input
+        spdlog::error("export-cloud: {}", e.what());
+        return k_exit_bad_input;
+    }
+    try {
         billboard_cloud_settings settings = default_billboard_cloud_settings(model);
         if (o.clusters) settings.clustering.target_clusters = o.clusters;
         settings.clustering.method = method_of(o.method);

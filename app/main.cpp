@@ -3,8 +3,42 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "io/input_file.h"
+#include "scenarios/scenario_loader.h"
 
+namespace {
+
+int run(int argc, char** argv);
+
+}  // namespace
+
+// Whatever escapes a command ends the process with one line naming it, never an abort: exit 2
+// when it is about the input (a scenario or another file the user gave), 1 otherwise.
 int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const sylva::scenario_error& e) {
+        spdlog::error("{}", e.what());
+        return sylva::k_exit_bad_input;
+    } catch (const sylva::input_error& e) {
+        spdlog::error("{}", e.what());
+        return sylva::k_exit_bad_input;
+    } catch (const std::bad_alloc&) {
+        spdlog::error("out of memory");
+        return sylva::k_exit_failure;
+    } catch (const std::exception& e) {
+        spdlog::error("{}", e.what());
+        return sylva::k_exit_failure;
+    } catch (...) {
+        spdlog::error("an unknown error ended the program");
+        return sylva::k_exit_failure;
+    }
+}
+
+namespace {
+
+int run(int argc, char** argv) {
+    spdlog::set_pattern("[sylva] %v");
     CLI::App app{
         "Sylva renders landscapes with hundreds of thousands of plants in real time and measures\n"
         "what each millisecond buys. Run `sylva COMMAND --help` for a command's options."};
@@ -40,8 +74,9 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? 0 : sylva::k_exit_bad_input;
     }
-    spdlog::set_pattern("[sylva] %v");
-    for (auto& [command, run] : commands)
-        if (command->parsed()) return run();
+    for (auto& [command, run_command] : commands)
+        if (command->parsed()) return run_command();
     return sylva::k_exit_bad_input;
 }
+
+}  // namespace

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "app/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace sylva {
 
@@ -102,6 +102,10 @@ nlohmann::json summary_json(const run_info& info, const std::vector<frame_record
     return {{"scenario", info.scenario},
             {"source", info.source},
             {"frames", frames.size()},
+            {"frames_planned", std::max<std::uint64_t>(info.frames_planned, frames.size())},
+            {"partial", info.partial},
+            {"interrupted_by", info.interrupted_by.empty() ? nlohmann::json(nullptr)
+                                                           : nlohmann::json(info.interrupted_by)},
             {"width", info.width},
             {"height", info.height},
             {"threads", info.threads},

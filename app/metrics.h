@@ -59,6 +59,11 @@ struct run_info {
     double setup_ms = 0.0;  // building assets, world and GPU resources
     std::string mode = "lod";  // lod, full_geometry or reference
     std::uint32_t samples_per_pixel = 1;
+    // An interrupted run (app/interrupt.h) keeps the frames it finished: partial is true,
+    // interrupted_by names the signal ("SIGINT"), frames_planned says how many were asked for.
+    bool partial = false;
+    std::string interrupted_by;
+    std::uint64_t frames_planned = 0;
 };
 
 std::string_view representation_name(representation r);

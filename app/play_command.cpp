@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
 #include "models/image_ops.h"
@@ -33,6 +34,22 @@ std::filesystem::path frame_path(const play_options& o, std::uint64_t frame) {
     return std::filesystem::path(o.out_dir) / name;
 }
 
+// Plays the frames, stopping after the current one when interrupted (app/interrupt.h).
+void play_frames(scenario_player& player, const play_options& o, const scenario& s,
+                 std::uint32_t samples, std::vector<frame_record>& frames) {
+    for (std::uint32_t f = 0; f < s.frames && !interrupt_requested(); ++f) {
+        frame_record record = player.step();
+        const image_rgba8 image = box_downsample(player.capture(), samples);
+        record.image_hash = fnv1a(image.texels.data(), image.texels.size());
+        write_image(image, frame_path(o, record.frame));
+        std::fprintf(stderr, "\r[sylva] frame %u/%u  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ",
+                     f + 1, s.frames, record.frame_ms, record.cpu_ms, record.gpu_ms,
+                     static_cast<unsigned long long>(record.triangles));
+        frames.push_back(std::move(record));
+    }
+    std::fprintf(stderr, "\n");
+}
+
 int play(const play_options& o) {
     const std::optional<scenario> loaded = load_or_report(o.scenario);
     if (!loaded) return k_exit_bad_input;
@@ -41,53 +58,57 @@ int play(const play_options& o) {
     s.width *= samples;  // the reference renders supersampled and resolves with a box filter
     s.height *= samples;
     const geometry_mode mode = o.reference || o.full_geometry ? geometry_mode::full : geometry_mode::lod;
-    std::error_code ec;
-    std::filesystem::create_directories(o.out_dir, ec);
-    if (ec) {
-        spdlog::error("cannot create the output folder {}: {}", o.out_dir, ec.message());
-        return k_exit_bad_input;
-    }
     render::context_options context_options;
     context_options.width = int(s.width);
     context_options.height = int(s.height);
     context_options.headless = o.headless || !render::display_available();
-    std::uint64_t written = 0;
+    const interrupt_guard interrupts;
+    std::vector<frame_record> frames;  // the frames written so far
     try {
         auto context = render::create_context(context_options);
         spdlog::info("playing '{}' ({}): {} frames at {}x{} on {} ({})", s.name, s.source, s.frames,
                      s.width, s.height, context->renderer(), context->backend_name());
         bake_cache cache;
+        // Every file the scenario names is read here, before the output folder exists: a bad one
+        // is bad input (exit 2) with nothing written.
         scenario_player player(s, o.scenario.threads, context.get(), &cache, mode);
+        std::error_code ec;
+        std::filesystem::create_directories(o.out_dir, ec);
+        if (ec) {
+            spdlog::error("cannot create the output folder {}: {}", o.out_dir, ec.message());
+            return k_exit_bad_input;
+        }
         run_info info = player.info();
         info.width /= samples;
         info.height /= samples;
         info.mode = o.reference ? "reference" : (o.full_geometry ? "full_geometry" : "lod");
         info.samples_per_pixel = samples * samples;
+        info.frames_planned = s.frames;
         spdlog::info("{} plants, {} source triangles, set up in {:.0f} ms, {} threads", info.plants,
                      info.source_triangles, info.setup_ms, info.threads);
-        std::vector<frame_record> frames;
-        for (std::uint32_t f = 0; f < s.frames; ++f) {
-            frame_record record = player.step();
-            const image_rgba8 image = box_downsample(player.capture(), samples);
-            record.image_hash = fnv1a(image.texels.data(), image.texels.size());
-            write_image(image, frame_path(o, record.frame));
-            ++written;
-            std::fprintf(stderr, "\r[sylva] frame %u/%u  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ",
-                         f + 1, s.frames, record.frame_ms, record.cpu_ms, record.gpu_ms,
-                         static_cast<unsigned long long>(record.triangles));
-            frames.push_back(std::move(record));
-        }
-        std::fprintf(stderr, "\n");
+        play_frames(player, o, s, samples, frames);
+        const std::size_t written = frames.size();
+        info.partial = interrupt_requested();
+        info.interrupted_by = interrupt_signal_name();
         const auto metrics = std::filesystem::path(o.out_dir) / "metrics.json";
         write_metrics_json(metrics, info, frames);
         std::vector<double> frame_ms;
         for (const auto& f : frames) frame_ms.push_back(f.frame_ms);
+        if (info.partial) {
+            spdlog::warn("interrupted by {}: wrote {} of {} frames and {} (marked partial)",
+                         info.interrupted_by, written, s.frames, metrics.string());
+            return interrupt_exit_code();
+        }
         spdlog::info("wrote {} frames and {} (median frame {:.1f} ms)", written, metrics.string(),
                      median(frame_ms));
+    } catch (const scenario_error& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
     } catch (const std::exception& e) {
         spdlog::error("{}", e.what());
-        if (written)
-            spdlog::error("partial output: {} frames in {} and no metrics.json", written, o.out_dir);
+        if (!frames.empty())
+            spdlog::error("partial output: {} frames in {} and no metrics.json", frames.size(),
+                          o.out_dir);
         return k_exit_failure;
     }
     return k_exit_ok;

@@ -55,7 +55,7 @@ command_runner add_stress_command(CLI::App& app) {
         "passes, 1 otherwise.");
     app.add_option("--threads", options->threads,
                    "Worker threads for the scenario players (0: all)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Range(0, 256))
         ->capture_default_str();
     return [options] { return run_stress(*options); };
 }

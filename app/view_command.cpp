@@ -14,6 +14,7 @@
 #include "app/commands.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
+#include "scenarios/scenario_loader.h"
 #include "components/camera.h"
 #include "models/textures.h"
 #include "scenarios/scenario_loader.h"
@@ -150,6 +151,9 @@ int view(const view_options& o) {
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
+    } catch (const scenario_error& e) {  // a file the scenario names cannot be used
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
     } catch (const std::exception& e) {
         spdlog::error("{}", e.what());
         return k_exit_failure;

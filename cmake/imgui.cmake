@@ -8,3 +8,9 @@ add_library(sylva_imgui STATIC ${IMGUI_BACKENDS}/imgui_impl_glfw.cpp
                                ${IMGUI_BACKENDS}/imgui_impl_opengl3.cpp)
 target_include_directories(sylva_imgui SYSTEM PUBLIC /usr/include/imgui /usr/include/imgui/backends)
 target_link_libraries(sylva_imgui PUBLIC PkgConfig::IMGUI ${STB_LIBRARY} glfw ${CMAKE_DL_LIBS})
+# imgui 1.86's bundled GL loader (imgui_impl_opengl3_loader.h) lists 54 functions for a 53-slot
+# table and writes one pointer past it (ASan and UBSan stop on it): the backend uses Sylva's glad
+# loader instead, which every context has loaded before ImGui starts (systems/render/*_context.cpp).
+target_compile_definitions(sylva_imgui PRIVATE IMGUI_IMPL_OPENGL_LOADER_CUSTOM)
+target_compile_options(sylva_imgui PRIVATE -include glad/gl.h)
+target_link_libraries(sylva_imgui PUBLIC sylva_glad)

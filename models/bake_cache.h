@@ -3,7 +3,11 @@
 // other bakes later) stored on disk under a key that hashes every input and setting that
 // produced it, so a bake is reused exactly when nothing it depends on changed. Entries are
 // written atomically (temporary file, then rename): an interrupted bake never leaves a
-// half-written entry that a later run would trust.
+// half-written entry that a later run would trust. Each entry carries its payload's size and
+// checksum, verified on every read: a truncated or bit-flipped entry, or anything else in its
+// place (a directory, a device), is reported once, removed and baked again, never used.
+//
+//   entry = | magic "SYLVACE1" (8 bytes) | payload size (u64) | FNV-1a 64 of payload (u64) | payload |
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -28,13 +32,21 @@ public:
     // `root` empty: $SYLVA_CACHE_DIR, else $XDG_CACHE_HOME/sylva, else ~/.cache/sylva.
     explicit bake_cache(std::filesystem::path root = {});
 
-    // The stored bytes of (kind, key), or nothing when absent or unreadable.
+    // The stored payload of (kind, key), or nothing when absent; a damaged or unreadable entry
+    // is discarded (reported once, removed) and also gives nothing. Counts a hit or a miss.
     std::optional<std::vector<std::byte>> load(std::string_view kind, std::uint64_t key);
-    // Stores atomically; throws std::runtime_error naming the path when the disk refuses.
+    // Stores atomically with its checksum; throws std::runtime_error naming the path when the
+    // disk refuses.
     void store(std::string_view kind, std::uint64_t key, std::span<const std::byte> bytes);
-    // load, or produce + store on a miss.
+    // store, but a disk that refuses (full, read-only) is reported once and the bake used
+    // anyway: the cache only saves time, the run does not depend on it.
+    void store_or_warn(std::string_view kind, std::uint64_t key, std::span<const std::byte> bytes);
+    // load, or produce + store_or_warn on a miss.
     std::vector<std::byte> get_or_bake(std::string_view kind, std::uint64_t key,
                                        const std::function<std::vector<std::byte>()>& bake);
+    // An entry that loaded but cannot be used (`reason`: its decoder's complaint): reported once
+    // per process, removed, and the last load counted as a miss.
+    void discard(std::string_view kind, std::uint64_t key, const std::string& reason);
 
     std::filesystem::path path_of(std::string_view kind, std::uint64_t key) const;
     const std::filesystem::path& root() const { return m_root; }
@@ -42,10 +54,31 @@ public:
     std::size_t misses() const { return m_misses; }
 
 private:
+    void remove_damaged(const std::filesystem::path& path, const std::string& reason);
+
     std::filesystem::path m_root;
     std::size_t m_hits = 0;
     std::size_t m_misses = 0;
 };
+
+// Decodes (kind, key) from the cache with `read`; an entry that is absent, damaged, or that
+// `read` rejects (throws std::runtime_error) is discarded, baked again, stored and read. Without
+// a cache, bakes and reads.
+template <class Bake, class Read>
+auto read_or_bake(bake_cache* cache, std::string_view kind, std::uint64_t key, const Bake& bake,
+                  const Read& read) -> decltype(read(std::vector<std::byte>{})) {
+    if (!cache) return read(bake());
+    if (auto bytes = cache->load(kind, key)) {
+        try {
+            return read(*bytes);
+        } catch (const std::runtime_error& e) {
+            cache->discard(kind, key, e.what());
+        }
+    }
+    const std::vector<std::byte> bytes = bake();
+    cache->store_or_warn(kind, key, bytes);
+    return read(bytes);
+}
 
 // Little-endian binary streams of plain data for cache entries. Readers check bounds and
 // throw std::runtime_error on a truncated or malformed entry (the caller re-bakes).

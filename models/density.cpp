@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_file.h"
 #include "models/noise.h"
 
 namespace sylva {
@@ -44,12 +45,14 @@ float density_map::at(double u, double v) const {
 density_map load_density_map(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
+    if (!std::filesystem::exists(path, ec))
         throw std::runtime_error("load_density_map: " + name + ": no such file");
+    check_input_file(path, k_max_image_bytes);  // a directory or device is refused here
     auto in = OIIO::ImageInput::open(name);
     if (!in)
         throw std::runtime_error("load_density_map: cannot read " + name + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
+    check_image_dimensions("load_density_map: " + name, spec.width, spec.height);
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
         throw std::runtime_error("load_density_map: " + name + ": empty image");
     density_map map;

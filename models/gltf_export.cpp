@@ -7,8 +7,10 @@
 #include <glm/vec4.hpp>
 #include <cstring>
 #include <glm/geometric.hpp>
+#include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
 #include "models/gltf_image_codec.h"
 #include "models/gltf_tinygltf.h"
 
@@ -69,13 +71,18 @@ image_rgba8 or_white(const image_rgba8& image) {
     return image.texels.empty() ? image_rgba8{1, 1, {255, 255, 255, 255}} : image;
 }
 
+// tinygltf's file writer checks none of its writes (a full disk or a directory in the file's
+// place still "succeeds"), so the .glb is built in memory and written by write_atomically,
+// which checks every write and the close and renames the whole file into place.
 void write_glb(tinygltf::Model& model, const std::filesystem::path& file) {
     model.buffers[0].data.resize((model.buffers[0].data.size() + 3) / 4 * 4, 0);
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
     tinygltf::TinyGLTF writer = make_gltf_loader();
-    if (!writer.WriteGltfSceneToFile(&model, file.string(), true, true, false, true))
-        throw std::runtime_error(file.string() + ": cannot be written");
+    std::ostringstream glb;
+    if (!writer.WriteGltfSceneToStream(&model, glb, false, true))
+        throw std::runtime_error(file.string() + ": cannot be written (the glTF writer failed)");
+    write_atomically(file, glb.view());
 }
 
 void add_single_node_scene(tinygltf::Model& model, const std::string& name) {

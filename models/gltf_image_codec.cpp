@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_file.h"
+
 namespace sylva {
 namespace {
 
@@ -37,6 +39,9 @@ image_rgba8 decode_image(std::span<const std::uint8_t> bytes, std::string_view w
     auto input = oiio::ImageInput::open(name, &config);
     if (!input) throw std::runtime_error(std::string(what) + ": " + oiio::geterror());
     const oiio::ImageSpec& spec = input->spec();
+    // The header's size is bounded before a pixel buffer is allocated for it: a 100-byte PNG can
+    // claim 30000 x 30000 pixels.
+    check_image_dimensions(std::string(what), spec.width, spec.height);
     const int channels = spec.nchannels;
     std::vector<std::uint8_t> raw(std::size_t(spec.width) * std::size_t(spec.height) *
                                   std::size_t(channels));

@@ -15,8 +15,10 @@
 #include <glm/mat4x4.hpp>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include "models/gltf_plant_builder.h"
+#include "models/gltf_container.h"
 #include "models/gltf_tinygltf.h"
 
 namespace sylva {
@@ -27,6 +29,9 @@ namespace fs = std::filesystem;
 // Above this height a model without a unit scale is taken to be in centimetres: no plant
 // Sylva draws is 100 m tall.
 constexpr float k_centimetre_height = 100.0f;
+// An accessor with no buffer view is all zeros and costs no bytes in the file, so its count is
+// bounded on its own: no plant has more vertices than this.
+constexpr std::size_t k_max_zero_accessor_elements = 1u << 24;
 
 struct import_context {
     std::string file;  // file name for messages
@@ -51,9 +56,17 @@ const char* mode_name(int mode) {
     }
 }
 
-// Reads `components` numbers per element of any glTF component type (normalized integers map
-// to 0..1 or -1..1 as the spec says).
-std::vector<float> read_floats(const import_context& c, int accessor_index, int components,
+// The accessor `accessor_index` checked against its buffer view and buffer before anything is
+// allocated for it: a count is trusted only once the bytes it claims are there (a 2 KB file
+// claiming 750 million elements fails here, not after a 3 GB allocation).
+struct accessor_span {
+    const tinygltf::Accessor* accessor = nullptr;
+    const unsigned char* data = nullptr;  // first element; null: all zeros (no buffer view)
+    std::size_t stride = 0;
+    std::size_t component_size = 0;
+};
+
+accessor_span checked_accessor(const import_context& c, int accessor_index, int components,
                                const std::string& part) {
     const tinygltf::Model& m = *c.model;
     if (accessor_index < 0 || std::size_t(accessor_index) >= m.accessors.size())
@@ -62,26 +75,50 @@ std::vector<float> read_floats(const import_context& c, int accessor_index, int 
     if (a.sparse.isSparse) c.fail(part, "sparse accessors are not supported");
     if (tinygltf::GetNumComponentsInType(std::uint32_t(a.type)) != components)
         c.fail(part, "accessor " + std::to_string(accessor_index) + " has the wrong type");
-    std::vector<float> out(a.count * std::size_t(components), 0.0f);
-    if (a.bufferView < 0) return out;  // all zeros, as the spec says
+    const int component_size = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+    if (component_size <= 0) c.fail(part, "unsupported component type");
+    accessor_span span{&a, nullptr, 0, std::size_t(component_size)};
+    const std::size_t element = span.component_size * std::size_t(components);
+    if (a.bufferView < 0) {  // all zeros, as the spec says; the count still has to be plausible
+        if (a.count > k_max_zero_accessor_elements)
+            c.fail(part, "accessor " + std::to_string(accessor_index) + " claims " +
+                             std::to_string(a.count) + " elements with no data");
+        return span;
+    }
     if (std::size_t(a.bufferView) >= m.bufferViews.size())
         c.fail(part, "buffer view " + std::to_string(a.bufferView) + " does not exist");
     const tinygltf::BufferView& view = m.bufferViews[std::size_t(a.bufferView)];
     if (view.buffer < 0 || std::size_t(view.buffer) >= m.buffers.size())
         c.fail(part, "buffer " + std::to_string(view.buffer) + " does not exist");
     const std::vector<unsigned char>& data = m.buffers[std::size_t(view.buffer)].data;
-    const int component_size = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
-    if (component_size <= 0) c.fail(part, "unsupported component type");
-    const std::size_t element = std::size_t(component_size) * std::size_t(components);
-    const std::size_t stride = view.byteStride ? view.byteStride : element;
-    const std::size_t start = view.byteOffset + a.byteOffset;
-    if (a.count && (start + stride * (a.count - 1) + element > data.size() ||
-                    a.byteOffset + stride * (a.count - 1) + element > view.byteLength))
-        c.fail(part,
-               "accessor " + std::to_string(accessor_index) + " reads past the end of its buffer");
+    span.stride = view.byteStride ? view.byteStride : element;
+    // Every size below comes from the file: compare in a way that cannot overflow.
+    const auto past_end = [&](std::size_t start, std::size_t limit) {
+        if (a.count == 0) return start > limit;
+        if (start > limit || element > limit - start) return true;
+        return (a.count - 1) > (limit - start - element) / span.stride;
+    };
+    if (span.stride < element || view.byteOffset > data.size() ||
+        past_end(a.byteOffset, view.byteLength) ||
+        past_end(view.byteOffset + a.byteOffset, data.size()) ||
+        view.byteOffset + a.byteOffset < view.byteOffset)
+        c.fail(part, "accessor " + std::to_string(accessor_index) + " (" + std::to_string(a.count) +
+                         " elements) reads past the end of its buffer");
+    span.data = data.data() + view.byteOffset + a.byteOffset;
+    return span;
+}
+
+// Reads `components` numbers per element of any glTF component type (normalized integers map
+// to 0..1 or -1..1 as the spec says).
+std::vector<float> read_floats(const import_context& c, int accessor_index, int components,
+                               const std::string& part) {
+    const accessor_span span = checked_accessor(c, accessor_index, components, part);
+    const tinygltf::Accessor& a = *span.accessor;
+    std::vector<float> out(a.count * std::size_t(components), 0.0f);
+    if (!span.data) return out;
     for (std::size_t i = 0; i < a.count; ++i) {
-        const unsigned char* p = data.data() + start + i * stride;
-        for (int k = 0; k < components; ++k, p += component_size) {
+        const unsigned char* p = span.data + i * span.stride;
+        for (int k = 0; k < components; ++k, p += span.component_size) {
             float v = 0;
             switch (a.componentType) {
                 case TINYGLTF_COMPONENT_TYPE_FLOAT:
@@ -121,15 +158,40 @@ std::vector<float> read_floats(const import_context& c, int accessor_index, int 
     return out;
 }
 
+// Indices exactly as stored: the spec allows only unsigned byte, short and int, and a float has
+// 24 bits of mantissa, so reading them as floats would turn 16,777,217 into 16,777,216 and
+// 0xFFFFFFF0 into some other vertex.
+std::vector<std::uint32_t> read_indices(const import_context& c, int accessor_index,
+                                        const std::string& part) {
+    const accessor_span span = checked_accessor(c, accessor_index, 1, part);
+    const tinygltf::Accessor& a = *span.accessor;
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        c.fail(part, "indices must be unsigned bytes, shorts or ints");
+    std::vector<std::uint32_t> out(a.count, 0);
+    if (!span.data) return out;
+    for (std::size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = span.data + i * span.stride;
+        if (span.component_size == 1) {
+            out[i] = *p;
+        } else if (span.component_size == 2) {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            out[i] = v;
+        } else {
+            std::memcpy(&out[i], p, 4);
+        }
+    }
+    return out;
+}
+
 // Triangle-list indices for TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN.
 std::vector<std::uint32_t> read_triangles(const import_context& c, const tinygltf::Primitive& p,
                                           std::size_t vertex_count, const std::string& part) {
     std::vector<std::uint32_t> order;
     if (p.indices >= 0) {
-        const tinygltf::Accessor& a = c.model->accessors.at(std::size_t(p.indices));
-        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) c.fail(part, "float indices");
-        for (const float f : read_floats(c, p.indices, 1, part + " indices"))
-            order.push_back(std::uint32_t(f));
+        order = read_indices(c, p.indices, part + " indices");
     } else {
         for (std::size_t i = 0; i < vertex_count; ++i) order.push_back(std::uint32_t(i));
     }
@@ -225,6 +287,14 @@ gltf_source_primitive read_primitive(const import_context& c, const tinygltf::Pr
         normals = read_floats(c, attribute("NORMAL"), 3, part + " NORMAL");
     if (attribute("TEXCOORD_0") >= 0)
         uvs = read_floats(c, attribute("TEXCOORD_0"), 2, part + " TEXCOORD_0");
+    // The spec gives every attribute of a primitive the same count; a shorter one would be read
+    // past its end (found by the glTF fuzz target, tests/fuzz/regressions/gltf_import/).
+    for (const auto& [name, values, components] :
+         {std::tuple<const char*, const std::vector<float>&, std::size_t>{"NORMAL", normals, 3},
+          {"TEXCOORD_0", uvs, 2}})
+        if (!values.empty() && values.size() / components != n)
+            c.fail(part, std::string(name) + " has " + std::to_string(values.size() / components) +
+                             " elements but POSITION has " + std::to_string(n));
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(transform));
     out.vertices.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -373,26 +443,15 @@ bool is_zero_area_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
 }
 
 gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture_size) {
+    return import_gltf_source(read_gltf_source(file), texture_size);
+}
+
+gltf_import_result import_gltf_source(const gltf_source& source, std::uint32_t texture_size,
+                                      gltf_import_stage stage) {
     import_context c;
-    c.file = file.filename().string();
+    c.file = source.name;
     tinygltf::Model model;
-    tinygltf::TinyGLTF loader = make_gltf_loader();
-    std::string error, warning;
-    if (!fs::exists(file))
-        throw std::runtime_error(c.file + ": no such file (" + file.string() + ")");
-    const std::string extension = file.extension().string();
-    bool ok = false;
-    if (extension == ".glb" || extension == ".GLB")
-        ok = loader.LoadBinaryFromFile(&model, &error, &warning, file.string());
-    else if (extension == ".gltf" || extension == ".GLTF")
-        ok = loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
-    else
-        throw std::runtime_error(c.file + ": not a glTF file (expected .gltf or .glb)");
-    if (!ok) {
-        while (!error.empty() && error.back() == '\n') error.pop_back();
-        throw std::runtime_error(c.file + ": " +
-                                 (error.empty() ? "cannot be read as glTF" : error));
-    }
+    parse_gltf(source, model);
     c.model = &model;
     for (const std::string& required : model.extensionsRequired)
         if (required != "KHR_mesh_quantization" && required != "KHR_materials_unlit")
@@ -456,8 +515,9 @@ gltf_import_result import_gltf_plant(const fs::path& file, std::uint32_t texture
     result.hierarchy_depth = state.max_depth;
     // A branch structure needs at least trunk -> branch -> twig as nested mesh nodes.
     result.model.has_hierarchy = state.max_depth >= 3;
+    if (stage == gltf_import_stage::read) return result;
     build_gltf_plant(materials, state.primitives, texture_size, result);
-    result.model.name = file.stem().string();
+    result.model.name = fs::path(source.name).stem().string();
     result.model.source_unit_scale = unit_scale;
     return result;
 }

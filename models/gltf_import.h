@@ -53,7 +53,21 @@ bool is_zero_area_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c);
 // dropped with a warning naming the file and primitive and counted in
 // dropped_degenerate_triangles, so they are never drawn. Every texture of the result is
 // texture_size x texture_size.
+// Files are read as models/gltf_container.h says: bounded in size and nesting, external URIs
+// confined to the model's folder, indices read exactly, every accessor checked against its
+// buffer before anything is allocated for it, images bounded before they are decoded.
 gltf_import_result import_gltf_plant(const std::filesystem::path& file, std::uint32_t texture_size);
+// How far import_gltf_source goes: the whole plant, or only reading the file (container,
+// JSON, accessors, indices, nodes, materials and images: everything the file's bytes decide)
+// before the plant is built from its checked geometry. The fuzz target runs `read`: that is
+// where hostile bytes are interpreted, at a hundred times the rate of a whole import.
+enum class gltf_import_stage { plant, read };
+
+// The same for a file already read (read_gltf_source); the fuzz target feeds bytes here. With
+// gltf_import_stage::read the result's model is empty.
+struct gltf_source;
+gltf_import_result import_gltf_source(const gltf_source& source, std::uint32_t texture_size,
+                                      gltf_import_stage stage = gltf_import_stage::plant);
 
 plant_model import_plant_model(const std::filesystem::path& file, std::uint32_t texture_size);
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_file.h"
 #include "models/noise.h"
 
 namespace sylva {
@@ -179,12 +180,14 @@ heightfield load_heightmap(const std::filesystem::path& path, double size_m, flo
     if (!(size_m > 0.0))
         throw std::invalid_argument("load_heightmap: " + name + ": size_m must be > 0");
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
+    if (!std::filesystem::exists(path, ec))
         throw std::runtime_error("load_heightmap: " + name + ": no such file");
+    check_input_file(path, k_max_image_bytes);  // a directory or device is refused here
     auto in = OIIO::ImageInput::open(name);
     if (!in)
         throw std::runtime_error("load_heightmap: cannot read " + name + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
+    check_image_dimensions("load_heightmap: " + name, spec.width, spec.height);
     if (spec.width != spec.height)
         throw std::runtime_error("load_heightmap: " + name + " is " + std::to_string(spec.width) +
                                  "x" + std::to_string(spec.height) +

@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "io/input_file.h"
+
 namespace sylva {
 namespace {
 
@@ -68,8 +70,35 @@ std::string pointer_token(std::string_view key) {
     return token;
 }
 
+namespace {
+
+// Appends the compact dump of `value` to `out` until `out` is longer than `limit`: an array of a
+// million items or a value nested a million deep costs what the message shows, and never
+// recurses deeper than the text it can show (each level adds at least one character).
+void describe_into(const nlohmann::json& value, std::string& out, std::size_t limit) {
+    if (out.size() > limit) return;
+    if (!value.is_structured()) {
+        out += value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+        return;
+    }
+    const bool object = value.is_object();
+    out += object ? '{' : '[';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end() && out.size() <= limit; ++it) {
+        if (!first) out += ',';
+        first = false;
+        if (object) out += nlohmann::json(it.key()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ":";
+        describe_into(*it, out, limit);
+    }
+    out += object ? '}' : ']';
+}
+
+}  // namespace
+
 std::string describe_value(const nlohmann::json& value) {
-    return shorten(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+    std::string text;
+    describe_into(value, text, k_max_value_chars);
+    return shorten(std::move(text));
 }
 
 std::string join(std::span<const std::string_view> words) {
@@ -191,7 +220,14 @@ std::string read_file_path(const json_node& node) {
     if (path.is_relative()) path = fs::path(source).parent_path() / path;
     std::error_code ec;
     path = fs::absolute(path, ec).lexically_normal();
-    if (ec || !fs::is_regular_file(path, ec)) node.fail("file not found: " + path.string());
+    if (ec || !fs::exists(path, ec)) node.fail("file not found: " + path.string());
+    // Readable, a regular file (not a directory, device or FIFO) and of a size Sylva reads: an
+    // unreadable file is bad input found now, before a command writes anything.
+    try {
+        check_input_file(path, k_max_model_bytes);
+    } catch (const input_error& e) {
+        node.fail(e.what());
+    }
     return path.string();
 }
 

@@ -78,7 +78,8 @@ std::string read_choice(const json_node& node, std::span<const std::string_view>
 glm::dvec3 read_dvec3(const json_node& node, number_range range);  // [x, y, z]
 // A non-empty string naming an existing regular file, relative to the folder of the document's
 // file (node.file(); an "embedded:" prefix is dropped) unless absolute; returned absolute and
-// lexically normal. A missing file fails with "file not found: <absolute path>".
+// lexically normal. A missing file fails with "file not found: <absolute path>"; one that is not
+// a readable regular file of at most k_max_model_bytes (io/input_file.h) fails naming why.
 std::string read_file_path(const json_node& node);
 
 // Binds the fields of S to object keys. Fields are read in table order after the unknown-key

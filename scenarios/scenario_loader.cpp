@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <bit>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 
+#include "io/input_file.h"
+#include "io/json_nesting.h"
 #include "scenarios/json_reader.h"
 #include "systems/embedded_files.h"
 
@@ -24,6 +22,9 @@ constexpr number_range k_intensity{0.0, 1e6};
 constexpr integer_range k_seed{0, k_max_u64};
 constexpr integer_range k_image_side_px{1, 16384};
 constexpr float k_default_fov_deg = 55.0f;
+// The format nests 4 levels deep (/camera/keyframes/0/position); 64 leaves room for any edit
+// and keeps every recursive reader and printer far from the stack's end.
+constexpr std::size_t k_max_scenario_depth = 64;
 
 // --- checks across fields -------------------------------------------------------------------
 
@@ -398,6 +399,14 @@ class duplicate_key_check {
 public:
     explicit duplicate_key_check(const std::string& file) : m_file(file) {}
 
+    // The JSON Pointer of the value being parsed.
+    std::string pointer() const {
+        std::string path;
+        for (const frame& f : m_stack)
+            path += "/" + (f.is_object ? pointer_token(f.key) : std::to_string(f.index));
+        return path;
+    }
+
     bool operator()(nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
         using event_t = nlohmann::json::parse_event_t;
         switch (event) {
@@ -439,18 +448,24 @@ private:
     void end_value() {
         if (!m_stack.empty() && !m_stack.back().is_object) ++m_stack.back().index;
     }
-    std::string pointer() const {
-        std::string path;
-        for (const frame& f : m_stack)
-            path += "/" + (f.is_object ? pointer_token(f.key) : std::to_string(f.index));
-        return path;
-    }
 
     const std::string& m_file;
     std::vector<frame> m_stack;
 };
 
+// The token nlohmann quotes in "number overflow parsing '1e400'".
+std::string quoted_token(const std::string& what) {
+    const std::size_t open = what.find('\'');
+    const std::size_t close = what.rfind('\'');
+    return open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+}
+
 nlohmann::json parse_document(std::string_view text, const std::string& file) {
+    // Before the parser: a value nested a million deep must not reach code that recurses.
+    if (const auto offset = find_nesting_beyond(text, k_max_scenario_depth))
+        throw scenario_error(file, "", "",
+                             "JSON nested deeper than " + std::to_string(k_max_scenario_depth) +
+                                 " levels at " + line_and_column(text, *offset));
     duplicate_key_check duplicates(file);
     try {
         return nlohmann::json::parse(
@@ -462,6 +477,12 @@ nlohmann::json parse_document(std::string_view text, const std::string& file) {
         throw scenario_error(
             file, "", "",
             "malformed JSON at " + line_and_column(text, offset) + ": " + parse_problem(e));
+    } catch (const nlohmann::json::out_of_range& e) {
+        // A number beyond a double (1e400): the parser stops inside the value it was reading.
+        throw scenario_error(file, duplicates.pointer(), quoted_token(e.what()),
+                             "number out of range; numbers must fit a double (about 1.8e308)");
+    } catch (const nlohmann::json::exception& e) {
+        throw scenario_error(file, duplicates.pointer(), "", std::string("malformed JSON: ") + e.what());
     }
 }
 
@@ -469,10 +490,16 @@ std::string stem_of(std::string_view source_name) {
     return std::filesystem::path(source_name).stem().string();
 }
 
+// A pointer through a megabyte-long key would flood the terminal: the message shows its start.
+constexpr std::size_t k_max_pointer_chars = 120;
+
 std::string what_text(const std::string& file, const std::string& json_path,
                       const std::string& value, const std::string& problem) {
     std::string text = file;
-    if (!json_path.empty()) text += ": " + json_path;
+    if (!json_path.empty())
+        text += ": " + (json_path.size() <= k_max_pointer_chars
+                            ? json_path
+                            : json_path.substr(0, k_max_pointer_chars - 3) + "...");
     text += ": " + problem;
     if (!value.empty()) text += " (got " + value + ")";
     return text;
@@ -502,20 +529,17 @@ scenario load_scenario_text(std::string_view json_text, std::string_view source_
 
 scenario load_scenario_file(const std::filesystem::path& path) {
     const std::string file = path.string();
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
+    std::string text;
+    try {
+        text = read_input_file(path, k_max_scenario_bytes);
+    } catch (const input_error& e) {
+        // input_error says "<path>: <problem>"; the scenario error names the file itself.
+        const std::string what = e.what();
+        const std::string prefix = file + ": ";
         throw scenario_error(file, "", "",
-                             "cannot open file: " + std::string(std::strerror(EISDIR)));
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw scenario_error(file, "", "",
-                             "cannot open file: " + std::string(std::strerror(errno)));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw scenario_error(file, "", "",
-                             "cannot read file: " + std::string(std::strerror(errno)));
-    return load_scenario_text(text.str(), file);
+                             what.starts_with(prefix) ? what.substr(prefix.size()) : what);
+    }
+    return load_scenario_text(text, file);
 }
 
 scenario load_default_scenario() {

@@ -36,7 +36,10 @@ private:
     std::string m_problem;
 };
 
-// A missing or unreadable file: scenario_error(file, "", "", "cannot open file: <reason>").
+// A missing or unreadable file: scenario_error(file, "", "", "cannot open file: <reason>"); one
+// that is not a regular file (a directory, /dev/zero, a FIFO) or is larger than
+// k_max_scenario_bytes (io/input_file.h) is refused before it is read. JSON nested deeper than
+// 64 levels and numbers beyond a double (1e400) are errors too.
 scenario load_scenario_file(const std::filesystem::path& path);
 // source_name names the text in errors and becomes scenario::source.
 scenario load_scenario_text(std::string_view json_text, std::string_view source_name);

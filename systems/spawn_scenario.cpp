@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 #include "components/point_prefix.h"
 #include "components/sun.h"
 #include "components/transform.h"
+#include "io/input_file.h"
 #include "models/density.h"
 #include "models/image_ops.h"
 #include "models/placement.h"
@@ -33,6 +35,7 @@
 #include "systems/playback.h"
 #include "systems/point_line_assets.h"
 #include "systems/shadow_receivers.h"
+#include "scenarios/scenario_loader.h"
 #include "systems/species_models.h"
 
 namespace sylva {
@@ -127,12 +130,30 @@ float transfer_radius(const species_entry& entry, std::initializer_list<const me
     return radius;
 }
 
+// Reads a file the scenario names (field `pointer`, a JSON Pointer); a file that cannot be used
+// is bad input: a scenario_error naming the scenario, the field, the file and the problem,
+// thrown before any output exists. Only `Error` is converted: the bake cache's own disk errors
+// stay runtime failures.
+template <class Error, class Load>
+auto read_named_file(const scenario& s, const std::string& pointer, const std::string& file,
+                     const Load& load) -> decltype(load()) {
+    try {
+        return load();
+    } catch (const scenario_error&) {
+        throw;
+    } catch (const Error& e) {
+        throw scenario_error(s.source, pointer, nlohmann::json(file).dump(), e.what());
+    }
+}
+
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
                  const scene_needs& needs) {
     const species_settings& settings = s.species[index];
     const std::size_t first_mesh = assets.meshes.size();
     const std::uint64_t seed = species_seed_of(s.seed, index);
-    plant_model model = load_species_model(settings, seed, cache);
+    plant_model model =
+        read_named_file<input_error>(s, "/species/" + std::to_string(index) + "/model", settings.model,
+                                     [&] { return load_species_model(settings, seed, cache); });
     point_line_model point_lines;
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
     // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
@@ -233,9 +254,12 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
 scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs) {
     scene_assets assets;
     const terrain_settings& t = s.terrain;
-    assets.terrain = t.heightmap.empty()
-                         ? generate_terrain(t.size_m, t.resolution, t.height_m, t.octaves, t.frequency, t.seed)
-                         : load_heightmap(t.heightmap, t.size_m, t.height_m);
+    assets.terrain =
+        t.heightmap.empty()
+            ? generate_terrain(t.size_m, t.resolution, t.height_m, t.octaves, t.frequency, t.seed)
+            : read_named_file<std::runtime_error>(s, "/terrain/heightmap", t.heightmap, [&] {
+                  return load_heightmap(t.heightmap, t.size_m, t.height_m);
+              });
     // uv in metres; the ground shader divides by ground_uv_scale_m (the texture's size on the ground).
     for (mesh_data& tile : terrain_tile_meshes(assets.terrain, t.tiles_per_side, 1.0f)) {
         assets.terrain_meshes.push_back(std::uint16_t(assets.meshes.size()));
@@ -244,7 +268,9 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     }
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
     if (!s.environment.map.empty()) {
-        const environment_map map = load_environment_map(s.environment.map);
+        const environment_map map = read_named_file<std::runtime_error>(
+            s, "/environment/map", s.environment.map,
+            [&] { return load_environment_map(s.environment.map); });
         if (map.sanitised_texels > 0)
             spdlog::warn("environment map {}: {} texels were NaN, infinite or negative; set to 0",
                          s.environment.map, map.sanitised_texels);
@@ -295,7 +321,9 @@ std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& as
         const population_settings& pop = s.populations[p];
         density_map density;
         if (!pop.density_map.empty())
-            density = load_density_map(pop.density_map);
+            density = read_named_file<std::runtime_error>(
+                s, "/populations/" + std::to_string(p) + "/density_map", pop.density_map,
+                [&] { return load_density_map(pop.density_map); });
         else if (pop.density.enabled)
             density = procedural_density(hash_combine(s.seed, std::uint64_t(p), 0xde45ULL),
                                          pop.density.frequency, pop.density.coverage);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_file.h"
 #include "models/billboard_cloud_io.h"
 #include "models/billboard_io.h"
 #include "models/gltf_import.h"
@@ -25,17 +26,11 @@ std::uint64_t keyed_on_transfer(std::uint64_t key, const radiance_transfer* tran
     return transfer ? hash_string("transfer/" + std::to_string(transfer_key), key) : key;
 }
 
-// Loads through the cache; a damaged or outdated entry is baked again and replaced.
+// Loads through the cache; a damaged or outdated entry is reported, baked again and replaced
+// (models/bake_cache.h: read_or_bake). A failing bake is not retried.
 template <class T, class Bake, class Read>
 T load_cached(bake_cache* cache, std::string_view kind, std::uint64_t key, const Bake& bake, const Read& read) {
-    if (!cache) return read(bake());
-    try {
-        return read(cache->get_or_bake(kind, key, bake));
-    } catch (const std::runtime_error&) {
-        std::vector<std::byte> bytes = bake();
-        cache->store(kind, key, bytes);
-        return read(bytes);
-    }
+    return read_or_bake(cache, kind, key, bake, read);
 }
 
 std::string transfer_settings_text(const transfer_settings& s) {
@@ -72,11 +67,23 @@ std::uint64_t species_model_key(const species_settings& species, std::uint64_t s
     return hash_string(species.generator + "/" + std::to_string(seed), key);
 }
 
+// A model file the importer cannot use is bad input (io/input_file.h: input_error), whatever
+// its complaint, so a scenario naming it is refused like any other bad field.
+plant_model import_species_model(const std::string& file) {
+    try {
+        return import_plant_model(file, k_species_texture_size);
+    } catch (const input_error&) {
+        throw;
+    } catch (const std::runtime_error& e) {
+        throw input_error(e.what());
+    }
+}
+
 plant_model load_species_model(const species_settings& species, std::uint64_t seed, bake_cache* cache) {
     auto bake = [&] {
         plant_model model = species.model.empty()
                                 ? generate_plant_model(species.generator, seed, k_species_texture_size)
-                                : import_plant_model(species.model, k_species_texture_size);
+                                : import_species_model(species.model);
         return serialize_plant_model(model);
     };
     return load_cached<plant_model>(cache, "plants", species_model_key(species, seed), bake,

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_file.h"
+
 namespace sylva {
 
 namespace {
@@ -124,10 +126,12 @@ glm::vec3 environment_map_direction(int column, int row, int width, int height) 
 environment_map load_environment_map(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(name, "no such file");
+    if (!std::filesystem::exists(path, ec)) fail(name, "no such file");
+    check_input_file(path, k_max_image_bytes);  // a directory or device is refused here
     auto in = OIIO::ImageInput::open(name);
     if (!in) fail(name, "cannot read it: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
+    check_image_dimensions("environment map " + name, spec.width, spec.height);
     if (!is_float_data(spec.format))
         fail(name, "holds " + std::string(spec.format.c_str()) +
                        " data; expected HDR float radiance (.hdr or .exr)");

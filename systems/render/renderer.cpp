@@ -321,7 +321,9 @@ void renderer::write_instances(const frame_view& view) {
     const auto& instances = view.draws->instances;
     const std::size_t bytes = (instances.size() + 1) * sizeof(instance_gpu);
     auto block = m_ring.allocate(bytes, 256);
-    std::memcpy(block.data, instances.data(), instances.size() * sizeof(instance_gpu));
+    // An empty list's data() may be null, and memcpy from null is undefined even for 0 bytes.
+    if (!instances.empty())
+        std::memcpy(block.data, instances.data(), instances.size() * sizeof(instance_gpu));
     instance_gpu terrain;
     terrain.position = view.terrain_position;
     std::memcpy(static_cast<std::byte*>(block.data) + instances.size() * sizeof(instance_gpu), &terrain,

@@ -172,8 +172,9 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
               (std::set<std::string>{"scenario", "source", "machine", "gl_renderer", "threads",
                                      "width", "height", "frames", "timing_rounds", "reference",
                                      "lighting_families", "primitive_costs", "configurations",
-                                     "verdicts"}));
+                                     "verdicts", "partial"}));
     EXPECT_EQ(j["timing_rounds"], 1);
+    EXPECT_EQ(j["partial"], false);
     EXPECT_EQ(j["scenario"], "meadow <dense>");
     EXPECT_EQ(j["reference"], (nlohmann::json{{"samples_per_pixel", 9}}));
     EXPECT_EQ(j["lighting_families"],

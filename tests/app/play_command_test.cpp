@@ -139,3 +139,55 @@ TEST(play_command, exr_frames_are_written_through_openimageio) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// FNV-1a 64, as models/bake_cache.h checksums entries (hand-written here so the test does not
+// trust the code under test to make its fixture).
+std::uint64_t fnv1a_64(const std::string& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : bytes) h = (h ^ std::uint8_t(c)) * 0x100000001b3ULL;
+    return h;
+}
+
+// A cache entry whose checksum is right but whose payload is not three positive costs.
+std::string entry_holding(const std::string& payload) {
+    std::string entry = "SYLVACE1";
+    const std::uint64_t size = payload.size(), sum = fnv1a_64(payload);
+    entry.append(reinterpret_cast<const char*>(&size), 8);
+    entry.append(reinterpret_cast<const char*>(&sum), 8);
+    return entry + payload;
+}
+
+// Issue 19: a damaged primitive_costs entry made every later play fail. The device's cost
+// model (app/device_costs.h) is now reported and measured again when its entry is damaged: a
+// truncation or a bit flip the cache's checksum catches (bake_cache tests), or a model that
+// makes no sense under a valid checksum, which its reader must refuse. Each play here calibrates
+// (about 15 s at this size), so one damage is enough.
+TEST(play_command, a_damaged_primitive_cost_model_entry_is_rebuilt_not_fatal) {
+    const fs::path dir = temp_dir("costs");
+    const std::string play = "SYLVA_CACHE_DIR=" + (dir / "cache").string() + " " + test::sylva_binary() +
+                             " play tiny --headless --frames 1 --width 64 --height 36 --representation "
+                             "points_lines --out " + (dir / "out").string();
+    ASSERT_EQ(test::run_command(play).exit_code, 0);
+    const fs::path costs = dir / "cache" / "primitive_cost_model";
+    ASSERT_TRUE(fs::exists(costs)) << "points_lines must have measured and cached its costs";
+    // Status 0 (a model) and six cost lines, the first a = -1 µs: no device costs less than nothing.
+    std::string nonsense(1, '\0');
+    const double lines[12] = {-1.0, 0.0, 1.0, 0.01, 1.0, 0.01, 1.0, 0.01, 1.0, 0.0, 1.0, 0.01};
+    nonsense.append(reinterpret_cast<const char*>(lines), sizeof(lines));
+    for (const auto& entry : fs::directory_iterator(costs))
+        std::ofstream(entry.path(), std::ios::binary) << entry_holding(nonsense);
+    const result r = test::run_command(play);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("primitive_cost_model"), std::string::npos) << "the damage must be reported:\n" << r.output;
+    EXPECT_NE(r.output.find("rebuilding it"), std::string::npos) << r.output;
+    const result again = test::run_command(play);
+    EXPECT_EQ(again.exit_code, 0) << again.output;
+    EXPECT_EQ(again.output.find("rebuilding"), std::string::npos) << "rebuilt once:\n" << again.output;
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sylva

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -26,9 +27,17 @@ inline command_result run_command(const std::string& command) {
     return r;
 }
 
-// `arguments` after the binary built by this tree (SYLVA_BINARY, set by tests/CMakeLists.txt).
+// The binary under test: the one built by this tree (SYLVA_BINARY, set by tests/CMakeLists.txt),
+// or $SYLVA_TEST_BINARY, to run a contract test against another build (an older commit's, to
+// show the test fails there).
+inline std::string sylva_binary() {
+    const char* other = std::getenv("SYLVA_TEST_BINARY");
+    return other && *other ? other : SYLVA_BINARY;
+}
+
+// `arguments` after the binary under test.
 inline command_result run_sylva(const std::string& arguments) {
-    return run_command(std::string(SYLVA_BINARY) + " " + arguments);
+    return run_command(sylva_binary() + " " + arguments);
 }
 
 // An empty folder of its own under the system's temporary directory (per process, so parallel

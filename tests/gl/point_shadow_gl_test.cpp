@@ -85,7 +85,12 @@ TEST(point_shadow_gl, a_shadow_splat_shades_what_lies_more_than_its_width_behind
     render::renderer renderer(one_cascade(2048), ground_and({point_layer(2.0f, 0.1f)}, 90));
 
     const camera cam = testing::looking_down({0.0, 30.0, 0.0}, 60.0f, float(k_size));
-    const auto [light, sky, cascades] = testing::sun_from_the_east(cam, 70.0f);
+    // Named members, not a structured binding: clang 14 (the sanitizer builds) cannot capture
+    // structured bindings in the lambda below.
+    const testing::sunlit sunlight = testing::sun_from_the_east(cam, 70.0f);
+    const sun& light = sunlight.light;
+    const environment& sky = sunlight.sky;
+    const cascade_set& cascades = sunlight.cascades;
     // d' = 8 px: casters k_shadow_sample_spacing·d' apart and as wide, 2·8·(2·tan 30°/256)
     // = 0.072 on the image plane, about 2 m at 28-30 m from the eye: far wider than two texels.
     const point_line_quality quality{8.0f, 1.3f, false, splat_style::opaque};
@@ -153,7 +158,12 @@ TEST(point_shadow_gl, a_splat_reads_its_shadow_with_one_tap_so_its_shadow_edge_i
     // the east, puts its shadow's edge at x = -5 / tan 70° on the ground, under the camera.
     const double edge_x = -5.0 / std::tan(70.0 * 3.14159265358979 / 180.0);
     const camera cam = testing::looking_down({edge_x, 30.0, 0.0}, 60.0f, float(k_size));
-    auto [light, sky, cascades] = testing::sun_from_the_east(cam, 70.0f);
+    // Named members, not a structured binding: clang 14 (the sanitizer builds) cannot capture
+    // structured bindings in the lambda below.
+    testing::sunlit sunlight = testing::sun_from_the_east(cam, 70.0f);
+    const sun& light = sunlight.light;
+    const environment& sky = sunlight.sky;
+    cascade_set& cascades = sunlight.cascades;
     cascades = fit_cascades(cam.view, cam.fov_y, cam.aspect, cam.near_plane, 60.0f, light.direction,
                             1, 0.5f, k_resolution, 50.0f, cam.position);
     // Several pixels per texel, so each ramp spans several pixels of the row.

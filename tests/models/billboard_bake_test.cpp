@@ -201,7 +201,8 @@ TEST(billboard_bake, the_normal_map_encodes_the_nearest_normal_turned_toward_the
     }
     scene tilted;  // a normal along +x encodes (255, 128, 128)
     add_rect(tilted.mesh, 0.0f, 0.0f, 8.0f, 8.0f, 0.0f, material_kind::bark, {1.0f, 0.0f, 0.0f});
-    const std::uint8_t* n = tilted.bake().normal.at(2, 2);
+    const billboard_image tilted_image = tilted.bake();  // n points into it: keep it alive
+    const std::uint8_t* n = tilted_image.normal.at(2, 2);
     EXPECT_EQ(n[0], 255);
     EXPECT_EQ(n[1], 128);
     EXPECT_EQ(n[2], 128);

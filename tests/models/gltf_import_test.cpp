@@ -14,6 +14,7 @@
 #include "models/gltf_export.h"
 #include "models/textures.h"
 #include "models/tree_generator.h"
+#include "tests/app/hostile_inputs.h"
 #include "tests/models/gltf_fixtures.h"
 
 #include <fstream>
@@ -239,6 +240,83 @@ TEST_F(gltf_import, broken_files_throw_naming_the_file_and_the_part) {
     fs::create_directories(m_dir);
     std::ofstream(m_dir / "tree.obj") << "v 0 0 0\n";
     expect_error(m_dir / "tree.obj", {"tree.obj", "not a glTF file"});
+}
+
+// --- hostile files (issue 19) -----------------------------------------------------------------
+
+// On main indices went through float: 16,777,217 became 16,777,216 and 0xFFFFFFF0 became vertex
+// 0 (the float 2^32 truncated), silently drawing a triangle to the wrong vertex.
+TEST_F(gltf_import, indices_are_read_exactly) {
+    fs::create_directories(m_dir);
+    test::write_file(m_dir / "big_index.glb",
+                     test::make_glb(test::triangle_json(), test::make_triangle_buffer(0, 1, 16777217).bytes));
+    expect_error(m_dir / "big_index.glb", {"index 16777217 is past the last vertex"});
+    test::write_file(m_dir / "wrapped.glb",
+                     test::make_glb(test::triangle_json(), test::make_triangle_buffer(0, 1, 0xFFFFFFF0u).bytes));
+    expect_error(m_dir / "wrapped.glb", {"index 4294967280 is past the last vertex"});
+    test::write_file(m_dir / "good.glb", test::make_glb(test::triangle_json(), test::make_triangle_buffer().bytes));
+    const gltf_import_result r = import_gltf_plant(m_dir / "good.glb", 16);
+    EXPECT_EQ(r.model.lods[0].triangle_count(), 1u);
+}
+
+// On main a 2 KB file claiming 750 million elements allocated 3 GB before the bounds check.
+TEST_F(gltf_import, counts_are_checked_against_the_buffer_before_allocating) {
+    fs::create_directories(m_dir);
+    test::write_file(m_dir / "liar.glb", test::make_glb(test::triangle_json("", 750000000),
+                                                        test::make_triangle_buffer().bytes));
+    expect_error(m_dir / "liar.glb", {"liar.glb", "750000000 elements", "reads past the end of its buffer"});
+}
+
+// Found by the glTF fuzz target: a NORMAL accessor shorter than POSITION was read past its end
+// (a heap overflow under ASan, garbage normals without it, on main too).
+TEST_F(gltf_import, attributes_shorter_than_position_are_refused) {
+    fs::create_directories(m_dir);
+    std::string json = test::triangle_json();
+    const std::string position_only = R"("attributes":{"POSITION":1})";
+    json.replace(json.find(position_only), position_only.size(), R"("attributes":{"POSITION":1,"NORMAL":2})");
+    json.replace(json.rfind("]}"), 2,
+                 R"(,{"bufferView":1,"componentType":5126,"count":2,"type":"VEC3"}]})");
+    test::write_file(m_dir / "short_normals.glb", test::make_glb(json, test::make_triangle_buffer().bytes));
+    expect_error(m_dir / "short_normals.glb", {"short_normals.glb", "NORMAL has 2 elements but POSITION has 3"});
+}
+
+TEST_F(gltf_import, json_nested_beyond_256_levels_never_reaches_tinygltf) {
+    fs::create_directories(m_dir);
+    const std::string extras = ",\"extras\":" + std::string(100000, '[') + std::string(100000, ']');
+    test::write_file(m_dir / "deep.glb",
+                     test::make_glb(test::triangle_json("", 3, extras), test::make_triangle_buffer().bytes));
+    expect_error(m_dir / "deep.glb", {"deep.glb", "nests deeper than 256 levels"});
+}
+
+// On main "../../etc/passwd" was read, and tinygltf's size-mismatch message told its size.
+TEST_F(gltf_import, external_files_must_be_inside_the_models_folder) {
+    fs::create_directories(m_dir / "model");
+    std::ofstream(m_dir / "outside.bin") << std::string(12345, 'o');
+    const auto bin = test::make_triangle_buffer().bytes;
+    test::write_file(m_dir / "model" / "tri.bin", std::string(bin.begin(), bin.end()));
+    test::write_file(m_dir / "model" / "ok.gltf", test::triangle_json("tri.bin"));
+    EXPECT_NO_THROW(import_gltf_plant(m_dir / "model" / "ok.gltf", 16));
+    test::write_file(m_dir / "model" / "escape.gltf", test::triangle_json("../outside.bin"));
+    expect_error(m_dir / "model" / "escape.gltf",
+                 {"escape.gltf: buffer 0: URI '../outside.bin' leads outside the model's folder"});
+    fs::create_symlink(m_dir / "outside.bin", m_dir / "model" / "link.bin");
+    test::write_file(m_dir / "model" / "link.gltf", test::triangle_json("link.bin"));
+    expect_error(m_dir / "model" / "link.gltf", {"URI 'link.bin' leads outside the model's folder"});
+    try {
+        import_gltf_plant(m_dir / "model" / "escape.gltf", 16);
+    } catch (const std::exception& e) {
+        EXPECT_EQ(std::string(e.what()).find("12345"), std::string::npos) << "reveals the size: " << e.what();
+    }
+}
+
+TEST_F(gltf_import, image_dimensions_are_bounded_before_decoding) {
+    fs::create_directories(m_dir / "model");
+    const auto bin = test::make_triangle_buffer().bytes;
+    test::write_file(m_dir / "model" / "tri.bin", std::string(bin.begin(), bin.end()));
+    test::write_file(m_dir / "model" / "big.png", test::png_header_claiming(30000, 30000));
+    test::write_file(m_dir / "model" / "tree.gltf",
+                     test::triangle_json("tri.bin", 3, R"(,"images":[{"uri":"big.png"}],"textures":[{"source":0}])"));
+    expect_error(m_dir / "model" / "tree.gltf", {"30000x30000 pixels is more than Sylva reads"});
 }
 
 plant_model generated_tree() {

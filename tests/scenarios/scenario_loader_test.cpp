@@ -2,6 +2,8 @@
 // survive a round trip, and every kind of bad document gives exactly one located error.
 #include "scenarios/scenario_loader.h"
 
+#include "scenarios/json_reader.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -12,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
+#include <unistd.h>
 
 namespace sylva {
 namespace {
@@ -231,6 +234,84 @@ TEST(scenario_loader, missing_file_cannot_be_opened) {
         EXPECT_EQ(std::string(e.what()),
                   path.string() + ": cannot open file: No such file or directory");
     }
+}
+
+// --- errors: hostile documents (issue 19) ----------------------------------------------------
+
+scenario_error error_of(const std::string& text) {
+    try {
+        load_scenario_text(text, k_source);
+    } catch (const scenario_error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "loaded " << text.substr(0, 80);
+    return scenario_error("", "", "", "");
+}
+
+std::string nested(std::size_t levels) { return std::string(levels, '[') + std::string(levels, ']'); }
+
+// On main, nlohmann's out_of_range escaped the loader and aborted the process.
+TEST(scenario_loader, a_number_beyond_a_double_is_a_located_error) {
+    const scenario_error e = error_of(R"({"terrain": {"size_m": 1e400}, "species": []})");
+    EXPECT_EQ(e.json_path(), "/terrain/size_m");
+    EXPECT_EQ(e.value(), "1e400");
+    EXPECT_THAT(e.problem(), HasSubstr("number out of range"));
+    EXPECT_EQ(error_of(R"({"species": [{"name": "a", "height_m": -1e999}]})").json_path(),
+              "/species/0/height_m");
+    EXPECT_EQ(error_of("{\"frames\": " + std::string(400, '9') + "}").json_path(), "/frames");
+}
+
+// On main a million '[' parsed (nlohmann's parser is iterative) and then overflowed the stack in
+// describe_value's recursive dump while the error message was built.
+TEST(scenario_loader, nesting_beyond_64_levels_is_refused_before_parsing) {
+    const scenario_error e = error_of(R"({"name": )" + nested(1000000) + "}");
+    // The document's object is level 1, so the 64th '[' (column 10 + 63) opens level 65.
+    EXPECT_THAT(e.problem(), HasSubstr("nested deeper than 64 levels at line 1, column 73"));
+    EXPECT_THAT(error_of(std::string(1000000, '[')).problem(), HasSubstr("nested deeper than 64"));
+    // Within the limit the value is described, cut to about 60 characters.
+    const scenario_error within = error_of(R"({"name": )" + nested(60) + "}");
+    EXPECT_EQ(within.json_path(), "/name");
+    EXPECT_EQ(within.value(), std::string(57, '[') + "...");
+}
+
+TEST(scenario_loader, describe_value_never_dumps_more_than_it_shows) {
+    json deep = json::array();
+    for (int i = 0; i < 100000; ++i) {  // built, not parsed: the reader's depth check never saw it
+        json outer = json::array();
+        outer.push_back(std::move(deep));
+        deep = std::move(outer);
+    }
+    EXPECT_EQ(describe_value(deep), std::string(57, '[') + "...");
+    EXPECT_EQ(describe_value(json::parse(R"({"a": [1, 2], "b": "x"})")), R"({"a":[1,2],"b":"x"})");
+    json wide = json::array();
+    for (int i = 0; i < 1000000; ++i) wide.push_back(i);
+    EXPECT_EQ(describe_value(wide).size(), 60u);
+}
+
+TEST(scenario_loader, a_megabyte_key_does_not_flood_the_message) {
+    const scenario_error e = error_of("{\"" + std::string(1 << 20, 'k') + "\": 1}");
+    EXPECT_THAT(e.problem(), HasSubstr("unknown field"));
+    EXPECT_LT(std::string(e.what()).size(), 1000u);
+}
+
+// On main /dev/zero was read until memory ran out, and a FIFO blocked forever.
+TEST(scenario_loader, refuses_files_that_are_not_regular_or_too_large) {
+    try {
+        load_scenario_file("/dev/zero");
+        ADD_FAILURE() << "loaded /dev/zero";
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.problem(), "is a character device, not a regular file");
+    }
+    const auto dir = std::filesystem::temp_directory_path() / ("sylva_loader_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "big.json") << std::string(17 << 20, ' ');
+    try {
+        load_scenario_file(dir / "big.json");
+        ADD_FAILURE() << "loaded 17 MB";
+    } catch (const scenario_error& e) {
+        EXPECT_THAT(e.problem(), HasSubstr("16 MB limit"));
+    }
+    std::filesystem::remove_all(dir);
 }
 
 TEST(scenario_loader, malformed_json_reports_line_and_column) {
