@@ -78,8 +78,8 @@ std::vector<calibration_point> calibration_plan(float splat_factor) {
             {cost_path::opaque_splats, quality(4.0f, c_p, splat_style::opaque)},
             {cost_path::soft_splats, quality(0.5f, c_p, splat_style::soft)},
             {cost_path::soft_splats, quality(1.5f, c_p, splat_style::soft)},
-            {cost_path::layered_soft_splats, quality(2.0f, c_p, splat_style::soft)},
-            {cost_path::layered_soft_splats, quality(6.0f, c_p, splat_style::soft)},
+            {cost_path::layered_soft_splats, quality(2.0f, c_p, splat_style::soft), 4},
+            {cost_path::layered_soft_splats, quality(6.0f, c_p, splat_style::soft), 4},
             {cost_path::native_lines, quality(1.0f, c_p, splat_style::soft)},
             {cost_path::wide_lines, quality(2.0f, c_p, splat_style::soft)},
             {cost_path::wide_lines, quality(8.0f, c_p, splat_style::soft)}};

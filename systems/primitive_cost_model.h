@@ -77,6 +77,11 @@ struct cost_sample {
 struct calibration_point {
     cost_path path = cost_path::triangles;
     point_line_quality quality;
+    // How many times the calibration's usual count this point draws: the splat layer's frames
+    // jitter by tens of milliseconds whatever they draw (on llvmpipe at d' = 2 the marginal
+    // times of 64,000 splats spread 45 % around their median on a quiet machine, of 256,000
+    // 8 %), so more primitives drown the jitter.
+    std::uint32_t count_scale = 1;
 };
 std::vector<calibration_point> calibration_plan(float splat_factor);
 

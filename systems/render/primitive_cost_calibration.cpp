@@ -158,9 +158,10 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
 
     const std::vector<calibration_point> plan = calibration_plan(settings.splat_factor);
     calibration_result result;
-    // N per plan point: the first count that makes 2N cost min_marginal_ms more than N (after a
-    // frame that compiles the point's programs and touches its buffers).
-    // The median of three differences decides, so one stretched frame does not stop the search.
+    // N per plan point: a power of two times first_count at which 2N costs min_marginal_ms more
+    // than N, extrapolated from the marginal time at first_count (after a frame that compiles the
+    // point's programs and touches its buffers). The median of three differences decides, so
+    // one stretched frame does not mislead it.
     auto marginal_ms = [&](const calibration_point& p, std::uint32_t n) {
         std::vector<double> d;
         for (int k = 0; k < 3; ++k)
@@ -169,24 +170,28 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
         return d[1];
     };
     for (const calibration_point& p : plan) {
-        std::uint32_t n = settings.first_count;
+        const std::uint32_t first = std::min(settings.first_count * p.count_scale, settings.max_count / 2);
+        std::uint32_t n = first;
         (void)time_frame({p.path, p.quality, 2 * n});
-        while (2 * n < settings.max_count && marginal_ms(p, n) < settings.min_marginal_ms) n *= 2;
+        const double marginal = marginal_ms(p, n);
+        while (2 * n < settings.max_count && marginal * double(n) / double(first) < settings.min_marginal_ms)
+            n *= 2;
         result.counts.push_back(std::min(n, settings.max_count / 2));
     }
+    // Repetitions interleave the plan points that are not yet settled (standard error under
+    // target_relative_error of the cost), in a different order each time, N and 2N alternating
+    // which goes first: drift over the calibration weighs on every point alike.
     std::vector<std::vector<double>> marginal_us(plan.size());
-    auto settled = [&] {
-        for (const auto& samples : marginal_us) {
-            const auto [us, error] = median_and_error(samples);
-            if (!(error <= settings.target_relative_error * us)) return false;
-        }
-        return true;
+    auto settled = [&](std::size_t i) {
+        const auto [us, error] = median_and_error(marginal_us[i]);
+        return error <= settings.target_relative_error * us;
     };
-    for (int rep = 0;
-         rep < settings.max_repetitions && (rep < settings.min_repetitions || !settled()); ++rep)
+    for (int rep = 0; rep < settings.max_repetitions; ++rep) {
+        bool any = false;
         for (std::size_t k = 0; k < plan.size(); ++k) {
-            const std::size_t i =
-                (k + std::size_t(rep)) % plan.size();  // a different order each time
+            const std::size_t i = (k + std::size_t(rep)) % plan.size();
+            if (rep >= settings.min_repetitions && settled(i)) continue;
+            any = true;
             const calibration_frame once{plan[i].path, plan[i].quality, result.counts[i]};
             const calibration_frame twice{plan[i].path, plan[i].quality, 2 * result.counts[i]};
             double t_once = 0.0, t_twice = 0.0;
@@ -199,6 +204,8 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
             }
             marginal_us[i].push_back(1000.0 * (t_twice - t_once) / double(result.counts[i]));
         }
+        if (!any) break;
+    }
     for (std::size_t i = 0; i < plan.size(); ++i) {
         const auto [us, error] = median_and_error(marginal_us[i]);
         result.samples.push_back({plan[i].path, pixels_of(plan[i]), us, error});

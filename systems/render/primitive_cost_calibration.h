@@ -7,11 +7,12 @@
 // programs every frame uses; soft splats with their visibility pass, through the splat layer
 // from 4 px on) in front of a camera like a scene's, and takes the difference: the marginal
 // time of N primitives, free of everything a frame costs whatever it draws. N starts small and
-// doubles until that difference is well above the frame's own jitter. The repetitions then
-// interleave every plan point, N and 2N alternating which goes first, so a machine that slows
-// down over the calibration slows every point alike; each point's cost is the median of its
-// repetitions, with the median's standard error, and the fit refuses points whose cost is not
-// clearly above that error (calibration_refused): the caller then keeps the paper's costs.
+// is chosen so that difference is well above the frame's own jitter. The repetitions then
+// interleave the plan points, N and 2N alternating which goes first, so a machine that slows
+// down over the calibration slows every point alike, until each point's standard error is small;
+// each point's cost is the median of its repetitions, with the median's standard error, and the
+// fit refuses points whose cost is not clearly above that error (calibration_refused): the
+// caller then keeps the paper's costs.
 //
 // What a frame costs is measured up to glFinish, and on a CPU rasteriser (llvmpipe, softpipe)
 // as the CPU time of the whole process: the device is the CPU, and a primitive costs the time
@@ -50,14 +51,18 @@ frame_timer device_frame_timer(const std::string& gl_renderer);
 
 struct calibration_settings {
     float splat_factor = 1.3f;          // c_p the splats are sized with
-    std::uint32_t first_count = 16000;  // N's first try per plan point
-    std::uint32_t max_count = 256000;   // 2N never exceeds it (the meshes hold this many)
-    double min_marginal_ms = 40.0;      // N doubles until 2N costs this much more than N
-    // Repetitions of every plan point: at least the first, then more until every point's
+    // N of every plan point: first_count, doubled while 2N costs less than min_marginal_ms more
+    // than N (a fast device). One N for every path where the device allows it: the marginal
+    // cost of a primitive depends a little on how many are drawn (caches, binning), so a count
+    // that changed from run to run would move the costs with it.
+    std::uint32_t first_count = 64000;
+    std::uint32_t max_count = 1024000;  // 2N never exceeds it (the meshes hold this many)
+    double min_marginal_ms = 15.0;
+    // Repetitions of each plan point: at least the first, then more for a point until its
     // standard error is below target_relative_error of its cost, or the most are done.
-    int min_repetitions = 7;
-    int max_repetitions = 21;
-    double target_relative_error = 0.03;
+    int min_repetitions = 9;
+    int max_repetitions = 31;
+    double target_relative_error = 0.02;
     frame_timer timer;  // empty: process_cpu_ms (device_cost_model picks the device's)
 };
 
