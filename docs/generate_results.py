@@ -128,6 +128,9 @@ def index(pages):
                 won = [v["family"] for v in vs if v["beats_every_baseline_point"]]
                 summary.append(f"{lighting}: " + (", ".join(won) + " beat the baseline" if won else "none beats the baseline"))
         lines.append(f"| [{name}]({name}.md) | {meta['date']} | `{meta['commit'][:9]}` | {'; '.join(summary)} |")
+    if os.path.exists(os.path.join(RESULTS, "calibration.md")):
+        lines += ["", "The device calibration's run-to-run spread: [calibration.md](calibration.md) "
+                      "(`docs/measure_calibration.py`)."]
     return "\n".join(lines) + "\n"
 
 

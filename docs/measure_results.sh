@@ -5,7 +5,9 @@
 #
 #   docs/measure_results.sh [SCENARIO ...]      default: default forest landscape meadow time_of_day
 #
-# Environment: ROUNDS (timing rounds, default 5), OUT (bench outputs, default out/results).
+# Environment: ROUNDS (timing rounds, default 5), OUT (bench outputs, default out/results),
+# CALIBRATION_RUNS (runs of docs/measure_calibration.py, default 5), ONLY (the configurations,
+# default the lists below), FRAMES_<scenario> (its frame count, default in frames_of).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -23,6 +25,8 @@ sh="brute_force_sh,crossed_billboard_only_sh,baseline_25m_sh,baseline_sh,baselin
 sh+=",mesh_lod_sh,billboard_clouds_sh,points_lines_sh,points_lines_d2_sh"
 
 frames_of() {  # the supersampled reference costs most where the plants are many
+  local override="FRAMES_$1"
+  if [ -n "${!override:-}" ]; then echo "${!override}"; return; fi
   case "$1" in
     landscape) echo 6 ;;
     forest | meadow) echo 12 ;;
@@ -31,11 +35,14 @@ frames_of() {  # the supersampled reference costs most where the plants are many
 }
 
 ./sylva build >&2
+# The device's primitive costs first: the points-and-lines configurations plan with them, and
+# calibration.md records how far they spread from run to run.
+python3 docs/measure_calibration.py --runs "${CALIBRATION_RUNS:-5}" >&2
 runs=()
 for s in "${scenarios[@]}"; do
   dir="$out/$s"
   mkdir -p "$dir"
-  cmd="./sylva bench $s --frames $(frames_of "$s") --timing-rounds $rounds --only $normal,$sh --out $dir"
+  cmd="./sylva bench $s --frames $(frames_of "$s") --timing-rounds $rounds --only ${ONLY:-$normal,$sh} --out $dir"
   echo "[measure] $cmd" >&2
   $cmd
   commit="$(git rev-parse HEAD)"
