@@ -8,6 +8,8 @@
 #include <memory>
 #include <utility>
 
+#include "ecs/tsan_handoff.h"
+
 namespace sylva::ecs {
 
 class executor {
@@ -22,7 +24,17 @@ public:
     // it); calling run() again from inside f just calls f.
     template <class F>
     decltype(auto) run(F&& f) {
-        return m_arena->execute(std::forward<F>(f));
+        // f may run on a worker when the arena has no slot for the caller (ecs/tsan_handoff.h).
+        const task_handoff handoff;
+        handoff.spawn();
+        struct joined_on_return {
+            const task_handoff& h;
+            ~joined_on_return() { h.joined(); }
+        } joined{handoff};
+        return m_arena->execute([&]() -> decltype(auto) {
+            const auto in_task = handoff.task();
+            return f();
+        });
     }
 
     tbb::task_arena& arena() { return *m_arena; }

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/tsan_handoff.h"
+
 namespace sylva::ecs {
 
 inline constexpr std::size_t k_default_chunk = 4096;
@@ -32,13 +34,17 @@ void parallel_for(std::size_t count, std::size_t chunk, F&& f) {
         return;
     }
     // simple_partitioner with grain 1: one task per chunk index, never merged or split further.
+    const task_handoff handoff;
+    handoff.spawn();
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, chunks, 1),
         [&](const tbb::blocked_range<std::size_t>& r) {
+            const auto in_task = handoff.task();
             for (std::size_t c = r.begin(); c != r.end(); ++c)
                 f(c * chunk, std::min(count, (c + 1) * chunk), c);
         },
         tbb::simple_partitioner{});
+    handoff.joined();
 }
 
 // map(begin, end, chunk_index) -> T per chunk, stored by chunk index, then folded left to right:

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "ecs/tsan_handoff.h"
+
 namespace sylva::ecs {
 
 namespace {
@@ -111,21 +113,36 @@ void schedule::run_concurrent(const phase_group& group, world& w) {
         m_pending[i].store(static_cast<std::uint32_t>(m_predecessors[i].size()),
                            std::memory_order_relaxed);
     tbb::task_group tasks;
+    // Each system's task acquires what its spawner released on that system's counter: the edge
+    // TBB's spawn makes, told to TSan (ecs/tsan_handoff.h); the tasks' ends are joined below.
+    const task_handoff ends;
     struct launcher {
         schedule& self;
         world& w;
         tbb::task_group& tasks;
+        const task_handoff& ends;
+        void spawn(std::uint32_t i) const {
+            // The token travels in the task itself: the task must acquire before it reads
+            // anything the spawner wrote, this launcher included.
+            const void* token = &self.m_pending[i];
+            tsan_release(token);
+            tasks.run([this, i, token] {
+                tsan_acquire(token);
+                const auto in_task = ends.task();
+                (*this)(i);
+            });
+        }
         void operator()(std::uint32_t i) const {
             self.run_one(i, w);
             for (const std::uint32_t next : self.m_successors[i])
-                if (self.m_pending[next].fetch_sub(1, std::memory_order_acq_rel) == 1)
-                    tasks.run([this, next] { (*this)(next); });
+                if (self.m_pending[next].fetch_sub(1, std::memory_order_acq_rel) == 1) spawn(next);
         }
     };
-    const launcher launch{*this, w, tasks};
+    const launcher launch{*this, w, tasks, ends};
     for (const std::uint32_t i : group.systems)
-        if (m_predecessors[i].empty()) tasks.run([&launch, i] { launch(i); });
+        if (m_predecessors[i].empty()) launch.spawn(i);
     tasks.wait();
+    ends.joined();
 }
 
 void schedule::run_one(std::uint32_t system, world& w) {

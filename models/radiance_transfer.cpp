@@ -20,6 +20,7 @@
 #include "models/random.h"
 #include "models/texture_sampling.h"
 #include "systems/lighting/spherical_harmonics.h"
+#include "ecs/tsan_handoff.h"
 
 namespace sylva {
 namespace {
@@ -326,12 +327,16 @@ radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receiver
                 float(k_clamped_cosine[k] * y_back[k] - back.occluded[k] + back.bounce[k]);
         }
     };
+    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
+    handoff.spawn();
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, receivers.size(), k_receiver_chunk),
         [&](const tbb::blocked_range<std::size_t>& range) {
+            const auto in_task = handoff.task();
             for (std::size_t r = range.begin(); r != range.end(); ++r) bake_one(r);
         },
         tbb::simple_partitioner());
+    handoff.joined();
     return out;
 }
 

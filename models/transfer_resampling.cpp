@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "ecs/tsan_handoff.h"
+
 namespace sylva {
 namespace {
 
@@ -51,7 +53,10 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
     tree.buildIndex();
     const std::uint32_t count = std::min<std::uint32_t>(k, std::uint32_t(full.vertices.size()));
     const std::size_t chunks = (receivers.size() + k_chunk - 1) / k_chunk;
+    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
+    handoff.spawn();
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+        const auto in_task = handoff.task();
         std::vector<std::uint32_t> nearest(count);
         std::vector<float> distances(count);
         const std::size_t end = std::min(receivers.size(), (chunk + 1) * k_chunk);
@@ -77,6 +82,7 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
             }
         }
     });
+    handoff.joined();
     return out;
 }
 

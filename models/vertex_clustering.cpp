@@ -11,6 +11,7 @@
 #include <string>
 
 #include "models/random.h"
+#include "ecs/tsan_handoff.h"
 
 namespace sylva {
 std::vector<std::uint32_t> triangle_vertices(const mesh_data& mesh, std::span<const std::uint32_t> triangles) {
@@ -90,8 +91,11 @@ std::vector<glm::dvec3> seed_centres(std::span<const glm::vec3> points, std::uin
 // Nearest centre per point (ties to the lower index); true when a label changed.
 bool assign(std::span<const glm::vec3> points, const std::vector<glm::dvec3>& centres, std::vector<std::uint32_t>& labels) {
     std::vector<std::uint8_t> changed(points.size(), 0);
+    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
+    handoff.spawn();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), k_assign_grain),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+                          const auto in_task = handoff.task();
                           for (std::size_t i = range.begin(); i < range.end(); ++i) {
                               std::uint32_t best = 0;
                               double best_d = distance2(centres[0], points[i]);
@@ -103,6 +107,7 @@ bool assign(std::span<const glm::vec3> points, const std::vector<glm::dvec3>& ce
                               labels[i] = best;
                           }
                       });
+    handoff.joined();
     return std::any_of(changed.begin(), changed.end(), [](std::uint8_t c) { return c != 0; });
 }
 
