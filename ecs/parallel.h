@@ -47,6 +47,22 @@ void parallel_for(std::size_t count, std::size_t chunk, F&& f) {
     handoff.joined();
 }
 
+// f(i) for every i in [0, count), in any order, on any thread of the arena: for loops whose
+// iterations are independent (the bakers). Partitioned as tbb::parallel_for(0, count, f) is,
+// but the body reaches TBB by value, so the task acquires its hand-off before it reads anything
+// the caller wrote (ecs/tsan_handoff.h; the index form would read f through a reference first).
+template <class F>
+void parallel_for_each_index(std::size_t count, F&& f) {
+    const task_handoff handoff;
+    handoff.spawn();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          const auto in_task = handoff.task();
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+                      });
+    handoff.joined();
+}
+
 // map(begin, end, chunk_index) -> T per chunk, stored by chunk index, then folded left to right:
 // combine(combine(combine(identity, p0), p1), ...). Floating-point sums are therefore the same
 // for any thread count. `partials` is caller-owned scratch so a warm frame does not allocate.

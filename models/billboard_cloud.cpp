@@ -1,7 +1,5 @@
 #include "models/billboard_cloud.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ecs/tsan_handoff.h"
+#include "ecs/parallel.h"
 
 namespace sylva {
 namespace {
@@ -359,13 +357,9 @@ billboard_cloud_layout plan_billboard_cloud(const plant_model& model, const bill
     layout.clustering = cluster_triangles(mesh, model.has_hierarchy, clustering);
     const std::vector<std::vector<std::uint32_t>> members = layout.clustering.triangles();
     layout.clusters.resize(members.size());
-    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
-    handoff.spawn();
-    tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t c) {
-        const auto in_task = handoff.task();
+    ecs::parallel_for_each_index(members.size(), [&](std::size_t c) {
         layout.clusters[c] = box_cluster(mesh, members[c], settings.box);
     });
-    handoff.joined();
     for (std::size_t c = 0; c < members.size(); ++c) {
         std::size_t foliage = 0;
         for (const submesh& sub : mesh.submeshes)
@@ -406,10 +400,7 @@ billboard_cloud bake_billboard_cloud(const plant_model& model,
     const std::vector<std::vector<std::uint32_t>> members = layout.clustering.triangles();
     const mesh_data& mesh = model.lods[0];
     const light_depth_map light = bake_light_depth(model, settings);
-    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
-    handoff.spawn();
-    tbb::parallel_for(std::size_t(0), cloud.billboards.size(), [&](std::size_t i) {
-        const auto in_task = handoff.task();
+    ecs::parallel_for_each_index(cloud.billboards.size(), [&](std::size_t i) {
         const cloud_billboard& b = cloud.billboards[i];
         billboard_bake_settings bake;
         bake.width = b.rect.width / 2;
@@ -430,7 +421,6 @@ billboard_cloud bake_billboard_cloud(const plant_model& model,
             if (transfer) blit_transfer(cloud.transfer_pages, image, x, b.rect.y);
         }
     });
-    handoff.joined();
     for (const cloud_billboard& b : cloud.billboards) {
         for (image_rgba8& page : cloud.pages) extend_edges(page, b.rect, settings.gutter / 2);
         for (image_rgba8& page : cloud.transfer_pages)

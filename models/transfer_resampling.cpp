@@ -1,14 +1,12 @@
 #include "models/transfer_resampling.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <nanoflann.hpp>
 #include <stdexcept>
 #include <vector>
 
-#include "ecs/tsan_handoff.h"
+#include "ecs/parallel.h"
 
 namespace sylva {
 namespace {
@@ -53,10 +51,7 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
     tree.buildIndex();
     const std::uint32_t count = std::min<std::uint32_t>(k, std::uint32_t(full.vertices.size()));
     const std::size_t chunks = (receivers.size() + k_chunk - 1) / k_chunk;
-    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
-    handoff.spawn();
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
-        const auto in_task = handoff.task();
+    ecs::parallel_for_each_index(chunks, [&](std::size_t chunk) {
         std::vector<std::uint32_t> nearest(count);
         std::vector<float> distances(count);
         const std::size_t end = std::min(receivers.size(), (chunk + 1) * k_chunk);
@@ -82,7 +77,6 @@ radiance_transfer resample_transfer(const mesh_data& full, const radiance_transf
             }
         }
     });
-    handoff.joined();
     return out;
 }
 
