@@ -1,9 +1,6 @@
 #include "models/radiance_transfer.h"
 
 #include <embree3/rtcore.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,7 +17,7 @@
 #include "models/random.h"
 #include "models/texture_sampling.h"
 #include "systems/lighting/spherical_harmonics.h"
-#include "ecs/tsan_handoff.h"
+#include "ecs/parallel.h"
 
 namespace sylva {
 namespace {
@@ -327,16 +324,10 @@ radiance_transfer transfer_occluders::bake_pass(std::span<const vertex> receiver
                 float(k_clamped_cosine[k] * y_back[k] - back.occluded[k] + back.bounce[k]);
         }
     };
-    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
-    handoff.spawn();
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, receivers.size(), k_receiver_chunk),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-            const auto in_task = handoff.task();
-            for (std::size_t r = range.begin(); r != range.end(); ++r) bake_one(r);
-        },
-        tbb::simple_partitioner());
-    handoff.joined();
+    // Receivers are independent: chunks of k_receiver_chunk, one task each (ecs/parallel.h).
+    ecs::parallel_for(receivers.size(), k_receiver_chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t r = begin; r != end; ++r) bake_one(r);
+    });
     return out;
 }
 

@@ -1,8 +1,5 @@
 #include "models/vertex_clustering.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -11,7 +8,7 @@
 #include <string>
 
 #include "models/random.h"
-#include "ecs/tsan_handoff.h"
+#include "ecs/parallel.h"
 
 namespace sylva {
 std::vector<std::uint32_t> triangle_vertices(const mesh_data& mesh, std::span<const std::uint32_t> triangles) {
@@ -91,23 +88,18 @@ std::vector<glm::dvec3> seed_centres(std::span<const glm::vec3> points, std::uin
 // Nearest centre per point (ties to the lower index); true when a label changed.
 bool assign(std::span<const glm::vec3> points, const std::vector<glm::dvec3>& centres, std::vector<std::uint32_t>& labels) {
     std::vector<std::uint8_t> changed(points.size(), 0);
-    const ecs::task_handoff handoff;  // TSan sees TBB's hand-offs only through this
-    handoff.spawn();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), k_assign_grain),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          const auto in_task = handoff.task();
-                          for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                              std::uint32_t best = 0;
-                              double best_d = distance2(centres[0], points[i]);
-                              for (std::uint32_t c = 1; c < centres.size(); ++c) {
-                                  const double d = distance2(centres[c], points[i]);
-                                  if (d < best_d) best_d = d, best = c;
-                              }
-                              changed[i] = labels[i] != best;
-                              labels[i] = best;
-                          }
-                      });
-    handoff.joined();
+    ecs::parallel_for(points.size(), k_assign_grain, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t i = begin; i < end; ++i) {
+            std::uint32_t best = 0;
+            double best_d = distance2(centres[0], points[i]);
+            for (std::uint32_t c = 1; c < centres.size(); ++c) {
+                const double d = distance2(centres[c], points[i]);
+                if (d < best_d) best_d = d, best = c;
+            }
+            changed[i] = labels[i] != best;
+            labels[i] = best;
+        }
+    });
     return std::any_of(changed.begin(), changed.end(), [](std::uint8_t c) { return c != 0; });
 }
 
