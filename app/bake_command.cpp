@@ -10,10 +10,10 @@
 #include "app/commands.h"
 #include "app/scenario_options.h"
 #include "io/input_file.h"
-#include "models/bake_cache.h"
-#include "models/plant_model_io.h"
+#include "models/cache/bake_cache.h"
+#include "models/cache/plant_model_io.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/species_models.h"
+#include "setup/species_models.h"
 
 namespace sylva {
 namespace {

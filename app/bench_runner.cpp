@@ -17,8 +17,8 @@
 #include "measure/image_metrics.h"
 #include "measure/temporal_metrics.h"
 #include "measure/transition_windows.h"
-#include "models/image_ops.h"
-#include "models/textures.h"
+#include "models/image/image_ops.h"
+#include "models/generate/textures.h"
 
 namespace sylva {
 namespace {

@@ -13,7 +13,7 @@
 #include "app/bench_catalogue.h"
 #include "app/bench_report.h"
 #include "app/scenario_player.h"
-#include "models/bake_cache.h"
+#include "models/cache/bake_cache.h"
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
 

@@ -12,7 +12,7 @@
 #include "app/commands.h"
 #include "app/device_costs.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/spawn_scenario.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The primitive cost model of the GL device Sylva draws on (systems/primitive_cost_model.h),
+// The primitive cost model of the GL device Sylva draws on (lod/primitive_cost_model.h),
 // calibrated once per device and kept in the bake cache: the selection of points, lines and
 // triangles (Deussen 2002 §4.1, §5.3) then weighs them by what they cost here, for any d'.
 //
@@ -13,8 +13,8 @@
 #include <optional>
 #include <string>
 
-#include "models/bake_cache.h"
-#include "systems/primitive_cost_model.h"
+#include "models/cache/bake_cache.h"
+#include "lod/primitive_cost_model.h"
 #include "systems/render/gl_context.h"
 #include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/renderer.h"

@@ -7,8 +7,8 @@
 #include "components/point_prefix.h"
 #include "components/tile.h"
 #include "systems/aggregate_eco_tiles_system.h"
-#include "systems/scene_assets.h"
-#include "systems/tile_point_sets.h"
+#include "resources/scene_assets.h"
+#include "setup/tile_point_sets.h"
 #include "systems/update_point_prefix_system.h"
 
 namespace sylva {

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "app/commands.h"
-#include "models/billboard_cloud.h"
-#include "models/gltf_export.h"
-#include "models/gltf_import.h"
-#include "models/plant_library.h"
+#include "models/bake/billboard_cloud.h"
+#include "models/gltf/gltf_export.h"
+#include "models/gltf/gltf_import.h"
+#include "models/generate/plant_library.h"
 
 namespace sylva {
 namespace {

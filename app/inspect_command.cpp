@@ -5,8 +5,8 @@
 #include <string>
 
 #include "app/commands.h"
-#include "models/gltf_import.h"
-#include "models/gltf_plant_builder.h"
+#include "models/gltf/gltf_import.h"
+#include "models/gltf/gltf_plant_builder.h"
 
 namespace sylva {
 namespace {

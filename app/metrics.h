@@ -28,7 +28,7 @@ struct frame_record {
     std::vector<double> shadow_texel_m;
     std::vector<double> shadow_split_m;
     // Per cascade, whether its slice may hold a receiver and so was drawn (1) or shades only
-    // air and was skipped (0; systems/shadow_receivers.h).
+    // air and was skipped (0; resources/shadow_receivers.h).
     std::vector<int> shadow_drawn;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "app/commands.h"
-#include "models/gltf_export.h"
-#include "models/plant_library.h"
+#include "models/gltf/gltf_export.h"
+#include "models/generate/plant_library.h"
 
 namespace sylva {
 namespace {

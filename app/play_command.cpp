@@ -8,8 +8,8 @@
 #include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
-#include "models/image_ops.h"
-#include "models/textures.h"
+#include "models/image/image_ops.h"
+#include "models/generate/textures.h"
 #include "scenarios/scenario_loader.h"
 
 namespace sylva {

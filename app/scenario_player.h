@@ -9,15 +9,15 @@
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
 #include "ecs/world.h"
-#include "models/bake_cache.h"
-#include "models/image.h"
+#include "models/cache/bake_cache.h"
+#include "models/image/image.h"
 #include "scenarios/scenario.h"
 #include "systems/render/gl_context.h"
 #include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/renderer.h"
 #include "systems/adapt_sample_distance_system.h"
-#include "systems/lod_policy.h"
-#include "systems/scene_assets.h"
+#include "resources/lod_policy.h"
+#include "resources/scene_assets.h"
 
 namespace sylva {
 

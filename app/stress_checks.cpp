@@ -26,18 +26,18 @@
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
 #include "measure/image_metrics.h"
-#include "models/gltf_export.h"
-#include "models/gltf_import.h"
-#include "models/plant_library.h"
-#include "models/terrain.h"
+#include "models/gltf/gltf_export.h"
+#include "models/gltf/gltf_import.h"
+#include "models/generate/plant_library.h"
+#include "models/terrain/terrain.h"
 #include "scenarios/camera_path.h"
 #include "scenarios/scenario_loader.h"
 #include "systems/cull_system.h"
-#include "systems/eco_tiles.h"
-#include "systems/embedded_files.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/lighting/spherical_harmonics.h"
-#include "systems/playback.h"
+#include "lod/eco_tiles.h"
+#include "scenarios/embedded_files.h"
+#include "lighting/sky_model.h"
+#include "lighting/spherical_harmonics.h"
+#include "resources/playback.h"
 #include "systems/select_representation_system.h"
 #include "systems/update_camera_system.h"
 #include "systems/update_sun_system.h"
@@ -217,7 +217,7 @@ tree_stats inspect_tree(const eco_tile_tree& tree, std::span<const glm::dvec2> x
     return s;
 }
 
-// The spawner's steps (systems/eco_tiles.h) for plants at `xz`, 1e6 m from the origin, with or
+// The spawner's steps (lod/eco_tiles.h) for plants at `xz`, 1e6 m from the origin, with or
 // without tile entities; then one cull. Returns each plant's (visible, in_shadow_range).
 std::vector<lod_state> cull_plants(std::span<const glm::dvec2> xz, const eco_tile_tree* tree,
                                    const heightfield& terrain, int threads) {

@@ -49,10 +49,10 @@ std::vector<stress_row> check_camera_path_offsets();
 
 // Writes glTF files into `scratch_dir` (from the grass preset through the exporter, one vertex
 // made NaN, +inf or -inf, or zero-area triangles appended) and imports them; checks every preset
-// at every level for zero-area triangles (models/gltf_import.h is_zero_area_triangle).
+// at every level for zero-area triangles (models/gltf/gltf_import.h is_zero_area_triangle).
 std::vector<stress_row> check_degenerate_models(const std::filesystem::path& scratch_dir);
 
-// Eco tiles (systems/eco_tiles.h) over 2,000 plants at one point, on an axis-parallel line, on a
+// Eco tiles (lod/eco_tiles.h) over 2,000 plants at one point, on an axis-parallel line, on a
 // diagonal line, and on a tile split line: bounded depth and node count, every plant in exactly
 // one leaf; culling with the tiles equals flat culling for every plant.
 std::vector<stress_row> check_plant_clusters(int threads);

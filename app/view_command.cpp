@@ -16,9 +16,9 @@
 #include "app/scenario_player.h"
 #include "scenarios/scenario_loader.h"
 #include "components/camera.h"
-#include "models/textures.h"
+#include "models/generate/textures.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/playback.h"
+#include "resources/playback.h"
 #include "systems/render/render_target.h"
 
 namespace sylva {

@@ -5,9 +5,9 @@
 // and billboards are reported as counters.
 #include <benchmark/benchmark.h>
 
-#include "models/billboard_cloud.h"
-#include "models/plant_library.h"
-#include "models/tree_generator.h"
+#include "models/bake/billboard_cloud.h"
+#include "models/generate/plant_library.h"
+#include "models/generate/tree_generator.h"
 
 namespace {
 

@@ -19,7 +19,7 @@
 #include "ecs/world.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
-#include "systems/draw_list.h"
+#include "resources/draw_list.h"
 #include "systems/fit_shadow_cascades_system.h"
 #include "systems/select_representation_system.h"
 #include "systems/update_camera_system.h"

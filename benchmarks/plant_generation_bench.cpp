@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "models/plant_library.h"
-#include "models/tree_generator.h"
+#include "models/generate/plant_library.h"
+#include "models/generate/tree_generator.h"
 
 namespace {
 

@@ -9,9 +9,9 @@
 
 #include <chrono>
 
-#include "models/plant_library.h"
-#include "models/radiance_transfer.h"
-#include "models/tree_generator.h"
+#include "models/generate/plant_library.h"
+#include "models/bake/radiance_transfer.h"
+#include "models/generate/tree_generator.h"
 
 namespace {
 

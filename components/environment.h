@@ -34,7 +34,7 @@ struct environment {
     // spawn_scenario sets the first sun keyframe's. Every projection is then a pure function of
     // the current sun and settings, whatever path the sun took (deterministic under seeking).
     float reference_azimuth_deg = 140.0f;
-    // The environment map (systems/lighting/environment_map.h), when the scenario names one:
+    // The environment map (lighting/environment_map.h), when the scenario names one:
     // its radiance projection as the file lies (no rotation, intensity 1) and the scenario's
     // extra turn about y. It then replaces the analytic sky in radiance_sh and irradiance_sh.
     bool has_map = false;

@@ -3,7 +3,7 @@
 // billboard cloud and the polygonal plant near the viewer, and between the cloud and the two
 // crossed billboards far away). Sort-free: the primary representation (lod_state::current) is
 // drawn whole, the partner at `value`; neither is blended (the two overlap across a band, see
-// systems/billboard_cloud_lod.h, so the primary never needs to be partial). A billboard cloud
+// lod/billboard_cloud_lod.h, so the primary never needs to be partial). A billboard cloud
 // fades by raising its alpha threshold, every other representation by a stable screen-door
 // dissolve (shaders/surface.frag). Outside a transition band `partner` is none.
 // Writer: select_representation; read by build_draw_list.

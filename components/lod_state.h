@@ -14,7 +14,7 @@ enum class representation : std::uint8_t {
     mesh_reduced,  // the model generated at reduced detail (fewer segments, fewer larger leaves)
     mesh_far,      // trunk and a few dozen large leaf cards, for trees far away
     // Two vertical quads crossing at the trunk with baked colour and normal atlases
-    // (models/crossed_billboard.h): the usual engine baseline beyond the far mesh. Not a mesh
+    // (models/bake/crossed_billboard.h): the usual engine baseline beyond the far mesh. Not a mesh
     // level: build_draw_list's coarser() stops at mesh_far and never yields it.
     crossed_billboard,
     // Deussen 2002: prefixes of the plant's random-order triangles, points and lines (one

@@ -1,7 +1,7 @@
 #pragma once
 // Deussen 2002 §6.2 eco tile: a square of the landscape subdivided until it holds at most N
 // plants. Tiles are entities; children are addressed by handle so the hierarchy stays plain data.
-// Writer: population spawning (systems/eco_tiles.h, create_tile_entities); read by cull.
+// Writer: population spawning (lod/eco_tiles.h, create_tile_entities); read by cull.
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>

@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "models/gltf_container.h"
-#include "models/gltf_import.h"
+#include "models/gltf/gltf_container.h"
+#include "models/gltf/gltf_import.h"
 #include "scenarios/scenario_loader.h"
 
 namespace sylva::fuzz {

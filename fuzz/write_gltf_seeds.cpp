@@ -1,11 +1,11 @@
-// Writes the glTF seed corpus: every fixture of tests/models/gltf_fixtures.h (real-world shapes
+// Writes the glTF seed corpus: every fixture of tests/models/gltf/gltf_fixtures.h (real-world shapes
 // and broken files alike) into the folder given as the only argument.
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 
 #include "tests/app/hostile_inputs.h"
-#include "tests/models/gltf_fixtures.h"
+#include "tests/models/gltf/gltf_fixtures.h"
 
 int main(int argc, char** argv) {
     if (argc != 2) {

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "models/image.h"
+#include "models/image/image.h"
 
 namespace sylva::flip_detail {
 

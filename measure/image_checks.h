@@ -1,6 +1,6 @@
 #pragma once
 // Internal to measure/: argument checks shared by the metric implementations.
-#include "models/image.h"
+#include "models/image/image.h"
 
 namespace sylva {
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/image.h"
+#include "models/image/image.h"
 
 namespace sylva {
 

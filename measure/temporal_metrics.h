@@ -18,7 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "models/image.h"
+#include "models/image/image.h"
 
 namespace sylva {
 

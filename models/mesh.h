@@ -21,10 +21,10 @@ enum class material_kind : std::uint8_t {
     bark,    // opaque, textured
     leaf,    // alpha-tested (discard below 0.5), double-sided, translucent-ish diffuse
     ground,  // opaque terrain, tiled texture
-    // A baked billboard (models/crossed_billboard.h): alpha-tested (discard below 0.5),
+    // A baked billboard (models/bake/crossed_billboard.h): alpha-tested (discard below 0.5),
     // double-sided, normal-mapped; shaded like leaves with the normal from its normal map.
     billboard,
-    // A billboard-cloud quad (models/billboard_cloud.h, Behrendt 2005 §2.3): one-sided (drawn
+    // A billboard-cloud quad (models/bake/billboard_cloud.h, Behrendt 2005 §2.3): one-sided (drawn
     // with back faces culled; each side of a billboard is its own quad), coverage alpha-tested
     // from the normal page and faded by a distance threshold on the gaussian colour alpha.
     // Appended last so serialized meshes keep the values above.
@@ -32,7 +32,7 @@ enum class material_kind : std::uint8_t {
 };
 
 // How a mesh's indices are read: triangle lists for every model mesh; point and line lists for
-// the point/line representation (models/point_line_model.h), assembled when a scene is built.
+// the point/line representation (models/bake/point_line_model.h), assembled when a scene is built.
 enum class primitive_kind : std::uint8_t { triangles, points, lines };
 
 struct submesh {
@@ -74,7 +74,7 @@ struct leaf_record {
     part_kind kind = part_kind::leaf;
 };
 
-// A vertex's precomputed radiance transfer (Behrendt 2005 §4, models/radiance_transfer.h) as the
+// A vertex's precomputed radiance transfer (Behrendt 2005 §4, models/bake/radiance_transfer.h) as the
 // renderer streams it: 9 SH coefficients for light on the side the normal faces, then 9 for the
 // other side, as IEEE half floats (2 bands: coefficients 4..8 are zero), 2 halves of padding.
 // Mirrored by the transfer attributes in shaders/surface.vert (locations 5..9).
@@ -91,7 +91,7 @@ struct mesh_data {
     glm::vec3 bounds_max{0.0f};
     std::vector<triangle_part> parts;  // one per triangle, empty when unknown
     std::vector<leaf_record> leaves;   // one per foliage element, empty when unknown
-    // Not serialised (models/mesh_io.h): every cached mesh is a triangle list.
+    // Not serialised (models/cache/mesh_io.h): every cached mesh is a triangle list.
     primitive_kind primitive = primitive_kind::triangles;
     // Not serialised either (the transfer bake has its own cache entry): one per vertex when the
     // mesh is lit by precomputed radiance transfer, else empty.

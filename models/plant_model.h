@@ -1,13 +1,13 @@
 #pragma once
 // A plant species as the renderer and the later LOD bakes consume it, whichever way it was
-// made: generated from a preset (models/plant_library.h) or imported from glTF
-// (models/gltf_import.h). Three mesh levels of the same plant, its textures, and what is known
+// made: generated from a preset (models/generate/plant_library.h) or imported from glTF
+// (models/gltf/gltf_import.h). Three mesh levels of the same plant, its textures, and what is known
 // about its structure.
 #include <array>
 #include <cstdint>
 #include <string>
 
-#include "models/image.h"
+#include "models/image/image.h"
 #include "models/mesh.h"
 
 namespace sylva {

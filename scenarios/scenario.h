@@ -24,7 +24,7 @@
 //     frequency      number       0.008        0 .. 10 cycles per metre (lowest octave)
 //     seed           integer      7            0 .. 2^64-1
 //     ground_color   [r, g, b]    [0.32, 0.30, 0.18]  each 0 .. 1 (linear)
-//     heightmap      file path    none         16-bit PNG or EXR, square (models/terrain.h
+//     heightmap      file path    none         16-bit PNG or EXR, square (models/terrain/terrain.h
 //                                              load_heightmap: 0..1 -> 0..height_m over size_m);
 //                                              when set, resolution, octaves, frequency and
 //                                              seed are ignored
@@ -65,7 +65,7 @@
 //     placement      string     "poisson"    "poisson" (dart throwing) or "jittered" (grid)
 //     density_map    file path  none         greyscale PNG over the area (white: plants kept,
 //                                            black: none; row 0 at z0); not with density
-//     density {                 none         procedural density (models/density.h)
+//     density {                 none         procedural density (models/terrain/density.h)
 //       frequency    number     4            0.01 .. 1000 noise cycles across the area
 //       coverage     number     0.5          0 .. 1 fraction of the area that is dense
 //     }
@@ -97,7 +97,7 @@
 //   environment {  what lights the scene besides the sun (the sun stays a directional light)
 //     map              file path  none  an HDR latitude-longitude map (.hdr or .exr, linear
 //                                       float RGB, width = 2 x height; orientation in
-//                                       systems/lighting/environment_map.h: the image centre
+//                                       lighting/environment_map.h: the image centre
 //                                       is north, -z, the top row the zenith). When set, its
 //                                       SH projection replaces the Preetham sky's (turbidity
 //                                       then only colours the sun) and it is drawn as the sky;
@@ -118,7 +118,7 @@
 //     shadows   boolean  true
 //     exposure  number   1     0.001 .. 1000
 //   }
-//   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (systems/eco_tiles.h)
+//   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true
 //     max_plants_per_tile  integer  256   1 .. 1000000; a tile holding more is split in four
 //   }
@@ -177,11 +177,11 @@
 
 namespace sylva {
 
-// The plant generator presets a species may name (models/tree_generator.h implements each).
+// The plant generator presets a species may name (models/generate/tree_generator.h implements each).
 inline constexpr std::array<std::string_view, 7> k_tree_generators = {
     "broadleaf", "broadleaf_hd", "conifer", "shrub", "grass", "flower", "fern"};
 
-// How a population is spread (models/placement.h placement_rules::poisson).
+// How a population is spread (models/terrain/placement.h placement_rules::poisson).
 inline constexpr std::array<std::string_view, 2> k_placement_modes = {"poisson", "jittered"};
 
 struct terrain_settings {
@@ -239,7 +239,7 @@ struct population_settings {
 // A camera keyframe as the scenario states it. The key is kept whole (the camera path's own
 // type) and the flag says how to read its heights: when above_terrain is true, key.position.y
 // and key.target.y are metres above the terrain under them and are resolved to world heights
-// once the terrain exists (systems/spawn_scenario.cpp).
+// once the terrain exists (setup/spawn_scenario.cpp).
 struct scenario_camera_key {
     camera_keyframe key;
     bool above_terrain = true;
@@ -305,7 +305,7 @@ inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_lev
                                                                         "billboard_clouds"};
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
 inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
-// How `lod.splats` may draw point samples (systems/point_line_lod.h splat_style).
+// How `lod.splats` may draw point samples (lod/point_line_lod.h splat_style).
 inline constexpr std::array<std::string_view, 2> k_splat_styles{"soft", "opaque"};
 // A species' `lighting`: "scenario" takes the lod section's.
 inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped",

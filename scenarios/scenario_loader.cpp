@@ -8,7 +8,7 @@
 #include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "scenarios/json_reader.h"
-#include "systems/embedded_files.h"
+#include "scenarios/embedded_files.h"
 
 namespace sylva {
 namespace {

@@ -1,5 +1,5 @@
 // Shared declarations. Mirrors systems/render/frame_uniforms.h (std140; the C++ side
-// static_asserts every offset) and systems/draw_list.h instance_gpu (instanced attributes).
+// static_asserts every offset) and resources/draw_list.h instance_gpu (instanced attributes).
 
 layout(std140, binding = 0) uniform frame_block {
     mat4 u_view;                       // camera-relative: the eye is at the origin
@@ -19,7 +19,7 @@ layout(std140, binding = 0) uniform frame_block {
 };
 
 // Ramamoorthi & Hanrahan 2001: irradiance E(n) from 9 SH coefficients. The coefficients are
-// already convolved with the clamped cosine on the CPU (systems/lighting/spherical_harmonics),
+// already convolved with the clamped cosine on the CPU (lighting/spherical_harmonics),
 // so evaluating the basis is all that is left. Basis constants: Sloan 2008.
 vec3 sh_irradiance(vec3 n) {
     vec3 e = u_sh_irradiance[0].rgb * 0.282095;

@@ -2,9 +2,9 @@
 // light from the environment's SH irradiance, leaves lit from behind by transmitted sunlight;
 // then fog and tone mapping. MATERIAL_LEAF and MATERIAL_BILLBOARD alpha-test (also in the shadow
 // pass, so they cast leaf-shaped shadows); billboards take their normal from a normal map baked
-// from the plant (models/crossed_billboard.h) and are shaded like leaves with it.
+// from the plant (models/bake/crossed_billboard.h) and are shaded like leaves with it.
 // WRITE_ID also writes which instance covers the pixel (measure/: coverage, lighting jumps).
-// MATERIAL_BILLBOARD_CLOUD draws billboard-cloud quads (models/billboard_cloud.h, Behrendt 2005
+// MATERIAL_BILLBOARD_CLOUD draws billboard-cloud quads (models/bake/billboard_cloud.h, Behrendt 2005
 // §2.3): alpha-tested on the normal page's coverage, faded by the modified alpha test on the
 // colour page's coverage x gaussian alpha (cloud_alpha_threshold), survivors opaque; lit with
 // the normal page (normal-mapped) or, with CLOUD_PRE_LIT, with the billboard's own plane.
@@ -15,7 +15,7 @@
 // extra texture").
 // SPLAT_VISIBILITY (depth only, and the instance for the ID buffer) and SOFT_SPLATS (a Gaussian
 // of peak opacity u_soft_alpha, blended) are the two passes of soft splats
-// (systems/point_line_lod.h soft_splat_peak_alpha).
+// (lod/point_line_lod.h soft_splat_peak_alpha).
 // PRIMITIVE_POINTS / PRIMITIVE_LINES shade the point and line representation (Deussen 2002):
 // each sample takes the texture's colour where it was baked (a slightly filtered level: a
 // splat stands for more surface than one texel), is never alpha-tested (the bake put it on an
@@ -53,9 +53,9 @@ flat in float v_fade;
 #ifdef MATERIAL_BILLBOARD_CLOUD
 // Behrendt 2005 §2.3: "a fragment is discarded, if its alpha value is below a threshold that is
 // calculated by a simple piecewise linear function of the fragments distance to the viewer".
-// The fade is piecewise-linear in distance (systems/billboard_cloud_lod.h); this maps it
+// The fade is piecewise-linear in distance (lod/billboard_cloud_lod.h); this maps it
 // through three linear pieces from the least alpha a covered texel has (drawn whole) to above
-// any alpha (gone). Mirrors cloud_alpha_threshold in systems/billboard_cloud_lod.cpp.
+// any alpha (gone). Mirrors cloud_alpha_threshold in lod/billboard_cloud_lod.cpp.
 float cloud_alpha_threshold(float fade) {
     float f = clamp(fade, 0.0, 1.0);
     if (f >= 0.75) return mix(0.75, 0.18, (f - 0.75) / 0.25);
@@ -78,10 +78,10 @@ float dissolve_hash(uint a, uint b) {
 #include "transfer.glsl"
 #if defined(MATERIAL_BILLBOARD_CLOUD) || defined(MATERIAL_BILLBOARD)
 #define TRANSFER_PAGES
-// models/transfer_pages.h: five layers per species, the 9 coefficients of the side this
+// models/bake/transfer_pages.h: five layers per species, the 9 coefficients of the side this
 // billboard side's viewer sees, then the 9 of the other, each (T / range) * 0.5 + 0.5.
 layout(binding = 3) uniform sampler2DArray u_transfer_pages;
-const float k_transfer_page_range = 1.25;  // mirrors models/transfer_pages.h
+const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
 flat in vec4 v_sh_sphere;
 #else
 in vec3 v_sh_sky;
@@ -136,7 +136,7 @@ void main() {
 #if defined(PRIMITIVE_POINTS) && !defined(SHADOW_PASS) && !defined(SPLAT_VISIBILITY)
 #ifdef SOFT_SPLATS
     // exp(-2·|pc|²) over pc in [-1, 1]²: σ is a quarter of the splat's side; its mean over the
-    // square is k_soft_splat_kernel_mean (systems/point_line_lod.h).
+    // square is k_soft_splat_kernel_mean (lod/point_line_lod.h).
     vec2 pc = gl_PointCoord * 2.0 - 1.0;
     out_color = vec4(v_color, v_opacity * u_soft_alpha * exp(-2.0 * dot(pc, pc)));
     out_layer_depth = gl_FragCoord.z;
@@ -203,7 +203,7 @@ void main() {
 #ifdef MATERIAL_BILLBOARD
     // A crossed billboard seen from behind shows its front image mirrored through the quad's
     // plane, as the normal-mapped path reflects its normals: mirror the transfer too. The quads
-    // are axis-aligned in model space (models/crossed_billboard.h): the x-y quad (normal z)
+    // are axis-aligned in model space (models/bake/crossed_billboard.h): the x-y quad (normal z)
     // flips the coefficients odd in z (2, 5, 7), the z-y quad (normal x) those odd in x (3, 4, 7).
     if (dot(plane, -v_position) < 0.0) {
         vec3 model_plane = vec3(v_yaw_cos_sin.x * plane.x - v_yaw_cos_sin.y * plane.z, plane.y,
@@ -240,7 +240,7 @@ void main() {
 #endif
 #elif defined(MATERIAL_BILLBOARD_CLOUD) && defined(CLOUD_PRE_LIT)
     // Pre-lit (Behrendt 2005 §2.3): the colour page was lit at bake time by one light with the
-    // plant's own shadows (models/billboard_cloud.h light_factor); only the scene's light
+    // plant's own shadows (models/bake/billboard_cloud.h light_factor); only the scene's light
     // level, fog and tone mapping are applied here.
     out_color = vec4(shade_pre_lit(base, v_position), 1.0);
 #elif defined(MATERIAL_LEAF) || defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)

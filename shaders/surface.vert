@@ -4,9 +4,9 @@
 // WRITE_ID (measurement) passes the draw-list instance index on for the ID buffer.
 // PRIMITIVE_POINTS draws the point representation (Deussen 2002 §5.1): each point a square
 // splat of u_splat_px pixels on screen; in a shadow cascade a splat as wide as the casters are
-// spaced (systems/point_line_lod.h k_shadow_sample_texels), pushed away from the sun.
+// spaced (lod/point_line_lod.h k_shadow_sample_texels), pushed away from the sun.
 // SPLAT_VISIBILITY draws them as opaque splats into depth only, pushed back along the view ray,
-// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (systems/point_line_lod.h), both
+// and SOFT_SPLATS as Gaussians of u_splat_px blended over that (lod/point_line_lod.h), both
 // into the splat layer (systems/render/splat_layer.h); the
 // instance's fade is then the prefix's fractional length (build_draw_list): splat j of the
 // prefix is drawn at opacity clamp(fade − j, 0, 1), the last one faded (point_prefix::last_fade).
@@ -84,7 +84,7 @@ float splat_growth(vec3 world) { return min(exp(0.5 * u_sample_fog * length(worl
 // ε / distance: k_soft_splat_depth_offset splat sides on the image plane at distance one, so the
 // splat moves back ε = that x its distance along its view ray.
 uniform float u_depth_push;
-uniform int u_visibility_stride;  // systems/point_line_lod.h k_soft_splat_visibility_stride
+uniform int u_visibility_stride;  // lod/point_line_lod.h k_soft_splat_visibility_stride
 #endif
 
 out vec3 v_position;  // camera-relative world position

@@ -1,6 +1,6 @@
 // Precomputed radiance transfer (Behrendt 2005 §4, after Sloan, Kautz and Snyder 2002): each
 // vertex, point, line end or cloud texel carries two 9-coefficient SH transfer vectors baked
-// from the full plant with its self-shadowing (models/radiance_transfer.h): one for light
+// from the full plant with its self-shadowing (models/bake/radiance_transfer.h): one for light
 // arriving on the side its normal faces, one for the other side. Shading is "the scalar product
 // of the coefficients" with the environment's radiance coefficients: the sky (u_sh_radiance)
 // and the sun as a directional light (u_sun_sh: the basis at the sun's direction; its colour is
@@ -18,7 +18,7 @@ layout(std140, binding = 1) uniform species_block {
 };
 
 // An eco-tile point set's instance (Deussen 2002 §6.2) marks its layer with this fraction
-// (systems/draw_list.h k_aggregated_layer_flag): its samples come from many plants, so there is
+// (resources/draw_list.h k_aggregated_layer_flag): its samples come from many plants, so there is
 // no one sphere to leave.
 bool aggregated_layer(float layer) { return fract(layer) > 0.125; }
 
@@ -41,7 +41,7 @@ float sphere_exit_distance(vec3 position, vec4 sphere) {
     return disc > 0.0 ? max(-b + sqrt(disc), 0.0) : 0.0;
 }
 
-// Mirrors sylva::rotate_about_y (systems/lighting/transfer_rotation.h, where it is derived):
+// Mirrors sylva::rotate_about_y (lighting/transfer_rotation.h, where it is derived):
 // model-space coefficients to world space under the instance yaw, c = cos, s = sin.
 void sh_rotate_about_y(inout float t[9], float c, float s) {
     const float sqrt3 = 1.7320508;

@@ -15,9 +15,9 @@
 // A primitive budget is deterministic (counts do not depend on timing); a frame-time budget is
 // not, and is meant for interactive walkthroughs, not for tests or measurement.
 #include "ecs/system.h"
-#include "systems/draw_list.h"
-#include "systems/frame_stats.h"
-#include "systems/lod_policy.h"
+#include "resources/draw_list.h"
+#include "resources/frame_stats.h"
+#include "resources/lod_policy.h"
 
 namespace sylva {
 

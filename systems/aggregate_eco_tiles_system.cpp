@@ -2,7 +2,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "systems/lighting/fog.h"
+#include "lighting/fog.h"
 
 namespace sylva {
 

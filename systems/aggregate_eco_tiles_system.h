@@ -13,8 +13,8 @@
 #include "components/tile_visibility.h"
 #include "ecs/system.h"
 #include "scenarios/scenario.h"
-#include "systems/lod_policy.h"
-#include "systems/tile_point_sets.h"
+#include "resources/lod_policy.h"
+#include "setup/tile_point_sets.h"
 
 namespace sylva {
 

@@ -21,11 +21,11 @@
 #include "components/point_prefix.h"
 #include "components/transform.h"
 #include "ecs/system.h"
-#include "systems/draw_list.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/lod_policy.h"
+#include "resources/draw_list.h"
+#include "lighting/shadow_cascades.h"
+#include "resources/lod_policy.h"
 #include "systems/aggregate_eco_tiles_system.h"
-#include "systems/scene_assets.h"
+#include "resources/scene_assets.h"
 
 namespace sylva {
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "ecs/parallel.h"
-#include "systems/eco_tiles.h"
+#include "lod/eco_tiles.h"
 
 namespace sylva {
 

@@ -4,7 +4,7 @@
 // distance (under the point/line policy: at any distance); it may cast shadows when it is
 // within the shadow distance. Writes lod_state.
 //
-// With eco tiles (Deussen 2002 §6.2; systems/eco_tiles.h) the tiles are walked from the roots
+// With eco tiles (Deussen 2002 §6.2; lod/eco_tiles.h) the tiles are walked from the roots
 // first: a tile whose box (square and terrain height range grown by the plants' reach) is
 // outside the frustum and beyond every draw and shadow distance is culled with its whole
 // subtree, and only the plants of surviving leaf tiles are tested one by one; the plants of
@@ -24,8 +24,8 @@
 #include "components/transform.h"
 #include "ecs/system.h"
 #include "scenarios/scenario.h"
-#include "systems/lod_policy.h"
-#include "systems/scene_assets.h"
+#include "resources/lod_policy.h"
+#include "resources/scene_assets.h"
 
 namespace sylva {
 

@@ -1,15 +1,15 @@
 #pragma once
 // Fits the sun's shadow cascades to the camera's view frustum every frame (practical split
-// scheme, texel-snapped sphere fits: systems/lighting/shadow_cascades.h). The cascades are a
+// scheme, texel-snapped sphere fits: lighting/shadow_cascades.h). The cascades are a
 // resource that build_draw_list reads to pick each cascade's casters and the renderer draws.
-// A cascade whose slice of the view holds no receiver (systems/shadow_receivers.h; when the
+// A cascade whose slice of the view holds no receiver (resources/shadow_receivers.h; when the
 // world has receiver_heights) is marked, and nothing is drawn into it.
 #include "components/camera.h"
 #include "components/sun.h"
 #include "ecs/system.h"
 #include "scenarios/scenario.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/shadow_receivers.h"
+#include "lighting/shadow_cascades.h"
+#include "resources/shadow_receivers.h"
 
 namespace sylva {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "systems/lighting/sh_rotation.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/lighting/spherical_harmonics.h"
+#include "lighting/sh_rotation.h"
+#include "lighting/sky_model.h"
+#include "lighting/spherical_harmonics.h"
 
 namespace sylva {
 

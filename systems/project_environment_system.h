@@ -3,7 +3,7 @@
 // spherical harmonics: radiance_sh for transfer vectors and, convolved with the clamped cosine,
 // irradiance_sh, what every surface is lit with. Runs only when the sky changed
 // (environment::sky_revision), so a static sky costs nothing per frame. A sun that only moves
-// in azimuth costs a rotation (systems/lighting/sh_rotation.h), not an integration.
+// in azimuth costs a rotation (lighting/sh_rotation.h), not an integration.
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"

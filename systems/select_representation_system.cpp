@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
-#include "systems/billboard_cloud_lod.h"
+#include "lod/billboard_cloud_lod.h"
 
 namespace sylva {
 

@@ -3,7 +3,7 @@
 // plant's size and the camera's lod_scale): the full mesh near, the reduced mesh beyond the
 // species' reduced distance, the far mesh beyond its far distance. Under other policies: points
 // and lines (Deussen 2002), or billboard clouds with their transition bands (Behrendt 2005 §2.3,
-// systems/billboard_cloud_lod.h), whose partner and fades it writes into fade_alpha. Records
+// lod/billboard_cloud_lod.h), whose partner and fades it writes into fade_alpha. Records
 // the previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"
@@ -11,8 +11,8 @@
 #include "components/plant_instance.h"
 #include "components/transform.h"
 #include "ecs/system.h"
-#include "systems/lod_policy.h"
-#include "systems/scene_assets.h"
+#include "resources/lod_policy.h"
+#include "resources/scene_assets.h"
 
 namespace sylva {
 

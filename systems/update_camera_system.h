@@ -3,7 +3,7 @@
 // flying it by hand) and derives its camera-relative view and projection matrices.
 #include "components/camera.h"
 #include "ecs/system.h"
-#include "systems/playback.h"
+#include "resources/playback.h"
 
 namespace sylva {
 

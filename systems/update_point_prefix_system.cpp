@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
-#include "systems/lighting/fog.h"
+#include "lighting/fog.h"
 
 namespace sylva {
 

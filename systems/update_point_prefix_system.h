@@ -17,8 +17,8 @@
 #include "components/point_prefix.h"
 #include "components/transform.h"
 #include "ecs/system.h"
-#include "systems/lod_policy.h"
-#include "systems/scene_assets.h"
+#include "resources/lod_policy.h"
+#include "resources/scene_assets.h"
 
 namespace sylva {
 

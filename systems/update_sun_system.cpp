@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "systems/lighting/sky_model.h"
+#include "lighting/sky_model.h"
 
 namespace sylva {
 

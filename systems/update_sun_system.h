@@ -4,7 +4,7 @@
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"
-#include "systems/playback.h"
+#include "resources/playback.h"
 
 namespace sylva {
 

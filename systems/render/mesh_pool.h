@@ -8,7 +8,7 @@
 
 #include "models/mesh.h"
 #include "systems/render/gl_objects.h"
-#include "systems/scene_assets.h"
+#include "resources/scene_assets.h"
 
 namespace sylva::render {
 

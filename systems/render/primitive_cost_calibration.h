@@ -1,6 +1,6 @@
 #pragma once
 // Measures what one more triangle, point or line costs on this GL device (issue 5 item 6; made
-// robust by issue 18 item 3) and fits the physical model of systems/primitive_cost_model.h.
+// robust by issue 18 item 3) and fits the physical model of lod/primitive_cost_model.h.
 //
 // For each point of the model's calibration plan (a drawing path at a size), the calibration
 // draws N and then 2N leaf-sized primitives of that kind through the renderer's own passes (the
@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/primitive_cost_model.h"
+#include "lod/primitive_cost_model.h"
 #include "systems/render/renderer.h"
 
 namespace sylva::render {

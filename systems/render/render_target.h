@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/image.h"
+#include "models/image/image.h"
 #include "systems/render/gl_objects.h"
 
 namespace sylva::render {

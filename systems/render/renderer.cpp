@@ -9,10 +9,10 @@
 
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
-#include "systems/lighting/environment_map.h"
-#include "systems/lighting/fog.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/point_line_lod.h"
+#include "lighting/environment_map.h"
+#include "lighting/fog.h"
+#include "lighting/sky_model.h"
+#include "lod/point_line_lod.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/frame_uniforms.h"
 #include "systems/render/textures.h"
@@ -37,7 +37,7 @@ constexpr bool alpha_tested(material_kind m) {
 static_assert(std::size_t(material_kind::billboard_cloud) == 4, "renderer k_materials counts material_kind");
 
 void setup_instance_attributes(GLuint vao) {
-    // instance_gpu (systems/draw_list.h): two vec4 attributes, advanced once per instance.
+    // instance_gpu (resources/draw_list.h): two vec4 attributes, advanced once per instance.
     glVertexArrayAttribFormat(vao, 3, 4, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribFormat(vao, 4, 4, GL_FLOAT, GL_FALSE, 16);
     for (GLuint a : {3u, 4u}) {
@@ -482,7 +482,7 @@ void renderer::draw_opaque() {
     m_timer.end();
 }
 
-// Soft splats (systems/point_line_lod.h), after the sky so that they blend over it: opaque
+// Soft splats (lod/point_line_lod.h), after the sky so that they blend over it: opaque
 // splats pushed back by ε into depth only (and IDs), then the Gaussians, depth-tested against
 // that and blended "over" without writing depth. Splats of at least k_splat_layer_min_side_px
 // are drawn into the half-size splat layer (splat_layer.h), each keeping the nearest splat
@@ -625,7 +625,7 @@ void renderer::draw_samples(const pass_commands& groups, sample_pass pass, int c
         }
 }
 
-// Billboard-cloud quads (models/billboard_cloud.h) of every lighting variant, in a shadow
+// Billboard-cloud quads (models/bake/billboard_cloud.h) of every lighting variant, in a shadow
 // cascade (`cascade` >= 0) or the view (-1). One-sided: each side of a billboard shows only to
 // its own viewer. In a cascade, both sides of a billboard share its plane and silhouette (the
 // back image is the front's mirror): culling the side turned away from the sun leaves one quad

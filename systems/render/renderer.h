@@ -13,12 +13,12 @@
 #include "components/camera.h"
 #include "components/environment.h"
 #include "components/sun.h"
-#include "models/image.h"
-#include "systems/draw_list.h"
-#include "systems/frame_stats.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/point_line_lod.h"
+#include "models/image/image.h"
+#include "resources/draw_list.h"
+#include "resources/frame_stats.h"
+#include "lighting/shadow_cascades.h"
+#include "lighting/sky_model.h"
+#include "lod/point_line_lod.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
@@ -26,7 +26,7 @@
 #include "systems/render/shader_library.h"
 #include "systems/render/shadow_maps.h"
 #include "systems/render/splat_layer.h"
-#include "systems/scene_assets.h"
+#include "resources/scene_assets.h"
 
 namespace sylva::render {
 
@@ -65,7 +65,7 @@ struct frame_view {
     // Fog density by which splats grow with distance (point_line_lod.h fog_sample_distance; 0:
     // they do not), as the prefixes were counted.
     float sample_fog = 0.0f;
-    // Soft splats (systems/point_line_lod.h): points are drawn after the sky, first as opaque
+    // Soft splats (lod/point_line_lod.h): points are drawn after the sky, first as opaque
     // splats of splat_px into depth only (pushed back by k_soft_splat_depth_offset splats), then
     // as Gaussians of soft_splat_px with this peak opacity, blended over what is there.
     bool soft_splats = false;

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "systems/embedded_files.h"
+#include "scenarios/embedded_files.h"
 
 namespace sylva::render {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The soft splats' own layer (systems/point_line_lod.h soft splats), at half the frame's
+// The soft splats' own layer (lod/point_line_lod.h soft splats), at half the frame's
 // resolution: the visibility pass and the Gaussians are drawn into it, and it is then drawn over
 // the frame through bilinear filtering.
 //
@@ -16,12 +16,12 @@
 // visibility pass and, with the frame's ID buffer, the visibility splats' IDs. The composite
 // (shaders/splat_layer.frag) writes the nearest depth of its 2x2 footprint as its own, so the
 // frame's depth test hides what the terrain and other surfaces cover, pixel by pixel.
-#include "systems/point_line_lod.h"
+#include "lod/point_line_lod.h"
 #include "systems/render/gl_objects.h"
 
 namespace sylva::render {
 
-// Soft splats of at least k_splat_layer_min_side_px (systems/point_line_lod.h) are drawn here.
+// Soft splats of at least k_splat_layer_min_side_px (lod/point_line_lod.h) are drawn here.
 
 class splat_layer {
 public:

@@ -6,11 +6,11 @@
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"
-#include "systems/draw_list.h"
-#include "systems/frame_stats.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/lod_policy.h"
-#include "systems/playback.h"
+#include "resources/draw_list.h"
+#include "resources/frame_stats.h"
+#include "lighting/shadow_cascades.h"
+#include "resources/lod_policy.h"
+#include "resources/playback.h"
 #include "systems/render/renderer.h"
 
 namespace sylva {

@@ -3,7 +3,7 @@
 // species, so one multi-draw covers every species) with trilinear filtering.
 #include <span>
 
-#include "models/image.h"
+#include "models/image/image.h"
 #include "systems/render/gl_objects.h"
 
 namespace sylva::render {

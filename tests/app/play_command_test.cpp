@@ -143,7 +143,7 @@ TEST(play_command, exr_frames_are_written_through_openimageio) {
 namespace sylva {
 namespace {
 
-// FNV-1a 64, as models/bake_cache.h checksums entries (hand-written here so the test does not
+// FNV-1a 64, as models/cache/bake_cache.h checksums entries (hand-written here so the test does not
 // trust the code under test to make its fixture).
 std::uint64_t fnv1a_64(const std::string& bytes) {
     std::uint64_t h = 0xcbf29ce484222325ULL;

@@ -19,9 +19,9 @@
 #include "measure/image_metrics.h"
 #include "measure/temporal_metrics.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/playback.h"
+#include "resources/playback.h"
 #include "systems/render/renderer.h"
-#include "systems/spawn_scenario.h"
+#include "setup/spawn_scenario.h"
 #include "systems/update_camera_system.h"
 
 namespace sylva {

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "components/camera.h"
-#include "models/image.h"
+#include "models/image/image.h"
 #include "models/mesh.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/lighting/sky_model.h"
+#include "lighting/shadow_cascades.h"
+#include "lighting/sky_model.h"
 #include "systems/render/renderer.h"
 #include "systems/update_camera_system.h"
 

@@ -9,7 +9,7 @@
 
 #include "flat_scene.h"
 #include "gl_test_support.h"
-#include "systems/lighting/sky_model.h"
+#include "lighting/sky_model.h"
 #include "systems/render/renderer.h"
 #include "systems/update_camera_system.h"
 

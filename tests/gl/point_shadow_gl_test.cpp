@@ -1,4 +1,4 @@
-// Point samples in the shadow cascades (systems/point_line_lod.h k_shadow_splat_push): a shadow
+// Point samples in the shadow cascades (lod/point_line_lod.h k_shadow_splat_push): a shadow
 // splat w wide is moved away from the sun by w along the sun's ray, so it shades what lies more
 // than about w behind it, not the leaves just beside or below it. A dense layer of samples,
 // drawn into the cascade only, hangs over flat ground in the sun (70° up, from the east) and a
@@ -17,9 +17,9 @@
 
 #include "flat_scene.h"
 #include "gl_test_support.h"
-#include "systems/lighting/shadow_cascades.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/point_line_lod.h"
+#include "lighting/shadow_cascades.h"
+#include "lighting/sky_model.h"
+#include "lod/point_line_lod.h"
 #include "systems/render/renderer.h"
 #include "systems/update_camera_system.h"
 

@@ -9,11 +9,11 @@
 
 #include "app/scenario_player.h"
 #include "gl_test_support.h"
-#include "models/bake_cache.h"
+#include "models/cache/bake_cache.h"
 #include "models/random.h"
 #include "scenarios/scenario_loader.h"
 #include "systems/render/primitive_cost_calibration.h"
-#include "systems/spawn_scenario.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 namespace {

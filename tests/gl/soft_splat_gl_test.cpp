@@ -1,4 +1,4 @@
-// Soft splats in the renderer (systems/point_line_lod.h, our extension of Deussen 2002 §5.1):
+// Soft splats in the renderer (lod/point_line_lod.h, our extension of Deussen 2002 §5.1):
 // each soft splat must deposit the leaf area it stands for, d'²/c_p pixels, so a sparse field of
 // them darkens the image 1/c_p² as much as the same field of opaque c_p·d'² splats; and the
 // visibility pass must keep splats behind a dense layer from blending over it; the splat layer
@@ -13,8 +13,8 @@
 #include "flat_scene.h"
 #include "gl_test_support.h"
 #include "models/random.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/point_line_lod.h"
+#include "lighting/sky_model.h"
+#include "lod/point_line_lod.h"
 #include "systems/render/renderer.h"
 #include "systems/update_camera_system.h"
 

@@ -11,10 +11,10 @@
 
 #include "flat_scene.h"
 #include "gl_test_support.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/lighting/transfer_rotation.h"
+#include "lighting/sky_model.h"
+#include "lighting/transfer_rotation.h"
 #include "systems/render/renderer.h"
-#include "models/transfer_pages.h"
+#include "models/bake/transfer_pages.h"
 #include "systems/update_camera_system.h"
 
 namespace sylva {

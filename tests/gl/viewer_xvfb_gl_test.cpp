@@ -8,7 +8,7 @@
 #include <string>
 
 #include "../golden/golden_support.h"
-#include "models/image.h"
+#include "models/image/image.h"
 
 namespace sylva {
 namespace {

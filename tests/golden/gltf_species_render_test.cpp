@@ -9,7 +9,7 @@
 #include "../gl/gl_test_support.h"
 #include "app/scenario_player.h"
 #include "scenarios/scenario_loader.h"
-#include "tests/models/gltf_fixtures.h"
+#include "tests/models/gltf/gltf_fixtures.h"
 
 namespace sylva {
 namespace {

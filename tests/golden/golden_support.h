@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "app/scenario_player.h"
-#include "models/image.h"
-#include "models/textures.h"
+#include "models/image/image.h"
+#include "models/generate/textures.h"
 #include "scenarios/scenario_loader.h"
 #include "systems/render/gl_context.h"
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "models/textures.h"
+#include "models/generate/textures.h"
 
 namespace sylva {
 namespace {

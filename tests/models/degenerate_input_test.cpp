@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/gltf_import.h"
-#include "models/plant_library.h"
-#include "tests/models/gltf_fixtures.h"
+#include "models/gltf/gltf_import.h"
+#include "models/generate/plant_library.h"
+#include "tests/models/gltf/gltf_fixtures.h"
 
 namespace sylva {
 namespace {

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "app/stress_checks.h"
-#include "models/plant_library.h"
+#include "models/generate/plant_library.h"
 #include "stress_support.h"
 
 namespace sylva {

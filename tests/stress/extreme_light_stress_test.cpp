@@ -10,8 +10,8 @@
 #include "../gl/gl_test_support.h"
 #include "app/stress_checks.h"
 #include "stress_support.h"
-#include "systems/lighting/sky_model.h"
-#include "systems/lighting/spherical_harmonics.h"
+#include "lighting/sky_model.h"
+#include "lighting/spherical_harmonics.h"
 
 namespace sylva {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "app/stress_checks.h"
 #include "stress_support.h"
-#include "systems/eco_tiles.h"
+#include "lod/eco_tiles.h"
 
 namespace sylva {
 namespace {

@@ -1,12 +1,12 @@
 // Stress: a million (and ten million) frames of playback. Time is derived from the frame index
-// (systems/playback.h), so the clock, the camera path and the sun path at frame N are exactly
+// (resources/playback.h), so the clock, the camera path and the sun path at frame N are exactly
 // what direct evaluation at N / fps gives; nothing accumulates.
 #include <gtest/gtest.h>
 
 #include "app/stress_checks.h"
 #include "scenarios/camera_path.h"
 #include "stress_support.h"
-#include "systems/playback.h"
+#include "resources/playback.h"
 #include "systems/update_sun_system.h"
 
 namespace sylva {

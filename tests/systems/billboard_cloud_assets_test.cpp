@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "models/image_ops.h"
+#include "models/image/image_ops.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/spawn_scenario.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 namespace {

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "models/bake_cache.h"
+#include "models/cache/bake_cache.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/spawn_scenario.h"
-#include "systems/species_models.h"
+#include "setup/spawn_scenario.h"
+#include "setup/species_models.h"
 
 namespace sylva {
 namespace {

@@ -9,9 +9,9 @@
 #include "components/environment.h"
 #include "components/sun.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/lighting/sky_model.h"
+#include "lighting/sky_model.h"
 #include "systems/project_environment_system.h"
-#include "systems/spawn_scenario.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 namespace {
@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // A 64 x 32 map lit only in columns 40..55: the lune of azimuths 45..135 degrees around east
-// (systems/lighting/environment_map.h orientation).
+// (lighting/environment_map.h orientation).
 fs::path write_map(const std::string& name, int width, int height) {
     const fs::path dir =
         fs::temp_directory_path() / ("sylva_environment_scene_" + std::to_string(::getpid()));
@@ -60,7 +60,7 @@ TEST(environment_map_scene, map_reaches_the_environment_and_turns_with_the_sun) 
     EXPECT_EQ(env.reference_azimuth_deg, 100.0f);  // the first sun keyframe's
     EXPECT_EQ(env.map_rotation_deg, 90.0f);
     // As the file lies the lune is around east: c3 ("x") = 1.0854019 (hand value in
-    // tests/systems/lighting/environment_map_test.cpp).
+    // tests/lighting/environment_map_test.cpp).
     EXPECT_NEAR(env.map_radiance_sh[3].x, 1.0854019f, 1e-5f);
 
     // The sun at the last keyframe has turned 90 degrees, the scenario another 90: the lune is

@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "systems/lighting/sh_rotation.h"
-#include "systems/lighting/sky_model.h"
+#include "lighting/sh_rotation.h"
+#include "lighting/sky_model.h"
 
 namespace sylva {
 namespace {

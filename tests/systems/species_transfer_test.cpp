@@ -5,9 +5,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "models/bake_cache.h"
-#include "models/radiance_transfer_io.h"
-#include "systems/species_models.h"
+#include "models/cache/bake_cache.h"
+#include "models/cache/radiance_transfer_io.h"
+#include "setup/species_models.h"
 
 namespace sylva {
 namespace {
@@ -40,7 +40,7 @@ TEST_F(species_transfer, levels_have_one_vector_per_vertex_and_a_cache_hit_gives
     const std::array<radiance_transfer, 3> loaded =
         load_species_transfer(grass, 5, model, settings, &cache);
     EXPECT_EQ(cache.hits(), 1u);
-    // The entry's payload (after its size and checksum header, models/bake_cache.h).
+    // The entry's payload (after its size and checksum header, models/cache/bake_cache.h).
     const std::vector<std::byte> stored =
         *bake_cache(root).load("radiance_transfer", species_transfer_key(grass, 5, settings));
     EXPECT_EQ(serialize_radiance_transfers(loaded), stored);

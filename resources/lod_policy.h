@@ -1,0 +1,51 @@
+#pragma once
+// How select_representation chooses, as a world resource: the runtime's own distance levels, the
+// point/line representation (Deussen 2002), or one of the fixed policies the bench compares them
+// with (issue 4: "each representation on its own", and the typical engine baseline "full mesh
+// near, one crossed-quad billboard beyond a distance, hard switch").
+#include <cstdint>
+
+#include "components/lod_state.h"
+#include "lod/point_line_lod.h"
+
+namespace sylva {
+
+struct lod_policy {
+    enum class kind : std::uint8_t {
+        distance_levels,  // the species' mesh levels by distance (select_representation_system.h)
+        single,           // every drawn plant as `near`
+        hard_switch,      // `near` closer than switch_distance_m times the plant's scale, else `far`
+        points_lines,     // every plant as prefixes of its triangles, points and lines (§5)
+        // Behrendt 2005 §2.3: the mesh levels near, the billboard cloud beyond cloud_distance_m,
+        // the crossed billboard beyond the species' far distance, cross-faded over bands
+        // (lod/billboard_cloud_lod.h).
+        billboard_clouds,
+    };
+    kind mode = kind::distance_levels;
+    representation near = representation::mesh_full;
+    representation far = representation::mesh_far;
+    float switch_distance_m = 50.0f;
+    // The point/line representation's d' and c_p (points_lines only). d' is the starting value
+    // when a frame-time or primitive budget controls it (Deussen 2002 §5.4).
+    point_line_quality points{};
+    // Deussen 2002 §6.2: far eco tiles drawn as their aggregated sets (points_lines only).
+    bool tile_sets = true;
+    // Behrendt 2005 §2.3, "we have to blend to the complex representation, if a typical tree is
+    // closer than 30 meters" (billboard_clouds only; times plant scale and lod_scale).
+    float cloud_distance_m = 30.0f;
+
+    // True when select_representation can choose the point/line representation: the scene then
+    // bakes and uploads it (and does not otherwise).
+    bool uses_point_lines() const {
+        return mode == kind::points_lines ||
+               (mode != kind::distance_levels && (near == representation::points || far == representation::points));
+    }
+    // The same for billboard clouds: the scene then bakes them and uploads their atlases.
+    bool uses_billboard_clouds() const {
+        return mode == kind::billboard_clouds ||
+               ((mode == kind::single || mode == kind::hard_switch) &&
+                (near == representation::billboard_cloud || far == representation::billboard_cloud));
+    }
+};
+
+}  // namespace sylva

@@ -1,0 +1,140 @@
+#pragma once
+// Everything a scenario needs drawn, built once on the CPU before the frame loop: the meshes
+// (index = mesh id, used in sort keys), per-species textures (index = texture array layer), the
+// terrain, and the species table the per-frame systems read as a resource.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "components/lod_state.h"
+#include "models/image/image.h"
+#include "models/mesh.h"
+#include "models/bake/point_line_model.h"
+#include "models/terrain/terrain.h"
+#include "lighting/environment_map.h"
+
+namespace sylva {
+
+// How a species' plants are lit (scenario `lighting`; Behrendt 2005 §2.3 and §4). The renderer
+// draws each variant with its own shader: normal-lit, the clouds' baked pre-lit page, or
+// precomputed radiance transfer in every representation.
+enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh };
+inline constexpr std::size_t k_lighting_variants = 3;
+
+// One species as the LOD systems see it. Sizes are for scale 1; instances multiply.
+struct species_entry {
+    std::string name;
+    std::uint16_t mesh_full = 0;
+    std::uint16_t mesh_reduced = 0;
+    std::uint16_t mesh_far = 0;
+    std::uint16_t mesh_billboard = 0;  // the crossed billboard's two quads (material billboard)
+    // The billboard cloud (Behrendt 2005 §2, material billboard_cloud), when the scene's LOD
+    // policy can select it; 0 triangles otherwise.
+    std::uint16_t mesh_cloud = 0;
+    std::uint32_t triangles_full = 0;
+    std::uint32_t triangles_reduced = 0;
+    std::uint32_t triangles_far = 0;
+    std::uint32_t triangles_billboard = 0;
+    std::uint32_t triangles_cloud = 0;
+    float reduced_distance_m = 60.0f;  // beyond this (times scale and lod_scale): reduced mesh
+    float far_distance_m = 200.0f;     // beyond this: far mesh
+    float max_distance_m = 1500.0f;    // beyond this: not drawn
+    float bounding_radius = 1.0f;      // sphere around the model, unit scale
+    float center_height = 0.5f;        // sphere centre above the base, unit scale
+    float texture_layer = 0.0f;  // layer of leaf, bark and billboard texture arrays
+    lighting_variant lighting = lighting_variant::normal_mapped;
+    // Lighting sh: the radius (scale 1, about the same centre) of a sphere around every
+    // representation, crossed billboard and cloud included, outside which shadows come from
+    // other objects (shaders/transfer.glsl); and the species' first layer in the transfer-page
+    // arrays (k_transfer_pages of them; only SH species have pages).
+    float transfer_radius = 0.0f;
+    float transfer_layer = 0.0f;
+    // The point/line representation's parts (species_library::lod_parts), when the scene's
+    // LOD policy can select it; none otherwise, and none for a species split into octree cells
+    // (Deussen 2002 §6.1), whose parts belong to its cells (species_library::cells).
+    std::uint32_t first_lod_part = 0;
+    std::uint32_t lod_part_count = 0;
+    std::uint32_t first_cell = 0;
+    std::uint32_t cell_count = 0;  // > 1: every plant of the species has this many cell entities
+};
+
+// One octree cell of a split species: its parts in species_library::lod_parts.
+struct lod_cell_entry {
+    std::uint32_t first_lod_part = 0;
+    std::uint32_t lod_part_count = 0;
+};
+
+// One part of a species' point/line representation (models/bake/point_line_model.h lod_part),
+// scaled to the species' height. Read by update_point_prefix (Deussen 2002 Eq. 1, Eq. 2, §5.3)
+// and build_draw_list (which draws its prefixes from the two meshes).
+struct lod_part_entry {
+    lod_primitive primitive = lod_primitive::points;
+    float importance = 1.0f;
+    float area_m2 = 0.0f;        // A_p or A_l
+    glm::vec3 center{0.0f};      // model space, species scale: r is measured to it
+    std::uint32_t triangle_count = 0;   // k
+    std::uint32_t primitive_count = 0;  // n_p points or n_l lines
+    std::uint32_t first_after = 0;      // into species_library::points_after (points parts)
+    float line_length_m = 0.0f;  // l
+    float line_error_m = 0.0f;   // ε_l
+    std::uint16_t mesh_triangles = 0;   // the part's triangles in random order
+    std::uint16_t mesh_primitives = 0;  // its points (reverse order) or lines
+    std::uint16_t mesh_splats = 0;      // line parts: the lines' end points as splats (short lines)
+};
+
+// What the per-frame systems need to know about a mesh id (for statistics).
+struct mesh_info {
+    std::uint32_t triangles = 0;  // triangles, points or lines, by `primitive`
+    representation drawn_as = representation::none;
+    primitive_kind primitive = primitive_kind::triangles;
+    lighting_variant lighting = lighting_variant::normal_mapped;  // its species' (terrain: normal)
+};
+
+// The species table as an ECS resource (read by select_representation and build_draw_list).
+struct species_library {
+    std::vector<species_entry> species;
+    std::vector<mesh_info> meshes;  // indexed by mesh id
+    std::vector<lod_part_entry> lod_parts;
+    std::vector<lod_cell_entry> cells;
+    std::vector<std::uint32_t> points_after;  // lod_part_entry::first_after indexes it
+};
+
+// Width of scene_assets::environment_sky: twice the renderer's 128-texel sky texture, so the
+// reduction there still averages a few texels; small enough to keep with the assets.
+inline constexpr int k_environment_sky_width = 256;
+
+struct scene_assets {
+    std::vector<mesh_data> meshes;
+    std::vector<image_rgba8> leaf_textures;  // one layer per species, same size
+    std::vector<image_rgba8> bark_textures;
+    // The crossed billboards' atlases (models/bake/crossed_billboard.h), one layer per species in the
+    // order of leaf_textures, all the same size; the normal atlas holds model-space normals.
+    std::vector<image_rgba8> billboard_albedo;
+    std::vector<image_rgba8> billboard_normal;
+    // Their SH transfer pages, laid out as cloud_transfer's.
+    std::vector<image_rgba8> billboard_transfer;
+    // The billboard clouds' atlas pages (models/bake/billboard_cloud.h: colour with coverage x
+    // gaussian alpha, model-space normals with coverage alpha), one layer per species in the same
+    // order, all the size of the largest (smaller atlases replicated by an integer factor); empty
+    // when the scene draws no clouds.
+    std::vector<image_rgba8> cloud_albedo;
+    std::vector<image_rgba8> cloud_normal;
+    std::vector<image_rgba8> cloud_pre_lit;  // colour lit at bake time, alpha as cloud_albedo's
+    // SH transfer pages (models/bake/transfer_pages.h), k_transfer_pages for each species lit by
+    // transfer, in species order (species_entry::transfer_layer); empty when no species is.
+    std::vector<image_rgba8> cloud_transfer;
+    image_rgba8 ground_texture;
+    std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
+    float ground_uv_scale_m = 4.0f;
+    heightfield terrain;
+    // The scenario's environment map (environment.map), when it names one: its radiance SH as
+    // the file lies (spawn_scenario hands it to the environment component), and the map reduced
+    // to k_environment_sky_width x half that for the renderer's sky background. Empty otherwise.
+    std::array<glm::vec3, 9> environment_map_sh{};
+    environment_map environment_sky;
+    species_library library;
+    std::uint64_t source_triangles = 0;  // sum over instances of full-detail triangles
+};
+
+}  // namespace sylva

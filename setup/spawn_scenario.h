@@ -1,0 +1,34 @@
+#pragma once
+// Turns a scenario into something to draw: builds the scene's meshes, textures and terrain
+// (build_scene_assets, CPU only) and fills an ECS world with the camera, the sun and one entity
+// per plant plus the resources the per-frame systems read (spawn_scenario).
+#include "ecs/world.h"
+#include "models/cache/bake_cache.h"
+#include "scenarios/scenario.h"
+#include "resources/scene_assets.h"
+
+namespace sylva {
+
+// What a scene bakes beyond the mesh levels and crossed billboards: only what its LOD policy
+// can select (DESIGN §2, "skip what a scene doesn't need").
+struct scene_needs {
+    bool point_lines = false;  // Deussen 2002 points and lines (setup/point_line_assets.h)
+    bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/bake/billboard_cloud.h)
+};
+
+// `cache` may be null: species models are then generated or imported every time.
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs = {});
+
+struct spawn_report {
+    std::size_t plants = 0;
+    std::size_t requested = 0;  // what the populations asked for (placement may fit fewer)
+};
+
+// Creates the entities and resources; aligns the plant component tables so every per-frame
+// query over plants is a linear walk.
+spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_assets& assets);
+
+// Scenario keyframes with heights above the terrain resolved to absolute world positions.
+std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const heightfield& terrain);
+
+}  // namespace sylva
