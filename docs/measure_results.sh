@@ -34,6 +34,9 @@ frames_of() {  # the supersampled reference costs most where the plants are many
   esac
 }
 
+# The pages need the plot as PNG: fail now, not after hours of benches.
+command -v rsvg-convert >/dev/null ||
+  { echo "measure_results: rsvg-convert not found: apt-get install librsvg2-bin" >&2; exit 1; }
 ./sylva build >&2
 # The device's primitive costs first: the points-and-lines configurations plan with them, and
 # calibration.md records how far they spread from run to run.
