@@ -10,7 +10,7 @@ namespace sylva {
 void add_scenario_options(CLI::App& command, scenario_options& options) {
     command.add_option(
         "scenario", options.path,
-        "Scenario JSON file (see README: scenario format), or the name of a bundled "
+        "Scenario JSON file (format: docs/scenario_format.md), or the name of a bundled "
         "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day); default: "
         "the bundled default");
     command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "systems/select_representation_system.h"
+#include "lod/distance_lod.h"
 
 namespace sylva {
 namespace {

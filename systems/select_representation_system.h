@@ -11,17 +11,11 @@
 #include "components/plant_instance.h"
 #include "components/transform.h"
 #include "ecs/system.h"
+#include "lod/distance_lod.h"
 #include "resources/lod_policy.h"
 #include "resources/scene_assets.h"
 
 namespace sylva {
-
-// The representation for a plant at `distance_m` (pure, for tests).
-representation choose_representation(const species_entry& species, float distance_m, float scale,
-                                     float lod_scale);
-// The same under a policy (lod_policy::kind::distance_levels gives choose_representation).
-representation choose_representation(const lod_policy& policy, const species_entry& species, float distance_m,
-                                     float scale, float lod_scale);
 
 struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";

@@ -7,7 +7,7 @@
 
 #include "models/generate/plant_library.h"
 #include "models/bake/point_line_bake.h"
-#include "point_line_fixtures.h"
+#include "tests/models/bake/point_line_fixtures.h"
 
 namespace sylva {
 namespace {
