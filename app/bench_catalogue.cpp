@@ -1,5 +1,6 @@
 #include "app/bench_catalogue.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -125,7 +126,37 @@ bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
     return c;
 }
 
+// Species lit by SH transfer.
+std::size_t sh_species(const scenario& s) {
+    return std::size_t(std::count_if(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
+        return (sp.lighting == "scenario" ? s.lod.lighting : sp.lighting) == "sh";
+    }));
+}
+
 }  // namespace
+
+std::string lighting_family(const scenario& s, const std::string& lighting) {
+    if (lighting == "sh") return "sh";
+    if (lighting == "normal_mapped" || lighting == "pre_lit") return "normal";
+    const std::size_t sh = sh_species(s);
+    if (sh == s.species.size() && sh > 0) return "sh";
+    if (sh == 0) return "normal";
+    return "scenario";
+}
+
+std::string lighting_family_description(const std::string& family) {
+    if (family == "sh") return "every species lit by SH transfer (Behrendt 2005 §4)";
+    if (family == "normal") return "every species lit by its normals (normal-mapped; pre-lit clouds compare here too)";
+    return "every species lit as the scenario says (its species are lit in different ways)";
+}
+
+bench_configuration_spec reference_configuration(const scenario& s, const std::string& family) {
+    bench_configuration_spec spec;
+    spec.options.geometry = geometry_mode::full;
+    if (family != lighting_family(s, "")) spec.options.lighting = family == "sh" ? "sh" : "normal_mapped";
+    spec.samples = k_bench_reference_samples;
+    return spec;
+}
 
 std::vector<bench_configuration_spec> default_bench_configurations() {
     std::vector<bench_configuration_spec> list;

@@ -5,8 +5,8 @@
 // Two properties group them. The representation family (`family`) says what a configuration
 // varies: the engine baseline's sweep, the runtime's mesh levels, points and lines, billboard
 // clouds... The lighting (`options.lighting`) decides which reference its errors are measured
-// against (bench_runner.h: lighting families): a configuration lit by SH transfer is compared
-// with an SH-lit reference, so each lighting has its own brute force and baseline sweep here.
+// against (lighting_family below): a configuration lit by SH transfer is compared with an SH-lit
+// reference, so each lighting has its own brute force and baseline sweep here.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,6 +41,21 @@ inline constexpr const char* k_family_baseline = "baseline";
 // The switch distance of the configuration called "the baseline" (`baseline`, `baseline_sh`):
 // time ratios are given against it.
 inline constexpr double k_named_baseline_distance_m = 50.0;
+
+// The lighting family of a configuration lit `lighting` (player_options::lighting; empty: as the
+// scenario says) in scenario `s`: "normal" for normal-mapped and pre-lit (their references are
+// one image: full geometry draws no clouds), "sh", or "scenario" when the scenario's species are
+// lit in more than one way and the configuration keeps them so.
+std::string lighting_family(const scenario& s, const std::string& lighting);
+
+// One sentence on what a lighting family's configurations are lit by, for the reports.
+std::string lighting_family_description(const std::string& family);
+
+// What lighting family `family`'s reference draws: every plant at full geometry with
+// k_bench_reference_samples along each axis, lit as the scenario says when that is the family
+// (so the reference is the one `sylva play --reference` writes), else every species lit the
+// family's way.
+bench_configuration_spec reference_configuration(const scenario& s, const std::string& family);
 
 // Every configuration Sylva has, in run order: the reference against itself (a check that must
 // give zero error), brute force, the runtime's mesh levels and a sweep of their lod_scale, each

@@ -2,7 +2,8 @@
 // Runs `sylva bench`: renders the supersampled full-geometry reference of every frame of the
 // scenario's camera path once per lighting family, then plays each configuration over the same
 // frames in the same process, measuring its time and its error against its family's reference
-// frame by frame (DESIGN.md §3). The configurations themselves are app/bench_catalogue.h's.
+// frame by frame (DESIGN.md §3). The configurations themselves and their lighting families are
+// app/bench_catalogue.h's; what a configuration's frames add up to is app/bench_measurements.h's.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -18,20 +19,6 @@
 #include "systems/render/gl_context.h"
 
 namespace sylva {
-
-// Viewing condition of the FLIP error: the paper's default (a 0.7 m wide 4K monitor seen from
-// 0.7 m, about 67 pixels per degree; Andersson et al. 2020 §4).
-constexpr double k_bench_flip_pixels_per_degree = 67.0;
-// A plant's (or eco tile's) colour counts for the lighting jump only where it covers at least
-// this many pixels at both ends of its transition, in the test and in the reference: fewer
-// pixels are mostly edges, whose colour is the background's as much as the plant's.
-constexpr std::uint32_t k_lighting_jump_min_pixels = 12;
-
-// The lighting family of a configuration lit `lighting` (player_options::lighting; empty: as the
-// scenario says) in scenario `s`: "normal" for normal-mapped and pre-lit (their references are
-// one image: full geometry draws no clouds), "sh", or "scenario" when the scenario's species are
-// lit in more than one way and the configuration keeps them so.
-std::string lighting_family(const scenario& s, const std::string& lighting);
 
 // Where a bench is: the configuration (-1: a reference), the round and the frame.
 struct bench_progress {

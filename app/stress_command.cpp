@@ -1,11 +1,11 @@
-// `sylva stress`: the numerical stress suite (app/stress_checks.h) as a table.
+// `sylva stress`: the numerical stress suite (app/stress/stress_checks.h) as a table.
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
 #include <memory>
 
 #include "app/commands.h"
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 
 namespace sylva {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "models/generate/plant_library.h"
 #include "stress_support.h"
 

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "../gl/gl_test_support.h"
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "stress_support.h"
 #include "lighting/sky_model.h"
 #include "lighting/spherical_harmonics.h"

@@ -7,7 +7,7 @@
 
 #include <limits>
 
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "stress_support.h"
 #include "systems/select_representation_system.h"
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "stress_support.h"
 #include "lod/eco_tiles.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 
 namespace sylva::testing {
 

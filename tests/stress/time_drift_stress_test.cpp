@@ -3,7 +3,7 @@
 // what direct evaluation at N / fps gives; nothing accumulates.
 #include <gtest/gtest.h>
 
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "scenarios/camera_path.h"
 #include "stress_support.h"
 #include "resources/playback.h"

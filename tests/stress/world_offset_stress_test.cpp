@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "../gl/gl_test_support.h"
-#include "app/stress_checks.h"
+#include "app/stress/stress_checks.h"
 #include "components/camera.h"
 #include "scenarios/camera_path.h"
 #include "stress_support.h"

@@ -4,16 +4,26 @@
 // a table; tests/stress/ runs the same functions under CTest (label `stress`) and adds
 // hand-checkable assertions on the values.
 //
+// Six families, one file each in app/stress/ (the tests in tests/stress/ are named alike):
+//
 //   world offsets     the tiny scene 1e4, 1e5, 1e6 m from the origin renders like the origin;
 //                     a camera path there is the origin's path shifted (no jitter)
+//                     world_offset_checks.cpp
 //   degenerate input  NaN / infinite glTF positions rejected with a named error; zero-area
 //                     triangles dropped at import; the presets have none
+//                     degenerate_input_checks.cpp
 //   point clusters    eco tiles over plants all at one point or on a line: bounded depth, every
 //                     plant in one leaf, hierarchical culling equal to flat culling
+//                     plant_cluster_checks.cpp
 //   extreme light     sun and sky intensity 0 .. 1e12, sun below / on the horizon / at the
 //                     zenith, turbidity at its limits: finite SH, finite uniforms, sane images
+//                     extreme_light_checks.cpp
 //   time              a million and ten million frames: clock, camera and sun without drift
+//                     time_drift_checks.cpp
 //   extreme LOD       lod_scale 0.01 .. 100, distances 0 .. inf and NaN, scale 0
+//                     extreme_lod_checks.cpp
+//
+// stress_checks.cpp runs them all and prints the table; check_support.h is what they share.
 //
 // Every check is fast (scenarios/tiny.json-sized scenes at 160x90): the whole suite runs in
 // well under a minute on two llvmpipe cores.
