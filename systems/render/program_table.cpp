@@ -17,6 +17,24 @@ constexpr bool drawn_as(material_kind m, primitive_kind p) {
     return p == primitive_kind::triangles || m == material_kind::bark || m == material_kind::leaf;
 }
 
+// The fragment shader of a draw: one entry file per pass and representation (shaders/), so
+// each reads as one path. Opaque shadow casters and samples are depth only: none.
+const char* fragment_of(pass_kind pass, material_kind material, surface_primitive primitive, bool id_buffer) {
+    switch (pass) {
+    case pass_kind::shadow:
+        return alpha_tested(material) && primitive == surface_primitive::triangles ? "surface_shadow.frag" : "";
+    case pass_kind::splat_visibility:
+        return id_buffer ? "splat_visibility.frag" : "";
+    case pass_kind::soft_splats:
+        return "point.frag";
+    default:
+        break;
+    }
+    if (primitive == surface_primitive::points) return "point.frag";
+    if (primitive != surface_primitive::triangles) return "line.frag";
+    return material == material_kind::billboard_cloud ? "cloud.frag" : "mesh.frag";
+}
+
 surface_program locate(GLuint id) {
     surface_program p;
     p.id = id;
@@ -99,15 +117,12 @@ GLuint program_table::screen(screen_program program) const {
 program_source program_table::source_of(pass_kind pass, material_kind material,
                                         surface_primitive primitive, lighting_variant lighting) const {
     const bool shadow = pass == pass_kind::shadow;
-    program_source source{"surface.vert", "surface.frag", {}, {}};
+    program_source source{"surface.vert", fragment_of(pass, material, primitive, m_options.id_buffer), {}, {}};
     if (primitive == surface_primitive::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (pass == pass_kind::splat_visibility) {
         // Depth only (and the ID buffer's instance, which the blend pass does not write).
         source.defines.push_back("SPLAT_VISIBILITY");
-        if (m_options.id_buffer)
-            source.defines.push_back("WRITE_ID");
-        else
-            source.fragment.clear();
+        if (m_options.id_buffer) source.defines.push_back("WRITE_ID");
         return source;
     }
     if (pass == pass_kind::soft_splats) source.defines.push_back("SOFT_SPLATS");
@@ -136,12 +151,7 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     // The soft splats' blend pass writes the splat layer's nearest depth where IDs would go.
     if (!shadow && m_options.id_buffer && pass != pass_kind::soft_splats)
         source.defines.push_back("WRITE_ID");
-    if (shadow) {
-        source.defines.push_back("SHADOW_PASS");
-        // Opaque casters need no fragment shader at all: depth only. Points and lines are
-        // never alpha-tested (the bake put them on opaque texels).
-        if (!alpha_tested(material) || primitive != surface_primitive::triangles) source.fragment.clear();
-    }
+    if (shadow) source.defines.push_back("SHADOW_PASS");
     return source;
 }
 

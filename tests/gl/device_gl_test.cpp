@@ -94,12 +94,16 @@ TEST(frame_ring, grows_when_a_frame_needs_more_than_a_region) {
 TEST(shader_library, every_surface_variant_compiles_and_links_once) {
     SYLVA_REQUIRE_GL();
     render::shader_library shaders;
-    const std::vector<std::vector<std::string>> variants = {
-        {}, {"MATERIAL_LEAF"}, {"MATERIAL_GROUND"}, {"SHADOW_PASS"}, {"MATERIAL_LEAF", "SHADOW_PASS"}};
-    for (const auto& defines : variants) {
-        const GLuint p = shaders.program({"surface.vert", "surface.frag", defines, {}});
+    const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
+        {"mesh.frag", {}},
+        {"mesh.frag", {"MATERIAL_LEAF"}},
+        {"mesh.frag", {"MATERIAL_GROUND"}},
+        {"", {"SHADOW_PASS"}},
+        {"surface_shadow.frag", {"MATERIAL_LEAF", "SHADOW_PASS"}}};
+    for (const auto& [fragment, defines] : variants) {
+        const GLuint p = shaders.program({"surface.vert", fragment, defines, {}});
         EXPECT_NE(p, 0u);
-        EXPECT_EQ(shaders.program({"surface.vert", "surface.frag", defines, {}}), p);
+        EXPECT_EQ(shaders.program({"surface.vert", fragment, defines, {}}), p);
     }
     EXPECT_NE(shaders.program({"sky.vert", "sky.frag", {}, {}}), 0u);
     EXPECT_EQ(shaders.compiled_count(), variants.size() + 1);
@@ -115,15 +119,15 @@ TEST(shader_library, point_and_line_variants_compile_and_link_with_the_line_geom
             d.insert(d.end(), more);
             return d;
         };
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "point.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "point.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
         EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_POINTS", "SHADOW_PASS"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "LINE_QUADS"}), "line.geom"}),
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag", with({"PRIMITIVE_LINES", "LINE_QUADS"}), "line.geom"}),
                   0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag",
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag",
                                    with({"PRIMITIVE_LINES", "LINE_QUADS", "WRITE_ID"}), "line.geom"}),
                   0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), {}}), 0u);
         EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_LINES", "SHADOW_PASS"}), {}}), 0u);
     }
     EXPECT_EQ(shaders.compiled_count(), 14u);
