@@ -13,8 +13,8 @@ namespace {
 constexpr std::uint32_t vertices_per(primitive_kind p) {
     return p == primitive_kind::triangles ? 3u : (p == primitive_kind::lines ? 2u : 1u);
 }
-static_assert(std::size_t(material_kind::billboard_cloud) + 1 == k_command_materials,
-              "k_command_materials counts material_kind");
+static_assert(std::size_t(material_kind::billboard_cloud) + 1 == k_material_kinds,
+              "k_material_kinds counts material_kind");
 
 }  // namespace
 
@@ -22,7 +22,7 @@ draw_commands::draw_commands(std::vector<terrain_tile> terrain_tiles)
     : m_terrain_tiles(std::move(terrain_tiles)) {}
 
 std::size_t draw_commands::bytes_needed(const draw_list& draws) const {
-    return (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_command_materials *
+    return (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_material_kinds *
            sizeof(indirect_command);
 }
 

@@ -28,15 +28,15 @@ struct command_range {
 
 // material_kind: bark, leaf, ground, billboard, billboard_cloud; primitive_kind: triangles,
 // points, lines.
-inline constexpr std::size_t k_command_materials = 5;
-inline constexpr std::size_t k_command_primitives = 3;
+inline constexpr std::size_t k_material_kinds = 5;
+inline constexpr std::size_t k_primitive_kinds = 3;
 inline constexpr std::size_t k_groups_per_pass =
-    k_command_materials * k_command_primitives * k_lighting_variants;
+    k_material_kinds * k_primitive_kinds * k_lighting_variants;
 using pass_commands = std::array<command_range, k_groups_per_pass>;
 
 constexpr std::size_t group_of(material_kind m, primitive_kind p,
                                lighting_variant l = lighting_variant::normal_mapped) {
-    return (std::size_t(l) * k_command_primitives + std::size_t(p)) * k_command_materials + std::size_t(m);
+    return (std::size_t(l) * k_primitive_kinds + std::size_t(p)) * k_material_kinds + std::size_t(m);
 }
 
 // A tile of the terrain mesh, drawn where its bounding sphere meets the view or a cascade.

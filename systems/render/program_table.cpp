@@ -8,8 +8,6 @@ namespace {
 constexpr bool alpha_tested(material_kind m) {
     return m == material_kind::leaf || m == material_kind::billboard || m == material_kind::billboard_cloud;
 }
-static_assert(std::size_t(material_kind::billboard_cloud) + 1 == program_table::k_materials,
-              "program_table::k_materials counts material_kind");
 
 // Points and lines are the samples of bark and leaf parts (Deussen 2002 §5): no other material
 // is drawn as them.
@@ -17,8 +15,14 @@ constexpr bool drawn_as(material_kind m, primitive_kind p) {
     return p == primitive_kind::triangles || m == material_kind::bark || m == material_kind::leaf;
 }
 
-// The fragment shader of a draw: one entry file per pass and representation (shaders/), so
-// each reads as one path. Opaque shadow casters and samples are depth only: none.
+// The shaders of a draw: one entry file per pass and representation (shaders/), so each reads
+// as one path; the defines then choose only material, lighting and measurement variants.
+const char* vertex_of(pass_kind pass, surface_primitive primitive) {
+    if (pass == pass_kind::shadow) return "surface_shadow.vert";
+    return primitive == surface_primitive::points ? "point.vert" : "surface.vert";
+}
+
+// Opaque shadow casters and splat visibility without an ID buffer are depth only: none.
 const char* fragment_of(pass_kind pass, material_kind material, surface_primitive primitive, bool id_buffer) {
     switch (pass) {
     case pass_kind::shadow:
@@ -64,7 +68,7 @@ std::size_t program_table::slot_of(pass_kind pass, material_kind material, surfa
     // Depth-only passes light nothing: one program serves every lighting variant.
     if (pass == pass_kind::shadow || pass == pass_kind::splat_visibility)
         lighting = lighting_variant::normal_mapped;
-    return ((std::size_t(pass) * k_materials + std::size_t(material)) * std::size_t(surface_primitive::count) +
+    return ((std::size_t(pass) * k_material_kinds + std::size_t(material)) * std::size_t(surface_primitive::count) +
             std::size_t(primitive)) *
                k_lighting_variants +
            std::size_t(lighting);
@@ -117,7 +121,7 @@ GLuint program_table::screen(screen_program program) const {
 program_source program_table::source_of(pass_kind pass, material_kind material,
                                         surface_primitive primitive, lighting_variant lighting) const {
     const bool shadow = pass == pass_kind::shadow;
-    program_source source{"surface.vert", fragment_of(pass, material, primitive, m_options.id_buffer), {}, {}};
+    program_source source{vertex_of(pass, primitive), fragment_of(pass, material, primitive, m_options.id_buffer), {}, {}};
     if (primitive == surface_primitive::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (pass == pass_kind::splat_visibility) {
         // Depth only (and the ID buffer's instance, which the blend pass does not write).
@@ -151,7 +155,6 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     // The soft splats' blend pass writes the splat layer's nearest depth where IDs would go.
     if (!shadow && m_options.id_buffer && pass != pass_kind::soft_splats)
         source.defines.push_back("WRITE_ID");
-    if (shadow) source.defines.push_back("SHADOW_PASS");
     return source;
 }
 

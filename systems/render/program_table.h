@@ -17,6 +17,7 @@
 
 #include "models/mesh.h"
 #include "resources/scene_assets.h"
+#include "systems/render/draw_commands.h"
 #include "systems/render/gl.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/shader_library.h"
@@ -72,8 +73,7 @@ public:
     GLuint screen(screen_program program) const;
     std::size_t compiled_count() const { return m_shaders.compiled_count(); }
 
-    static constexpr std::size_t k_materials = 5;  // material_kind
-    static constexpr std::size_t k_surface_slots = std::size_t(pass_kind::count) * k_materials *
+    static constexpr std::size_t k_surface_slots = std::size_t(pass_kind::count) * k_material_kinds *
                                                    std::size_t(surface_primitive::count) *
                                                    k_lighting_variants;
 

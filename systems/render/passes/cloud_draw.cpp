@@ -1,7 +1,5 @@
 #include "systems/render/passes/cloud_draw.h"
 
-#include <array>
-
 namespace sylva::render {
 
 // One-sided: each side of a billboard shows only to its own viewer. In a cascade, both sides of
@@ -13,7 +11,7 @@ void cloud_draw::draw(pass_context& context, const draw_target& target) const {
     const bool shadow = target.kind == pass_kind::shadow;
     const pass_commands& groups = target.commands(context);
     const scene_textures& textures = *context.textures;
-    for (const lighting_variant l : {lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh}) {
+    for (const lighting_variant l : k_all_lightings) {
         const command_range& range = groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
         if (range.count == 0) continue;
         const surface_program& program =

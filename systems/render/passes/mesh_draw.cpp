@@ -1,14 +1,6 @@
 #include "systems/render/passes/mesh_draw.h"
 
-#include <array>
-
 namespace sylva::render {
-namespace {
-
-constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
-    lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh};
-
-}  // namespace
 
 void mesh_draw::draw(pass_context& context, const draw_target& target) const {
     if (target.kind == pass_kind::shadow) draw_casters(context, target);

@@ -8,6 +8,7 @@
 //                 in the renderer's list; the passes do not change.
 //
 // The renderer fills one pass_context per frame (no allocation) and hands it to each pass.
+#include <array>
 #include <cstdint>
 
 #include "models/mesh.h"
@@ -41,6 +42,10 @@ struct pass_context {
     void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
                     primitive_kind primitive = primitive_kind::triangles);
 };
+
+// Every lighting variant, in the order the passes draw their groups.
+inline constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
+    lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh};
 
 // Where a surface_draw draws this time.
 struct draw_target {

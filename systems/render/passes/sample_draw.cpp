@@ -13,7 +13,7 @@ void sample_draw::draw(pass_context& context, const draw_target& target) const {
     // GL's own lines where d' is about a pixel, and in the shadow cascades (one texel wide).
     const bool line_quads = !shadow && view.line_width_px > k_native_line_width_px;
     const pass_commands& groups = target.commands(context);
-    for (const lighting_variant lighting : {lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh})
+    for (const lighting_variant lighting : k_all_lightings)
         for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
             // Soft passes draw points only; the view's opaque samples leave soft points out.
             if (soft && primitive != primitive_kind::points) continue;

@@ -7,7 +7,7 @@ namespace sylva::render {
 namespace {
 
 bool any_points(const pass_commands& groups) {
-    for (const lighting_variant l : {lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh})
+    for (const lighting_variant l : k_all_lightings)
         for (const material_kind m : {material_kind::bark, material_kind::leaf})
             if (groups[group_of(m, primitive_kind::points, l)].count > 0) return true;
     return false;
