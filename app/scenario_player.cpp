@@ -212,7 +212,8 @@ void scenario_player::step(frame_record& record) {
     for (const auto& [name, ms] : m_schedule.last_timings())
         if (name != submit_system::k_name) record.cpu_ms += ms;
     record.cpu_ms += stats.submit_cpu_ms;
-    std::array<std::pair<std::string_view, double>, std::tuple_size_v<decltype(stats.gpu_pass_ms)>> passes;
+    constexpr std::size_t k_passes = std::tuple_size_v<decltype(stats.gpu_pass_ms)>;
+    std::array<std::pair<std::string_view, double>, k_passes> passes;
     for (std::size_t p = 0; p < stats.gpu_pass_ms.size(); ++p)
         passes[p] = {render::k_gpu_pass_names[p], stats.gpu_pass_ms[p]};
     assign_named(record.passes, passes);

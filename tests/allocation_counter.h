@@ -41,7 +41,8 @@ inline constexpr int k_site_depth = 24;
 // Deep enough to reach the GL entry point from inside LLVM's code generator.
 inline constexpr int k_stack_depth = 256;
 // Shared objects whose code is the GL driver (file names contain one of these).
-inline constexpr const char* k_driver_objects[] = {"libOSMesa", "libgallium", "_dri.so", "libGLX_mesa"};
+inline constexpr const char* k_driver_objects[] = {"libOSMesa", "libgallium", "_dri.so",
+                                                   "libGLX_mesa"};
 
 struct site {
     void* frames[k_site_depth];
@@ -88,7 +89,8 @@ inline void find_driver_ranges() {
 inline bool in_driver(void* const* frames, int depth) {
     for (int f = 0; f < depth; ++f)
         for (int r = 0; r < driver_range_count; ++r)
-            if (std::uintptr_t(frames[f]) >= driver_ranges[r].begin && std::uintptr_t(frames[f]) < driver_ranges[r].end)
+            if (std::uintptr_t(frames[f]) >= driver_ranges[r].begin &&
+                std::uintptr_t(frames[f]) < driver_ranges[r].end)
                 return true;
     return false;
 }
@@ -126,7 +128,7 @@ inline void* allocate(std::size_t size, std::size_t alignment, bool nothrow) {
 struct allocation_counts {
     std::uint64_t allocations = 0;  // outside the GL driver: what the test expects to be 0
     std::uint64_t bytes = 0;
-    std::uint64_t driver = 0;       // beneath a GL call, in the driver (see above)
+    std::uint64_t driver = 0;  // beneath a GL call, in the driver (see above)
 };
 
 // Counts from construction to counts(); one scope at a time.
@@ -152,7 +154,8 @@ public:
     }
     // The call stacks of the first allocations counted, to stderr (no allocation).
     static void print_sites() {
-        const int n = std::min(allocation_detail::sites_taken.load(), allocation_detail::k_max_sites);
+        const int n =
+            std::min(allocation_detail::sites_taken.load(), allocation_detail::k_max_sites);
         for (int i = 0; i < n; ++i) {
             const auto& s = allocation_detail::sites[i];
             std::fprintf(stderr, "allocation %d of %zu bytes at:\n", i + 1, s.bytes);
@@ -165,8 +168,12 @@ public:
 }  // namespace sylva::testing
 
 // The replacements (C++20 [new.delete]): every form forwards to malloc / aligned_alloc / free.
-void* operator new(std::size_t n) { return sylva::testing::allocation_detail::allocate(n, 0, false); }
-void* operator new[](std::size_t n) { return sylva::testing::allocation_detail::allocate(n, 0, false); }
+void* operator new(std::size_t n) {
+    return sylva::testing::allocation_detail::allocate(n, 0, false);
+}
+void* operator new[](std::size_t n) {
+    return sylva::testing::allocation_detail::allocate(n, 0, false);
+}
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
     return sylva::testing::allocation_detail::allocate(n, 0, true);
 }
@@ -185,15 +192,39 @@ void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noe
 void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
     return sylva::testing::allocation_detail::allocate(n, std::size_t(a), true);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    std::free(p);
+}

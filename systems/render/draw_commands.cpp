@@ -27,23 +27,26 @@ std::size_t draw_commands::bytes_needed(const draw_list& draws) const {
 }
 
 template <typename Emit>
-void draw_commands::for_each_command(const frame_view& view, const mesh_pool& meshes, int cascade_count,
-                                     Emit&& emit) const {
+void draw_commands::for_each_command(const frame_view& view, const mesh_pool& meshes,
+                                     int cascade_count, Emit&& emit) const {
     // `primitives` > 0 draws that many primitives from the start of each submesh (a prefix,
     // Deussen 2002 §5.3); 0 draws them all.
     auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count,
                    std::uint32_t primitives = 0) {
         const std::uint32_t per = vertices_per(mesh.primitive);
         for (const auto& sub : mesh.submeshes) {
-            const std::uint32_t indices = primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
-            emit(std::size_t(pass) * k_groups_per_pass + group_of(sub.material, mesh.primitive, sub.lighting),
+            const std::uint32_t indices =
+                primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
+            emit(std::size_t(pass) * k_groups_per_pass +
+                     group_of(sub.material, mesh.primitive, sub.lighting),
                  indirect_command{indices, count, sub.first_index, sub.base_vertex, first});
         }
     };
     const draw_list& draws = *view.draws;
     for (const auto& batch : draws.batches) {
         if (is_shadow_pass(batch.pass) && int(batch.pass) >= cascade_count) continue;
-        add(batch.pass, meshes.get(batch.mesh), batch.first_instance, batch.instance_count, batch.count);
+        add(batch.pass, meshes.get(batch.mesh), batch.first_instance, batch.instance_count,
+            batch.count);
     }
     // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
     const auto terrain_instance = std::uint32_t(draws.instances.size());
@@ -51,7 +54,8 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
     std::array<cascade_bounds, k_max_cascades> cascades{};
     for (int c = 0; c < cascade_count; ++c) {
-        cascades[std::size_t(c)] = make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
+        cascades[std::size_t(c)] =
+            make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
         cascades[std::size_t(c)].holds_receivers = view.cascades->holds_receivers[std::size_t(c)];
     }
     for (const terrain_tile& tile : m_terrain_tiles) {
@@ -64,8 +68,8 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     }
 }
 
-std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& meshes, int cascade_count,
-                                   frame_ring& ring) {
+std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& meshes,
+                                   int cascade_count, frame_ring& ring) {
     // Sweep 1: how many commands each group holds.
     m_written.fill(0);
     for_each_command(view, meshes, cascade_count,
@@ -84,12 +88,14 @@ std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& mesh
     // Sweep 2: the commands at their group's place, in draw-list order within each group.
     m_written.fill(0);
     auto* base = static_cast<std::byte*>(block.data);
-    for_each_command(view, meshes, cascade_count, [&](std::size_t group, const indirect_command& command) {
-        const command_range& range = m_commands[group / k_groups_per_pass][group % k_groups_per_pass];
-        const std::size_t at = range.offset - std::size_t(block.offset) +
-                               std::size_t(m_written[group]++) * sizeof(indirect_command);
-        std::memcpy(base + at, &command, sizeof(command));
-    });
+    for_each_command(
+        view, meshes, cascade_count, [&](std::size_t group, const indirect_command& command) {
+            const command_range& range =
+                m_commands[group / k_groups_per_pass][group % k_groups_per_pass];
+            const std::size_t at = range.offset - std::size_t(block.offset) +
+                                   std::size_t(m_written[group]++) * sizeof(indirect_command);
+            std::memcpy(base + at, &command, sizeof(command));
+        });
     return bytes;
 }
 

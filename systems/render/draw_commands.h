@@ -36,7 +36,8 @@ using pass_commands = std::array<command_range, k_groups_per_pass>;
 
 constexpr std::size_t group_of(material_kind m, primitive_kind p,
                                lighting_variant l = lighting_variant::normal_mapped) {
-    return (std::size_t(l) * k_primitive_kinds + std::size_t(p)) * k_material_kinds + std::size_t(m);
+    return (std::size_t(l) * k_primitive_kinds + std::size_t(p)) * k_material_kinds +
+           std::size_t(m);
 }
 
 // A tile of the terrain mesh, drawn where its bounding sphere meets the view or a cascade.
@@ -54,7 +55,8 @@ public:
     std::size_t bytes_needed(const draw_list& draws) const;
     // Groups the draw list's batches and the visible terrain tiles into the ring; returns the
     // bytes written. Shadow batches of cascades past `cascade_count` are dropped.
-    std::uint64_t write(const frame_view& view, const mesh_pool& meshes, int cascade_count, frame_ring& ring);
+    std::uint64_t write(const frame_view& view, const mesh_pool& meshes, int cascade_count,
+                        frame_ring& ring);
 
     const pass_commands& pass(render_pass p) const { return m_commands[std::size_t(p)]; }
     std::uint32_t command_count() const { return m_command_count; }
@@ -74,7 +76,8 @@ private:
 
     // Calls emit(group, command) for every command of the frame, in draw-list order.
     template <typename Emit>
-    void for_each_command(const frame_view& view, const mesh_pool& meshes, int cascade_count, Emit&& emit) const;
+    void for_each_command(const frame_view& view, const mesh_pool& meshes, int cascade_count,
+                          Emit&& emit) const;
 
     std::vector<terrain_tile> m_terrain_tiles;
     std::array<pass_commands, k_passes> m_commands{};

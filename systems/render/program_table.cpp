@@ -6,7 +6,8 @@ namespace sylva::render {
 namespace {
 
 constexpr bool alpha_tested(material_kind m) {
-    return m == material_kind::leaf || m == material_kind::billboard || m == material_kind::billboard_cloud;
+    return m == material_kind::leaf || m == material_kind::billboard ||
+           m == material_kind::billboard_cloud;
 }
 
 // Points and lines are the samples of bark and leaf parts (Deussen 2002 §5): no other material
@@ -23,16 +24,19 @@ const char* vertex_of(pass_kind pass, surface_primitive primitive) {
 }
 
 // Opaque shadow casters and splat visibility without an ID buffer are depth only: none.
-const char* fragment_of(pass_kind pass, material_kind material, surface_primitive primitive, bool id_buffer) {
+const char* fragment_of(pass_kind pass, material_kind material, surface_primitive primitive,
+                        bool id_buffer) {
     switch (pass) {
-    case pass_kind::shadow:
-        return alpha_tested(material) && primitive == surface_primitive::triangles ? "surface_shadow.frag" : "";
-    case pass_kind::splat_visibility:
-        return id_buffer ? "splat_visibility.frag" : "";
-    case pass_kind::soft_splats:
-        return "point.frag";
-    default:
-        break;
+        case pass_kind::shadow:
+            return alpha_tested(material) && primitive == surface_primitive::triangles
+                       ? "surface_shadow.frag"
+                       : "";
+        case pass_kind::splat_visibility:
+            return id_buffer ? "splat_visibility.frag" : "";
+        case pass_kind::soft_splats:
+            return "point.frag";
+        default:
+            break;
     }
     if (primitive == surface_primitive::points) return "point.frag";
     if (primitive != surface_primitive::triangles) return "line.frag";
@@ -60,18 +64,19 @@ surface_program locate(GLuint id) {
 }  // namespace
 
 program_table::program_table(const program_options& options) : m_options(options) {
-    m_screen[std::size_t(screen_program::sky)] = m_shaders.program({"sky.vert", "sky.frag", {}, {}});
+    m_screen[std::size_t(screen_program::sky)] =
+        m_shaders.program({"sky.vert", "sky.frag", {}, {}});
 }
 
-std::size_t program_table::slot_of(pass_kind pass, material_kind material, surface_primitive primitive,
-                                   lighting_variant lighting) {
+std::size_t program_table::slot_of(pass_kind pass, material_kind material,
+                                   surface_primitive primitive, lighting_variant lighting) {
     // Depth-only passes light nothing: one program serves every lighting variant.
     if (pass == pass_kind::shadow || pass == pass_kind::splat_visibility)
         lighting = lighting_variant::normal_mapped;
-    return ((std::size_t(pass) * k_material_kinds + std::size_t(material)) * std::size_t(surface_primitive::count) +
-            std::size_t(primitive)) *
-               k_lighting_variants +
-           std::size_t(lighting);
+    std::size_t slot = std::size_t(pass);
+    slot = slot * k_material_kinds + std::size_t(material);
+    slot = slot * std::size_t(surface_primitive::count) + std::size_t(primitive);
+    return slot * k_lighting_variants + std::size_t(lighting);
 }
 
 void program_table::prepare(const gpu_mesh& mesh) {
@@ -119,9 +124,13 @@ GLuint program_table::screen(screen_program program) const {
 }
 
 program_source program_table::source_of(pass_kind pass, material_kind material,
-                                        surface_primitive primitive, lighting_variant lighting) const {
+                                        surface_primitive primitive,
+                                        lighting_variant lighting) const {
     const bool shadow = pass == pass_kind::shadow;
-    program_source source{vertex_of(pass, primitive), fragment_of(pass, material, primitive, m_options.id_buffer), {}, {}};
+    program_source source{vertex_of(pass, primitive),
+                          fragment_of(pass, material, primitive, m_options.id_buffer),
+                          {},
+                          {}};
     if (primitive == surface_primitive::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (pass == pass_kind::splat_visibility) {
         // Depth only (and the ID buffer's instance, which the blend pass does not write).

@@ -7,10 +7,14 @@
 // Surface programs are indexed by four axes:
 //
 //   pass_kind (4) x material_kind (5) x surface_primitive (4) x lighting_variant (3)
+//   slot = ((pass * 5 + material) * 4 + primitive) * 3 + lighting       (240 slots)
 //
 // Depth-only passes (shadow, splat_visibility) light nothing: their lighting axis folds to
-// normal_mapped. The few screen-filling programs (sky, the splat layer's composite) have their
-// own enum.
+// normal_mapped. Slots whose sources are equal share one GL program. The pass picks the entry
+// files (shaders/: mesh, cloud, line, point, splat_visibility, surface_shadow), the defines the
+// material, lighting and measurement variants. A mesh of points gets both splat styles' programs
+// and a mesh of lines both line widths': the frame chooses them (lod_policy splats, d'). The few
+// screen-filling programs (sky, the splat layer's composite) have their own enum.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,7 +37,8 @@ enum class surface_primitive : std::uint8_t { triangles, points, lines, line_qua
 enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_ids, count };
 
 constexpr surface_primitive surface_primitive_of(primitive_kind p, bool line_quads = false) {
-    if (p == primitive_kind::lines) return line_quads ? surface_primitive::line_quads : surface_primitive::lines;
+    if (p == primitive_kind::lines)
+        return line_quads ? surface_primitive::line_quads : surface_primitive::lines;
     return p == primitive_kind::points ? surface_primitive::points : surface_primitive::triangles;
 }
 
@@ -73,9 +78,9 @@ public:
     GLuint screen(screen_program program) const;
     std::size_t compiled_count() const { return m_shaders.compiled_count(); }
 
-    static constexpr std::size_t k_surface_slots = std::size_t(pass_kind::count) * k_material_kinds *
-                                                   std::size_t(surface_primitive::count) *
-                                                   k_lighting_variants;
+    static constexpr std::size_t k_surface_slots =
+        std::size_t(pass_kind::count) * k_material_kinds * std::size_t(surface_primitive::count) *
+        k_lighting_variants;
 
 private:
     static std::size_t slot_of(pass_kind pass, material_kind material, surface_primitive primitive,

@@ -60,7 +60,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     }
     setup_instance_attributes(m_meshes.vertex_array());
     if (settings.shadows)
-        m_shadow_maps = std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
+        m_shadow_maps =
+            std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
     m_static_upload_bytes = m_meshes.uploaded_bytes() + m_textures.uploaded_bytes;
     m_context.settings = &m_settings;
     m_context.programs = &m_programs;
@@ -110,15 +111,18 @@ void renderer::write_uniforms(const frame_view& view) {
     const sun& s = *view.sun_light;
     const bool sun_up = s.direction.y > -0.05f;
     u.sun_direction = glm::vec4(s.direction, cascade_count > 0 && sun_up ? 1.0f : 0.0f);
-    u.sun_radiance = glm::vec4(sun_up ? s.color * s.intensity : glm::vec3(0.0f), float(cascade_count));
-    for (int i = 0; i < 9; ++i) u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
+    u.sun_radiance =
+        glm::vec4(sun_up ? s.color * s.intensity : glm::vec3(0.0f), float(cascade_count));
+    for (int i = 0; i < 9; ++i)
+        u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
     for (int i = 0; i < 9; ++i)
         u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
     const sh9 sun_basis = sh_basis(s.direction);
     for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
     glm::vec3 horizon{0.0f};
-    for (int i = 0; i < 9; ++i) horizon += view.sky->irradiance_sh[std::size_t(i)] * (i == 0 ? 0.282095f : 0.0f);
+    for (int i = 0; i < 9; ++i)
+        horizon += view.sky->irradiance_sh[std::size_t(i)] * (i == 0 ? 0.282095f : 0.0f);
     u.fog = glm::vec4(horizon / std::numbers::pi_v<float> * 0.9f, float(k_fog_density_per_m));
     const float texel = m_shadow_maps ? 1.0f / float(m_shadow_maps->resolution()) : 0.0f;
     u.params = glm::vec4(m_settings.exposure, texel, view.time_s, 1.0f / m_ground_uv_scale);
@@ -138,8 +142,8 @@ void renderer::write_instances(const frame_view& view) {
         std::memcpy(block.data, instances.data(), instances.size() * sizeof(instance_gpu));
     instance_gpu terrain;
     terrain.position = view.terrain_position;
-    std::memcpy(static_cast<std::byte*>(block.data) + instances.size() * sizeof(instance_gpu), &terrain,
-                sizeof(terrain));
+    std::memcpy(static_cast<std::byte*>(block.data) + instances.size() * sizeof(instance_gpu),
+                &terrain, sizeof(terrain));
     glVertexArrayVertexBuffer(m_meshes.vertex_array(), k_instance_binding, m_ring.buffer(),
                               block.offset, sizeof(instance_gpu));
     m_frame_upload_bytes += bytes;
@@ -149,7 +153,8 @@ void renderer::render(const frame_view& view) {
     const auto start = std::chrono::steady_clock::now();
     m_context.view = &view;
     m_context.draw_calls = 0;
-    m_context.cascade_count = m_shadow_maps ? std::min(view.cascades->count, m_shadow_maps->cascades()) : 0;
+    m_context.cascade_count =
+        m_shadow_maps ? std::min(view.cascades->count, m_shadow_maps->cascades()) : 0;
     const draw_list& draws = *view.draws;
     const std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
                                      (draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
@@ -159,7 +164,8 @@ void renderer::render(const frame_view& view) {
     write_uniforms(view);
     write_instances(view);
     m_frame_upload_bytes += m_commands.write(view, m_meshes, m_context.cascade_count, m_ring);
-    m_record_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    m_record_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     glBindVertexArray(m_meshes.vertex_array());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, m_ring.buffer());

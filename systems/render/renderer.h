@@ -14,12 +14,13 @@
 #include "components/camera.h"
 #include "components/environment.h"
 #include "components/sun.h"
-#include "models/image/image.h"
-#include "resources/draw_list.h"
-#include "resources/frame_stats.h"
 #include "lighting/shadow_cascades.h"
 #include "lighting/sky_model.h"
 #include "lod/point_line_lod.h"
+#include "models/image/image.h"
+#include "resources/draw_list.h"
+#include "resources/frame_stats.h"
+#include "resources/scene_assets.h"
 #include "systems/render/draw_commands.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
@@ -36,7 +37,6 @@
 #include "systems/render/scene_textures.h"
 #include "systems/render/shadow_maps.h"
 #include "systems/render/sky_texture.h"
-#include "resources/scene_assets.h"
 
 namespace sylva::render {
 
@@ -138,7 +138,8 @@ private:
     opaque_pass m_opaque_pass{m_surface_draws};
     sky_pass m_sky_pass{m_sky};
     soft_splat_pass m_soft_splat_pass{m_surface_draws};
-    std::array<frame_pass*, 4> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass, &m_soft_splat_pass};
+    std::array<frame_pass*, 4> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass,
+                                        &m_soft_splat_pass};
     pass_context m_context;
 
     std::size_t m_uniform_offset = 0;

@@ -60,8 +60,10 @@ scene_textures::scene_textures(const scene_assets& assets) {
         // Pre-lit clouds read the page lit at bake time in its place (same layout and alpha).
         cloud_albedo = make_texture_array(assets.cloud_albedo, false);
         cloud_normal = make_texture_array(assets.cloud_normal, false, true);
-        if (!assets.cloud_pre_lit.empty()) cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
-        if (!assets.cloud_transfer.empty()) cloud_transfer = make_texture_array(assets.cloud_transfer, false);
+        if (!assets.cloud_pre_lit.empty())
+            cloud_pre_lit = make_texture_array(assets.cloud_pre_lit, false);
+        if (!assets.cloud_transfer.empty())
+            cloud_transfer = make_texture_array(assets.cloud_transfer, false);
     }
     species_block = make_species_block(assets);
     for (const auto* images :

@@ -20,8 +20,10 @@ void fill_sky_radiance_grid(const sky_model& sky, std::vector<float>& rgb) {
     for (int j = 0; j < k_sky_height; ++j) {
         const float theta = (float(j) + 0.5f) / k_sky_height * std::numbers::pi_v<float>;
         for (int i = 0; i < k_sky_width; ++i) {
-            const float phi = ((float(i) + 0.5f) / k_sky_width - 0.5f) * 2.0f * std::numbers::pi_v<float>;
-            glm::vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+            const float phi =
+                ((float(i) + 0.5f) / k_sky_width - 0.5f) * 2.0f * std::numbers::pi_v<float>;
+            glm::vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta),
+                        -std::sin(theta) * std::cos(phi)};
             glm::vec3 l = sky.radiance(d);
             std::memcpy(&rgb[(std::size_t(j) * k_sky_width + i) * 3], &l, sizeof(l));
         }
@@ -54,8 +56,9 @@ void fill_map_sky_grid(const std::vector<float>& map, float turn_deg, float inte
 }
 
 bool same_sky(const sky_model& a, const sky_model& b) {
-    return a.sun_direction == b.sun_direction && a.turbidity == b.turbidity && a.sky_intensity == b.sky_intensity &&
-           a.ground_albedo == b.ground_albedo && a.sun_irradiance == b.sun_irradiance;
+    return a.sun_direction == b.sun_direction && a.turbidity == b.turbidity &&
+           a.sky_intensity == b.sky_intensity && a.ground_albedo == b.ground_albedo &&
+           a.sun_irradiance == b.sun_irradiance;
 }
 
 sky_model sky_of(const environment& environment_sky, const sun& sun_light) {

@@ -30,7 +30,7 @@ private:
     std::uint64_t upload();
 
     gl_texture m_texture;
-    std::vector<float> m_grid;  // CPU radiance grid, k_width x k_height rgb, reused
+    std::vector<float> m_grid;             // CPU radiance grid, k_width x k_height rgb, reused
     std::optional<sky_model> m_sky_drawn;  // what m_texture holds
     // The scene's environment map at the sky texture's size, when it has one: the sky is then
     // this map turned about the vertical, not the analytic sky.

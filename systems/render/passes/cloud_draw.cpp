@@ -12,18 +12,21 @@ void cloud_draw::draw(pass_context& context, const draw_target& target) const {
     const pass_commands& groups = target.commands(context);
     const scene_textures& textures = *context.textures;
     for (const lighting_variant l : k_all_lightings) {
-        const command_range& range = groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
+        const command_range& range =
+            groups[group_of(material_kind::billboard_cloud, primitive_kind::triangles, l)];
         if (range.count == 0) continue;
-        const surface_program& program =
-            context.programs->surface(target.kind, material_kind::billboard_cloud, primitive_kind::triangles, l);
+        const surface_program& program = context.programs->surface(
+            target.kind, material_kind::billboard_cloud, primitive_kind::triangles, l);
         glUseProgram(program.id);
         if (shadow) glUniform1i(program.cascade, target.cascade);
         // Pre-lit clouds read the page lit at bake time in the colour page's place (same layout
         // and alpha); SH clouds add their transfer pages.
-        glBindTextureUnit(0, !shadow && l == lighting_variant::pre_lit ? textures.cloud_pre_lit.id()
-                                                                       : textures.cloud_albedo.id());
+        glBindTextureUnit(0, !shadow && l == lighting_variant::pre_lit
+                                 ? textures.cloud_pre_lit.id()
+                                 : textures.cloud_albedo.id());
         glBindTextureUnit(2, textures.cloud_normal.id());
-        if (!shadow && l == lighting_variant::sh) glBindTextureUnit(3, textures.cloud_transfer.id());
+        if (!shadow && l == lighting_variant::sh)
+            glBindTextureUnit(3, textures.cloud_transfer.id());
         context.draw_group(range, program.id, true);
     }
 }

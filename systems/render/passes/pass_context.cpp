@@ -4,7 +4,8 @@ namespace sylva::render {
 namespace {
 
 constexpr GLenum gl_mode(primitive_kind p) {
-    return p == primitive_kind::triangles ? GL_TRIANGLES : (p == primitive_kind::lines ? GL_LINES : GL_POINTS);
+    return p == primitive_kind::triangles ? GL_TRIANGLES
+                                          : (p == primitive_kind::lines ? GL_LINES : GL_POINTS);
 }
 
 }  // namespace
@@ -18,7 +19,8 @@ void pass_context::draw_group(const command_range& range, GLuint program, bool c
     else
         glDisable(GL_CULL_FACE);
     glMultiDrawElementsIndirect(gl_mode(primitive), GL_UNSIGNED_INT,
-                                reinterpret_cast<const void*>(range.offset), GLsizei(range.count), 0);
+                                reinterpret_cast<const void*>(range.offset), GLsizei(range.count),
+                                0);
     ++draw_calls;
 }
 

@@ -35,8 +35,8 @@ struct pass_context {
     render_target* target = nullptr;
     const shadow_maps* shadows = nullptr;  // null when the renderer draws no shadows
     pass_timer* timer = nullptr;
-    int cascade_count = 0;                 // cascades drawn this frame
-    std::uint32_t draw_calls = 0;          // counted by draw_group and the screen passes
+    int cascade_count = 0;         // cascades drawn this frame
+    std::uint32_t draw_calls = 0;  // counted by draw_group and the screen passes
 
     // One glMultiDrawElementsIndirect over a command group (nothing when it is empty).
     void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
@@ -55,7 +55,8 @@ struct draw_target {
 
     // The command groups of this target's pass: its cascade's, or the view's.
     const pass_commands& commands(const pass_context& context) const {
-        return context.commands->pass(kind == pass_kind::shadow ? shadow_pass(cascade) : render_pass::opaque);
+        return context.commands->pass(kind == pass_kind::shadow ? shadow_pass(cascade)
+                                                                : render_pass::opaque);
     }
 };
 

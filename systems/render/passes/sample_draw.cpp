@@ -17,7 +17,8 @@ void sample_draw::draw(pass_context& context, const draw_target& target) const {
         for (const primitive_kind primitive : {primitive_kind::points, primitive_kind::lines}) {
             // Soft passes draw points only; the view's opaque samples leave soft points out.
             if (soft && primitive != primitive_kind::points) continue;
-            if (pass == pass_kind::view && primitive == primitive_kind::points && view.soft_splats) continue;
+            if (pass == pass_kind::view && primitive == primitive_kind::points && view.soft_splats)
+                continue;
             for (const material_kind material : {material_kind::bark, material_kind::leaf}) {
                 const command_range& range = groups[group_of(material, primitive, lighting)];
                 if (range.count == 0) continue;
@@ -29,7 +30,8 @@ void sample_draw::draw(pass_context& context, const draw_target& target) const {
                     glUniform1f(program.depth_push, k_soft_splat_depth_offset * view.splat_plane);
                     glUniform1i(program.visibility_stride, k_soft_splat_visibility_stride);
                 }
-                if (pass == pass_kind::soft_splats) glUniform1f(program.soft_alpha, view.soft_splat_alpha);
+                if (pass == pass_kind::soft_splats)
+                    glUniform1f(program.soft_alpha, view.soft_splat_alpha);
                 if (primitive == primitive_kind::points) {
                     glEnable(GL_PROGRAM_POINT_SIZE);
                     set_point_uniforms(context, target, program);
@@ -49,13 +51,14 @@ void sample_draw::set_point_uniforms(const pass_context& context, const draw_tar
                                      const surface_program& program) {
     const frame_view& view = *context.view;
     const bool shadow = target.kind == pass_kind::shadow;
-    glUniform1f(program.splat_px, target.pixel_scale * (target.kind == pass_kind::soft_splats
-                                                             ? view.soft_splat_px
-                                                             : view.splat_px));
+    glUniform1f(program.splat_px,
+                target.pixel_scale *
+                    (target.kind == pass_kind::soft_splats ? view.soft_splat_px : view.splat_px));
     // A cascade's splats are as wide as its samples are apart (c_p = 1,
     // compute_shadow_prefix): k_shadow_sample_texels texels, or k_shadow_sample_spacing times
     // the viewer's sample distance there.
-    glUniform1f(program.splat_plane, shadow ? float(k_shadow_sample_spacing) * view.sample_plane : view.splat_plane);
+    glUniform1f(program.splat_plane,
+                shadow ? float(k_shadow_sample_spacing) * view.sample_plane : view.splat_plane);
     if (shadow) {
         glUniform1f(program.splat_texels, float(k_shadow_sample_texels));
         glUniform1f(program.shadow_push, float(k_shadow_splat_push));

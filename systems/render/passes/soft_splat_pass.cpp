@@ -24,9 +24,12 @@ void soft_splat_pass::draw(pass_context& context) {
     // Splats keep their size in the frame: in layer pixels they are k_scale as wide.
     const float pixel_scale = layered ? splat_layer::k_scale : 1.0f;
     if (layered) {
-        if (!m_layer) m_layer.emplace(context.settings->width, context.settings->height, context.settings->id_buffer);
+        if (!m_layer)
+            m_layer.emplace(context.settings->width, context.settings->height,
+                            context.settings->id_buffer);
         m_layer->begin();
-        if (context.shadows) glBindTextureUnit(1, context.shadows->texture());  // the splats' lighting
+        if (context.shadows)
+            glBindTextureUnit(1, context.shadows->texture());  // the splats' lighting
     }
     glDepthMask(GL_TRUE);
     if (layered) {
@@ -35,7 +38,8 @@ void soft_splat_pass::draw(pass_context& context) {
         glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         target.draw_ids(true);
     }
-    for (const surface_draw* d : m_draws) d->draw(context, {pass_kind::splat_visibility, -1, pixel_scale});
+    for (const surface_draw* d : m_draws)
+        d->draw(context, {pass_kind::splat_visibility, -1, pixel_scale});
     if (layered) {
         m_layer->draw_blend();
     } else {
@@ -52,7 +56,8 @@ void soft_splat_pass::draw(pass_context& context) {
         glEnablei(GL_BLEND, 1);
         glBlendEquationi(1, GL_MIN);
     }
-    for (const surface_draw* d : m_draws) d->draw(context, {pass_kind::soft_splats, -1, pixel_scale});
+    for (const surface_draw* d : m_draws)
+        d->draw(context, {pass_kind::soft_splats, -1, pixel_scale});
     if (layered) glBlendEquationi(1, GL_FUNC_ADD);
     glDisable(GL_BLEND);
     if (layered) composite(context);
