@@ -1,7 +1,11 @@
 #include "app/scenario_player.h"
 
+#include <array>
 #include <chrono>
+#include <iterator>
+#include <string_view>
 #include <thread>
+#include <tuple>
 
 #include "app/device_costs.h"
 #include "components/camera.h"
@@ -171,28 +175,56 @@ scenario_player::~scenario_player() = default;
 void scenario_player::set_frame(std::uint64_t frame) { m_frame = frame; }
 
 frame_record scenario_player::step() {
+    frame_record record;
+    step(record);
+    return record;
+}
+
+namespace {
+
+// Sets `named` to these (name, value) pairs, assigning into the strings already there so that
+// names that fit their old capacity allocate nothing.
+template <typename Pairs>
+void assign_named(std::vector<std::pair<std::string, double>>& named, const Pairs& pairs) {
+    named.resize(std::size(pairs));
+    std::size_t i = 0;
+    for (const auto& [name, value] : pairs) {
+        named[i].first.assign(name);
+        named[i].second = value;
+        ++i;
+    }
+}
+
+}  // namespace
+
+void scenario_player::step(frame_record& record) {
     m_world.resource<playback_clock>().frame = m_frame;
     m_world.set_frame_index(m_frame);
     const auto start = clock_type::now();
     m_executor.run([&] { m_schedule.run(m_world, m_executor); });
-    frame_record record;
     record.frame_ms = ms_since(start);
     record.frame = m_frame;
     record.time_s = m_world.resource<playback_clock>().time_s();
 
     const frame_stats& stats = m_world.resource<frame_stats>();
-    for (const auto& [name, ms] : m_schedule.last_timings()) {
-        record.systems.emplace_back(std::string(name), ms);
+    assign_named(record.systems, m_schedule.last_timings());
+    record.cpu_ms = 0.0;
+    for (const auto& [name, ms] : m_schedule.last_timings())
         if (name != submit_system::k_name) record.cpu_ms += ms;
-    }
     record.cpu_ms += stats.submit_cpu_ms;
+    constexpr std::size_t k_passes = std::tuple_size_v<decltype(stats.gpu_pass_ms)>;
+    std::array<std::pair<std::string_view, double>, k_passes> passes;
     for (std::size_t p = 0; p < stats.gpu_pass_ms.size(); ++p)
-        record.passes.emplace_back(std::string(render::k_gpu_pass_names[p]), stats.gpu_pass_ms[p]);
+        passes[p] = {render::k_gpu_pass_names[p], stats.gpu_pass_ms[p]};
+    assign_named(record.passes, passes);
     record.gpu_ms = stats.gpu_ms;
     const draw_list& draws = m_world.resource<draw_list>();
     record.triangles = draws.triangles;
     record.shadow_triangles = draws.shadow_triangles;
     const cascade_set& cascades = m_world.resource<cascade_set>();
+    record.shadow_texel_m.clear();
+    record.shadow_split_m.clear();
+    record.shadow_drawn.clear();
     for (int c = 0; c < cascades.count; ++c) {
         record.shadow_texel_m.push_back(cascades.texel_world_size[std::size_t(c)]);
         record.shadow_split_m.push_back(cascades.split_far[std::size_t(c)]);
@@ -207,9 +239,9 @@ frame_record scenario_player::step() {
     record.draw_calls = stats.draw_calls;
     record.aggregated_tiles = m_world.resource<tile_point_draws>().tiles;
     record.aggregated_plants = m_world.resource<tile_point_draws>().plants;
+    record.image_hash = 0;
     record.state_hash = state_hash();
     ++m_frame;
-    return record;
 }
 
 image_rgba8 scenario_player::capture() const {

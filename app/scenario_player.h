@@ -65,6 +65,9 @@ public:
     ~scenario_player();
 
     frame_record step();  // plays the current frame, then advances to the next
+    // The same into `record`, reusing its buffers: once a record has held a frame, stepping
+    // into it again allocates nothing (the warm frame loop, STYLE habit 5).
+    void step(frame_record& record);
     image_rgba8 capture() const;
     // The last frame's ID buffer as plant IDs, rows top to bottom: 0 for no plant (sky, terrain),
     // else the plant's dense index + 1. For a frame rendered at `samples` times the size along

@@ -5,7 +5,7 @@
 // drawn whole, the partner at `value`; neither is blended (the two overlap across a band, see
 // lod/billboard_cloud_lod.h, so the primary never needs to be partial). A billboard cloud
 // fades by raising its alpha threshold, every other representation by a stable screen-door
-// dissolve (shaders/surface.frag). Outside a transition band `partner` is none.
+// dissolve (shaders/mesh.frag). Outside a transition band `partner` is none.
 // Writer: select_representation; read by build_draw_list.
 #include <cstdint>
 

@@ -53,7 +53,7 @@ cloud_lod_choice choose_cloud_lod(const species_entry& species, float cloud_dist
 //
 // At fade 1 the threshold is the least colour alpha a covered texel can have (coverage 0.5,
 // the normal page's alpha test, times the gaussian's e^-1 at a corner for σ = 1), so only
-// coverage decides. Mirrored in shaders/surface.frag; keep both in sync.
+// coverage decides. Mirrored in shaders/cloud.frag; keep both in sync.
 inline constexpr float k_cloud_threshold_shown = 0.18f;
 inline constexpr float k_cloud_threshold_gone = 1.02f;
 float cloud_alpha_threshold(float fade);

@@ -189,7 +189,7 @@ inline constexpr float k_soft_splat_depth_offset = 5.0f;  // ε, in opaque splat
 // coverage IoU on landscape at d' = 2 from 0.799 to 0.756.
 inline constexpr int k_soft_splat_visibility_stride = 2;
 // ∫∫ exp(−2(u² + v²)) du dv over u, v in [−1, 1] divided by its square's area 4: the Gaussian's
-// mean over its square footprint, (√(π/8)·erf(√2))², as the shader evaluates it (surface.frag).
+// mean over its square footprint, (√(π/8)·erf(√2))², as the shader evaluates it (point.frag).
 inline constexpr double k_soft_splat_kernel_mean = 0.3577763;
 
 // Soft splats narrower than this (on screen, pixels) are drawn straight into the frame: in the

@@ -10,7 +10,7 @@ void scale_vertices(std::vector<vertex>& vertices, float scale) {
     for (auto& v : vertices) v.position *= scale;
 }
 
-// Point and line samples are shaded with the leaf or the bark texture (renderer::draw_samples).
+// Point and line samples are shaded with the leaf or the bark texture (systems/render/passes/sample_draw.cpp).
 material_kind sample_material(material_kind m) {
     return m == material_kind::leaf || m == material_kind::billboard ? material_kind::leaf : material_kind::bark;
 }

@@ -1,7 +1,7 @@
-// Sun and sky shading shared by surface.frag (per fragment) and surface.vert (per point: a
-// splat is one sample, so its colour is computed once, where the vertex is, and every fragment
-// of the splat takes it -- on llvmpipe, which shades fragments in 4x4 blocks, a one-pixel
-// splat's fragment shader costs as much as sixteen pixels').
+// Sun and sky shading shared by mesh.frag, cloud.frag and line.frag (per fragment) and
+// point.vert (per point: a splat is one sample, so its colour is computed once, where the
+// vertex is, and every fragment of the splat takes it -- on llvmpipe, which shades fragments in
+// 4x4 blocks, a one-pixel splat's fragment shader costs as much as sixteen pixels').
 // Needs common.glsl first.
 
 layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
@@ -9,7 +9,7 @@ layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
 // Cascade chosen by view depth; four hardware-PCF taps half a texel off centre, each a bilinear
 // 2x2 compare, together a smooth 3x3-texel footprint (a software rasteriser pays per tap). The
 // sample is pushed along the normal by about one texel to avoid acne on slopes.
-// SHADOW_SINGLE_TAP (point splats, shaded once per sample in surface.vert): one bilinear tap at
+// SHADOW_SINGLE_TAP (point splats, shaded once per sample in point.vert): one bilinear tap at
 // the centre. The 3x3 filter smooths a shadow's edge across neighbouring pixels of one surface;
 // a splat's neighbours are other random samples, so it smooths nothing there. On landscape
 // (6 frames, soft splats, d' = 3 and 2.5 without fog weighting) it moved popping from 3.561 to

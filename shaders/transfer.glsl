@@ -7,7 +7,7 @@
 // u_sun_radiance). Every representation of a plant reads the same coefficients, so a plant is
 // lit alike at every distance. Needs common.glsl first.
 
-// Per species, by texture layer (systems/render/renderer.cpp write_species_block): x the
+// Per species, by texture layer (systems/render/scene_textures.cpp make_species_block): x the
 // centre height of a sphere around every representation of the plant (scale 1), y its radius,
 // z the species' first layer in the transfer-page arrays. Shadows between objects (Behrendt
 // 2005 §4: "we use a shadow map") are looked up from where the sun's ray leaves the plant's own

@@ -9,7 +9,7 @@
 // counter-clockwise winding seen from that viewer, all in one material_kind::billboard sub-mesh.
 // Drawn with back faces culled, each side shows only to its own viewer (true two-sided
 // billboards): the runtime relabels the sub-mesh material_kind::billboard_cloud and draws it so
-// (setup/spawn_scenario.cpp, systems/render/renderer.cpp). Drawn double-sided, as crossed
+// (setup/spawn_scenario.cpp, systems/render/passes/cloud_draw.cpp). Drawn double-sided, as crossed
 // billboards are, the two quads of a billboard share a depth and either may win; the loser's
 // image is the other's mirror with the same silhouette, so that degrades to the crossed
 // billboard's look, not to holes.

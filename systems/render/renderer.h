@@ -1,32 +1,42 @@
 #pragma once
-// The GL submission of a frame: shadow cascades, opaque surfaces (terrain, bark, alpha-tested
-// leaves) and the sky, each pass a few multi-draw-indirect calls over the shared mesh pool with
-// per-instance data streamed through the persistent frame ring. Owned and called only by the
-// thread that owns the GL context (the submit system is a main-thread system).
+// The GL submission of a frame: shadow cascades, opaque surfaces, the sky and soft splats
+// (systems/render/passes/), each pass a few multi-draw-indirect calls over the shared mesh pool
+// with per-instance data and indirect commands streamed through the persistent frame ring.
+// Owned and called only by the thread that owns the GL context (the submit system is a
+// main-thread system). Once warm, a frame allocates nothing and compiles nothing: programs are
+// built with the meshes (program_table.h), commands go straight into the ring
+// (draw_commands.h).
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <optional>
-#include <utility>
 #include <vector>
 
 #include "components/camera.h"
 #include "components/environment.h"
 #include "components/sun.h"
-#include "models/image/image.h"
-#include "resources/draw_list.h"
-#include "resources/frame_stats.h"
 #include "lighting/shadow_cascades.h"
 #include "lighting/sky_model.h"
 #include "lod/point_line_lod.h"
+#include "models/image/image.h"
+#include "resources/draw_list.h"
+#include "resources/frame_stats.h"
+#include "resources/scene_assets.h"
+#include "systems/render/draw_commands.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
+#include "systems/render/passes/cloud_draw.h"
+#include "systems/render/passes/mesh_draw.h"
+#include "systems/render/passes/pass_context.h"
+#include "systems/render/passes/sample_draw.h"
+#include "systems/render/passes/sky_pass.h"
+#include "systems/render/passes/soft_splat_pass.h"
+#include "systems/render/passes/surface_pass.h"
+#include "systems/render/program_table.h"
 #include "systems/render/render_target.h"
-#include "systems/render/shader_library.h"
+#include "systems/render/scene_textures.h"
 #include "systems/render/shadow_maps.h"
-#include "systems/render/splat_layer.h"
-#include "resources/scene_assets.h"
+#include "systems/render/sky_texture.h"
 
 namespace sylva::render {
 
@@ -94,120 +104,47 @@ public:
     // instance after the last plant instance.
     std::vector<std::uint32_t> read_ids() const { return m_target.read_ids(); }
     void present(int window_width, int window_height) const;
-    std::size_t programs_compiled() const { return m_shaders.compiled_count(); }
+    std::size_t programs_compiled() const { return m_programs.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
-    // Uploads a mesh after construction (its id follows the scene's meshes); draw lists may then
-    // name it. Used by the primitive-cost calibration.
-    std::uint16_t add_mesh(const mesh_data& mesh) { return m_meshes.add(mesh); }
+    // Uploads a mesh after construction (its id follows the scene's meshes) and builds the
+    // programs it is drawn with; draw lists may then name it. Used by the primitive-cost
+    // calibration.
+    std::uint16_t add_mesh(const mesh_data& mesh);
     const renderer_settings& settings() const { return m_settings; }
 
 private:
-    struct command_range {
-        std::size_t offset = 0;  // bytes into the ring buffer
-        std::uint32_t count = 0;
-    };
-    // Indirect command groups per pass (shadow cascades and opaque), material, primitive and
-    // lighting variant. material_kind: bark, leaf, ground, billboard, billboard_cloud
-    static constexpr std::size_t k_materials = 5;
-    static constexpr std::size_t k_primitives = 3;  // primitive_kind: triangles, points, lines
-    static constexpr std::size_t k_groups_per_pass =
-        k_materials * k_primitives * k_lighting_variants;
-    using pass_commands = std::array<command_range, k_groups_per_pass>;
-    // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
-    struct indirect_command {
-        std::uint32_t count;
-        std::uint32_t instance_count;
-        std::uint32_t first_index;
-        std::int32_t base_vertex;
-        std::uint32_t base_instance;
-    };
-    static constexpr std::size_t k_command_groups = std::size_t(render_pass::count) * k_groups_per_pass;
-    static constexpr std::size_t group_of(material_kind m, primitive_kind p,
-                                          lighting_variant l = lighting_variant::normal_mapped) {
-        return (std::size_t(l) * k_primitives + std::size_t(p)) * k_materials + std::size_t(m);
-    }
-
-    void update_sky_texture(const frame_view& view);
-    void upload_sky_grid();
     void write_uniforms(const frame_view& view);
     void write_instances(const frame_view& view);
-    void write_commands(const frame_view& view);
-    void draw_group(const command_range& range, GLuint program, bool cull_back_faces,
-                    primitive_kind primitive = primitive_kind::triangles);
-    // What draw_samples draws: points and lines into a shadow cascade; the view's opaque
-    // samples (lines, and points unless they are soft); or the two passes of soft splats.
-    enum class sample_pass { cascade, view, splat_visibility, soft_splats };
-    // `pixel_scale`: splat sizes in the target drawn to over the frame's (the splat layer's
-    // k_scale, or 1).
-    void draw_samples(const pass_commands& groups, sample_pass pass, int cascade = -1,
-                      float pixel_scale = 1.0f);
-    void draw_soft_splats();
-    void composite_splat_layer();
-    void draw_clouds(const pass_commands& groups, int cascade);
-    void write_species_block(const scene_assets& assets);
-    static constexpr std::size_t k_max_species_spheres = 64;  // transfer.glsl u_species_sphere
-    static constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
-        lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh};
-    void draw_shadow_cascades();
-    void draw_opaque();
-    void draw_sky();
-    GLuint surface_program(material_kind material, bool shadow,
-                           primitive_kind primitive = primitive_kind::triangles,
-                           lighting_variant lighting = lighting_variant::normal_mapped,
-                           sample_pass samples = sample_pass::view);
 
     renderer_settings m_settings;
-    shader_library m_shaders;
     mesh_pool m_meshes;
+    program_table m_programs;
     frame_ring m_ring;
     render_target m_target;
-    std::optional<splat_layer> m_splat_layer;  // made when soft splats are first drawn
     std::unique_ptr<shadow_maps> m_shadow_maps;
     pass_timer m_timer;
-    gl_texture m_leaf_textures;
-    gl_texture m_bark_textures;
-    gl_texture m_ground_texture;
-    gl_texture m_billboard_albedo;  // crossed billboards: colour with coverage alpha
-    gl_texture m_billboard_normal;  // and model-space normals
-    gl_texture m_billboard_transfer;  // SH transfer pages, k_transfer_pages layers per species
-    gl_texture m_cloud_albedo;      // billboard clouds: colour with coverage x gaussian alpha
-    gl_texture m_cloud_normal;      // and model-space normals with coverage alpha
-    gl_texture m_cloud_pre_lit;     // colour lit at bake time (pre-lit species)
-    gl_texture m_cloud_transfer;    // SH transfer pages, k_transfer_pages layers per species
-    gl_buffer m_species_block;      // transfer.glsl species_block: each species' sphere
-    gl_texture m_sky_texture;
-    std::vector<float> m_sky_grid;  // CPU radiance grid, reused when the sun moves
-    std::optional<sky_model> m_sky_drawn;  // what m_sky_texture holds
-    // The scene's environment map at the sky texture's size, when it has one: the sky is then
-    // this map turned about the vertical, not the analytic sky.
-    std::vector<float> m_map_sky;
-    std::optional<std::pair<float, float>> m_map_drawn;  // (turn_deg, sky_intensity) drawn
-    struct terrain_tile {
-        std::uint16_t mesh = 0;
-        glm::vec3 center{0.0f};  // terrain-local
-        float radius = 0.0f;
-    };
-    std::vector<terrain_tile> m_terrain_tiles;
+    scene_textures m_textures;
+    sky_texture m_sky;
+    draw_commands m_commands;
     float m_ground_uv_scale = 4.0f;
-    std::array<pass_commands, static_cast<int>(render_pass::count)> m_commands{};
-    // Commands per (pass, material) before they are copied to the ring; kept to avoid
-    // allocating in the frame loop.
-    std::array<std::vector<indirect_command>, k_command_groups> m_command_groups;
+
+    // The representations, in the order the surface passes draw them (passes/pass_context.h).
+    mesh_draw m_mesh_draw;
+    cloud_draw m_cloud_draw;
+    sample_draw m_sample_draw;
+    std::array<const surface_draw*, 3> m_surface_draws{&m_mesh_draw, &m_cloud_draw, &m_sample_draw};
+    // The frame's passes, in order.
+    shadow_cascade_pass m_shadow_pass{m_surface_draws};
+    opaque_pass m_opaque_pass{m_surface_draws};
+    sky_pass m_sky_pass{m_sky};
+    soft_splat_pass m_soft_splat_pass{m_surface_draws};
+    std::array<frame_pass*, 4> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass,
+                                        &m_soft_splat_pass};
+    pass_context m_context;
+
     std::size_t m_uniform_offset = 0;
-    std::array<bool, k_max_cascades> m_cascades_holding_receivers{true, true, true, true};
-    float m_splat_px = 1.0f;
-    float m_sample_plane = 0.0f;
-    float m_sample_fog = 0.0f;
-    float m_splat_plane = 0.0f;
-    float m_line_width_px = 1.0f;
-    bool m_soft_splats = false;
-    float m_soft_splat_px = 2.0f;
-    float m_soft_splat_alpha = 1.0f;
-    int m_cascade_count = 0;
     std::uint64_t m_frame_upload_bytes = 0;
     std::uint64_t m_static_upload_bytes = 0;
-    std::uint32_t m_draw_calls = 0;
-    std::uint32_t m_indirect_commands = 0;
     double m_record_ms = 0.0;
 };
 

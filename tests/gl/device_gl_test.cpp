@@ -94,12 +94,22 @@ TEST(frame_ring, grows_when_a_frame_needs_more_than_a_region) {
 TEST(shader_library, every_surface_variant_compiles_and_links_once) {
     SYLVA_REQUIRE_GL();
     render::shader_library shaders;
-    const std::vector<std::vector<std::string>> variants = {
-        {}, {"MATERIAL_LEAF"}, {"MATERIAL_GROUND"}, {"SHADOW_PASS"}, {"MATERIAL_LEAF", "SHADOW_PASS"}};
-    for (const auto& defines : variants) {
-        const GLuint p = shaders.program({"surface.vert", "surface.frag", defines, {}});
+    struct variant {
+        std::string vertex;
+        std::string fragment;
+        std::vector<std::string> defines;
+    };
+    const std::vector<variant> variants = {
+        {"surface.vert", "mesh.frag", {}},
+        {"surface.vert", "mesh.frag", {"MATERIAL_LEAF"}},
+        {"surface.vert", "mesh.frag", {"MATERIAL_GROUND"}},
+        {"surface.vert", "cloud.frag", {"MATERIAL_BILLBOARD_CLOUD"}},
+        {"surface_shadow.vert", "", {}},
+        {"surface_shadow.vert", "surface_shadow.frag", {"MATERIAL_LEAF"}}};
+    for (const variant& v : variants) {
+        const GLuint p = shaders.program({v.vertex, v.fragment, v.defines, {}});
         EXPECT_NE(p, 0u);
-        EXPECT_EQ(shaders.program({"surface.vert", "surface.frag", defines, {}}), p);
+        EXPECT_EQ(shaders.program({v.vertex, v.fragment, v.defines, {}}), p);
     }
     EXPECT_NE(shaders.program({"sky.vert", "sky.frag", {}, {}}), 0u);
     EXPECT_EQ(shaders.compiled_count(), variants.size() + 1);
@@ -115,23 +125,23 @@ TEST(shader_library, point_and_line_variants_compile_and_link_with_the_line_geom
             d.insert(d.end(), more);
             return d;
         };
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_POINTS", "SHADOW_PASS"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "LINE_QUADS"}), "line.geom"}),
+        EXPECT_NE(shaders.program({"point.vert", "point.frag", with({"PRIMITIVE_POINTS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"point.vert", "point.frag", with({"PRIMITIVE_POINTS", "WRITE_ID"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface_shadow.vert", "", with({"PRIMITIVE_POINTS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag", with({"PRIMITIVE_LINES", "LINE_QUADS"}), "line.geom"}),
                   0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag",
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag",
                                    with({"PRIMITIVE_LINES", "LINE_QUADS", "WRITE_ID"}), "line.geom"}),
                   0u);
-        EXPECT_NE(shaders.program({"surface.vert", "surface.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), {}}), 0u);
-        EXPECT_NE(shaders.program({"surface.vert", "", with({"PRIMITIVE_LINES", "SHADOW_PASS"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface.vert", "line.frag", with({"PRIMITIVE_LINES", "WRITE_ID"}), {}}), 0u);
+        EXPECT_NE(shaders.program({"surface_shadow.vert", "", with({"PRIMITIVE_LINES"}), {}}), 0u);
     }
     EXPECT_EQ(shaders.compiled_count(), 14u);
 }
 
 TEST(shader_library, includes_are_expanded_and_missing_files_are_named) {
-    const std::string text = render::shader_library::expand("surface.vert", {"SHADOW_PASS"});
-    EXPECT_NE(text.find("#define SHADOW_PASS"), std::string::npos);
+    const std::string text = render::shader_library::expand("surface_shadow.vert", {"PRIMITIVE_POINTS"});
+    EXPECT_NE(text.find("#define PRIMITIVE_POINTS"), std::string::npos);
     EXPECT_NE(text.find("uniform frame_block"), std::string::npos);  // from common.glsl
     EXPECT_EQ(text.find("#include"), std::string::npos);
     try {

@@ -150,7 +150,7 @@ TEST(representation_golden, billboard_clouds_sh) {
 // Behrendt 2005 §2.3's sort-free fades, as the bench's billboard_clouds configuration draws
 // them: with the cloud distance at 25 m, the nearest plant is a mesh, the farthest a cloud and
 // the four between in the first half of the band, each a whole mesh with its cloud fading in
-// under the modified alpha test (surface.frag cloud_alpha_threshold).
+// under the modified alpha test (cloud.frag cloud_alpha_threshold).
 TEST(representation_golden, billboard_cloud_fades) {
     SYLVA_REQUIRE_GL();
     player_options options;

@@ -1,0 +1,16 @@
+// What every shaded surface fragment receives from surface.vert (or line.geom): the
+// camera-relative position, the normal, the texture coordinates and layer, the plant's tint,
+// and for the ID buffer (measure/: coverage, lighting jumps; WRITE_ID) the instance.
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+in float v_tint;
+flat in float v_layer;
+#ifdef WRITE_ID
+flat in uint v_instance;
+layout(location = 1) out uint out_id;  // ID buffer: instance index + 1 (0 = nothing drawn)
+#endif
+
+layout(binding = 0) uniform sampler2DArray u_albedo;
+layout(location = 0) out vec4 out_color;

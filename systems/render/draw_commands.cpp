@@ -1,0 +1,102 @@
+#include "systems/render/draw_commands.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "systems/build_draw_list_system.h"
+#include "systems/cull_system.h"
+#include "systems/render/renderer.h"
+
+namespace sylva::render {
+namespace {
+
+constexpr std::uint32_t vertices_per(primitive_kind p) {
+    return p == primitive_kind::triangles ? 3u : (p == primitive_kind::lines ? 2u : 1u);
+}
+static_assert(std::size_t(material_kind::billboard_cloud) + 1 == k_material_kinds,
+              "k_material_kinds counts material_kind");
+
+}  // namespace
+
+draw_commands::draw_commands(std::vector<terrain_tile> terrain_tiles)
+    : m_terrain_tiles(std::move(terrain_tiles)) {}
+
+std::size_t draw_commands::bytes_needed(const draw_list& draws) const {
+    return (draws.batches.size() + m_terrain_tiles.size() * 5 + 8) * k_material_kinds *
+           sizeof(indirect_command);
+}
+
+template <typename Emit>
+void draw_commands::for_each_command(const frame_view& view, const mesh_pool& meshes,
+                                     int cascade_count, Emit&& emit) const {
+    // `primitives` > 0 draws that many primitives from the start of each submesh (a prefix,
+    // Deussen 2002 §5.3); 0 draws them all.
+    auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count,
+                   std::uint32_t primitives = 0) {
+        const std::uint32_t per = vertices_per(mesh.primitive);
+        for (const auto& sub : mesh.submeshes) {
+            const std::uint32_t indices =
+                primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
+            emit(std::size_t(pass) * k_groups_per_pass +
+                     group_of(sub.material, mesh.primitive, sub.lighting),
+                 indirect_command{indices, count, sub.first_index, sub.base_vertex, first});
+        }
+    };
+    const draw_list& draws = *view.draws;
+    for (const auto& batch : draws.batches) {
+        if (is_shadow_pass(batch.pass) && int(batch.pass) >= cascade_count) continue;
+        add(batch.pass, meshes.get(batch.mesh), batch.first_instance, batch.instance_count,
+            batch.count);
+    }
+    // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
+    const auto terrain_instance = std::uint32_t(draws.instances.size());
+    const camera& cam = *view.view_camera;
+    const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
+    std::array<cascade_bounds, k_max_cascades> cascades{};
+    for (int c = 0; c < cascade_count; ++c) {
+        cascades[std::size_t(c)] =
+            make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
+        cascades[std::size_t(c)].holds_receivers = view.cascades->holds_receivers[std::size_t(c)];
+    }
+    for (const terrain_tile& tile : m_terrain_tiles) {
+        const glm::vec3 center = view.terrain_position + tile.center;
+        if (sphere_in_frustum(frustum, center, tile.radius))
+            add(render_pass::opaque, meshes.get(tile.mesh), terrain_instance, 1);
+        for (int c = 0; c < cascade_count; ++c)
+            if (sphere_overlaps_cascade(cascades[std::size_t(c)], center, tile.radius))
+                add(shadow_pass(c), meshes.get(tile.mesh), terrain_instance, 1);
+    }
+}
+
+std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& meshes,
+                                   int cascade_count, frame_ring& ring) {
+    // Sweep 1: how many commands each group holds.
+    m_written.fill(0);
+    for_each_command(view, meshes, cascade_count,
+                     [&](std::size_t group, const indirect_command&) { ++m_written[group]; });
+    m_command_count = 0;
+    for (std::uint32_t n : m_written) m_command_count += n;
+    const std::size_t bytes = std::size_t(m_command_count) * sizeof(indirect_command);
+    const frame_ring::allocation block = ring.allocate(std::max<std::size_t>(bytes, 1), 16);
+    // Each group's place in the block, groups in (pass, group) order.
+    std::size_t offset = 0;
+    for (std::size_t g = 0; g < k_groups; ++g) {
+        command_range& range = m_commands[g / k_groups_per_pass][g % k_groups_per_pass];
+        range = {std::size_t(block.offset) + offset, m_written[g]};
+        offset += std::size_t(m_written[g]) * sizeof(indirect_command);
+    }
+    // Sweep 2: the commands at their group's place, in draw-list order within each group.
+    m_written.fill(0);
+    auto* base = static_cast<std::byte*>(block.data);
+    for_each_command(
+        view, meshes, cascade_count, [&](std::size_t group, const indirect_command& command) {
+            const command_range& range =
+                m_commands[group / k_groups_per_pass][group % k_groups_per_pass];
+            const std::size_t at = range.offset - std::size_t(block.offset) +
+                                   std::size_t(m_written[group]++) * sizeof(indirect_command);
+            std::memcpy(base + at, &command, sizeof(command));
+        });
+    return bytes;
+}
+
+}  // namespace sylva::render
