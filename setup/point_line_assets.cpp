@@ -85,11 +85,11 @@ std::uint32_t add_cell_parts(scene_assets& assets, const point_line_model& model
 
         std::vector<vertex> vertices;
         std::vector<vertex_transfer> records;
-        auto records_of = [&](const std::vector<vertex_transfer>& all, std::size_t first,
+        auto records_of = [&](const std::vector<vertex_transfer>& all, std::size_t start,
                               std::size_t count) {
             if (transfer)
-                records.assign(all.begin() + std::ptrdiff_t(first),
-                               all.begin() + std::ptrdiff_t(first + count));
+                records.assign(all.begin() + std::ptrdiff_t(start),
+                               all.begin() + std::ptrdiff_t(start + count));
         };
         if (part.primitive == lod_primitive::points) {
             e.primitive_count = part.point_count;

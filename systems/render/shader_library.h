@@ -14,7 +14,7 @@ namespace sylva::render {
 struct program_source {
     std::string vertex;    // path under shaders/, e.g. "plant.vert"
     std::string fragment;  // may be empty (depth-only programs)
-    std::vector<std::string> defines;  // "ALPHA_TEST", "SHADOW_PASS 1", ...
+    std::vector<std::string> defines;  // "MATERIAL_LEAF", "SH_TRANSFER", ...
     std::string geometry;  // optional geometry shader (GL 3.2), e.g. "line.geom"
 };
 
