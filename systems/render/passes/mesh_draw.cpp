@@ -48,27 +48,23 @@ void mesh_draw::draw_view(pass_context& context, const draw_target& target) {
                            true);
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, textures.species_block.id());
+    // One group: skip it when empty, else bind its textures and draw.
+    auto draw = [&](material_kind material, lighting_variant lighting, bool cull_back_faces,
+                    auto bind_textures) {
+        const command_range& range =
+            groups[group_of(material, primitive_kind::triangles, lighting)];
+        if (!range.count) return;
+        bind_textures();
+        context.draw_group(range, program(material, lighting), cull_back_faces);
+    };
     for (const lighting_variant l : k_all_lightings) {
-        const command_range& bark =
-            groups[group_of(material_kind::bark, primitive_kind::triangles, l)];
-        if (bark.count) {
-            glBindTextureUnit(0, textures.bark.id());
-            context.draw_group(bark, program(material_kind::bark, l), true);
-        }
-        const command_range& leaf =
-            groups[group_of(material_kind::leaf, primitive_kind::triangles, l)];
-        if (leaf.count) {
-            glBindTextureUnit(0, textures.leaf.id());
-            context.draw_group(leaf, program(material_kind::leaf, l), false);
-        }
-        const command_range& billboard =
-            groups[group_of(material_kind::billboard, primitive_kind::triangles, l)];
-        if (billboard.count) {
+        draw(material_kind::bark, l, true, [&] { glBindTextureUnit(0, textures.bark.id()); });
+        draw(material_kind::leaf, l, false, [&] { glBindTextureUnit(0, textures.leaf.id()); });
+        draw(material_kind::billboard, l, false, [&] {
             glBindTextureUnit(0, textures.billboard_albedo.id());
             glBindTextureUnit(2, textures.billboard_normal.id());
             if (l == lighting_variant::sh) glBindTextureUnit(3, textures.billboard_transfer.id());
-            context.draw_group(billboard, program(material_kind::billboard, l), false);
-        }
+        });
     }
 }
 
