@@ -49,6 +49,8 @@
 //     octree_depth       integer    0            0 .. 3; Deussen 2002 §6.1 cells per plant
 //     lighting           string     "scenario"   "scenario" (lod.lighting), "normal_mapped",
 //                                                "pre_lit" or "sh" (see lod.lighting)
+//     ladder             array      none         this species' ladder (lod.representation
+//                                                "ladder"), as lod.ladder; none: lod.ladder
 //   }
 //   populations    REQUIRED array of >= 1 {
 //     species        string REQUIRED  the name of a species
@@ -131,7 +133,10 @@
 //                                               levels near, the billboard cloud beyond
 //                                               cloud_distance_m, two crossed billboards beyond
 //                                               the species' far_distance_m, each switch
-//                                               cross-faded without sorting over ±15 %)
+//                                               cross-faded without sorting over ±15 %) or
+//                                               "ladder" (each species' ladder of rungs by
+//                                               projected size, faded across each band;
+//                                               lod/ladder.h)
 //     sample_distance_px number  1      0.05 .. 64; d', the screen distance between samples
 //     splat_factor       number  1.3    1 .. 4; c_p of Eq. 1 (the paper: 1.2 .. 1.5)
 //     splats             string  "soft" "soft" (Gaussian splats that each deposit the leaf area
@@ -165,6 +170,16 @@
 //     sh_interreflection boolean false   with lighting "sh": add one diffuse bounce of the
 //                                       plant's own light to its transfer (Sloan et al. 2002's
 //                                       interreflected transfer; bakes about twice as long)
+//     ladder             array   none   1 .. 8 rungs, nearest first, for representation
+//                                       "ladder"; none: the papers' ladder (lod/ladder.h
+//                                       papers_ladder). Each {
+//       rung             string REQUIRED one of lod/ladder.h k_rung_names, each at most once
+//       below_px         number  REQUIRED but on the first rung (which takes none); 0.01 .. 1e6:
+//                                       the rung takes over below this projected height in
+//                                       pixels; smaller than the rung before's
+//       band             number  0.15   0 .. 0.9; the handover fades over below_px x (1 ± band);
+//                                       bands may not overlap; not on the first rung
+//     }
 //   }
 #include <array>
 #include <cstdint>
@@ -197,6 +212,16 @@ struct terrain_settings {
     bool operator==(const terrain_settings&) const = default;
 };
 
+// One rung of a ladder (lod/ladder.h), nearest first: `rung` is one of lod/ladder.h's
+// k_rung_names; every rung but the first takes over below `below_px` of projected size, across a
+// band of ±`band` of it.
+struct ladder_step_settings {
+    std::string rung;
+    float below_px = 0.0f;  // 0: not given (the first rung takes none)
+    float band = 0.15f;
+    bool operator==(const ladder_step_settings&) const = default;
+};
+
 struct species_settings {
     std::string name;
     std::string generator = "broadleaf";
@@ -208,6 +233,7 @@ struct species_settings {
     float importance = 1.0f;
     std::uint32_t octree_depth = 0;
     std::string lighting = "scenario";  // one of k_species_lightings
+    std::vector<ladder_step_settings> ladder;  // empty: the lod section's
     bool operator==(const species_settings&) const = default;
 };
 
@@ -301,8 +327,8 @@ struct eco_tile_settings {
 };
 
 // The representations `lod.representation` may name.
-inline constexpr std::array<std::string_view, 3> k_lod_representations{"mesh_levels", "points_lines",
-                                                                        "billboard_clouds"};
+inline constexpr std::array<std::string_view, 4> k_lod_representations{"mesh_levels", "points_lines",
+                                                                        "billboard_clouds", "ladder"};
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
 inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
 // How `lod.splats` may draw point samples (lod/point_line_lod.h splat_style).
@@ -323,6 +349,7 @@ struct lod_settings {
     std::string lighting = "normal_mapped";  // one of k_lightings
     std::uint32_t sh_bands = 3;
     bool sh_interreflection = false;
+    std::vector<ladder_step_settings> ladder;  // empty: the papers' ladder (lod/ladder.h)
     bool operator==(const lod_settings&) const = default;
 };
 

@@ -8,6 +8,7 @@
 #include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "scenarios/json_reader.h"
+#include "scenarios/ladder_fields.h"
 #include "scenarios/embedded_files.h"
 
 namespace sylva {
@@ -145,6 +146,8 @@ const field_table<species_settings>& species_fields() {
             .number("importance", &t::importance, {0.01, 100.0})
             .integer("octree_depth", &t::octree_depth, {0, 3})
             .choice("lighting", &t::lighting, k_species_lightings)
+            .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
+                 [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
             .check([](const json_node& n, const t& s) {
                 expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
                                s.far_distance_m, false);
@@ -341,6 +344,8 @@ const field_table<lod_settings>& lod_fields() {
                                   .choice("lighting", &t::lighting, k_lightings)
                                   .integer("sh_bands", &t::sh_bands, {2, 3})
                                   .boolean("sh_interreflection", &t::sh_interreflection)
+                                  .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
+                                       [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

@@ -388,7 +388,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "tiles_per_side"},
         {"/species/0/heigth_m",
          "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
-         "importance, octree_depth, lighting"},
+         "importance, octree_depth, lighting, ladder"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
          "min_altitude_m, max_altitude_m, placement, density_map, density"},
@@ -405,7 +405,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "representation, sample_distance_px, splat_factor, splats, fog_weighted_samples, "
          "primitive_budget, "
          "target_frame_ms, "
-         "cloud_distance_m, lighting, sh_bands, sh_interreflection"},
+         "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -879,7 +879,7 @@ TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
 
 TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/representation", "voxels"),
-                 {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines, billboard_clouds",
+                 {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines, billboard_clouds, ladder",
                   "\"voxels\""});
     expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
                  {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});

@@ -1,0 +1,126 @@
+#pragma once
+// A species' representation ladder (DESIGN §1.5) as pure functions of projected size: its rungs
+// nearest first, each taking over when the plant's projected size falls below the rung's switch
+// size in pixels, so a ladder means the same at any resolution and field of view:
+//
+//   projected size:  large ..... rung 0 ..... | band 1 | ..... rung 1 ..... | band 2 | ... rung 2 ...
+//                                          S1(1+h1)  S1(1-h1)           S2(1+h2)  S2(1-h2)
+//
+// S_i is rung i's `below_px`, h_i its band's half-width as a fraction of S_i (0: a hard switch).
+// Across a band, at t in [0, 1] from its large edge, the nearer rung is drawn whole for t < 1/2
+// and fades out over the second half while the farther one fades in over the first half and is
+// drawn whole beyond (the overlap of Behrendt 2005 §2.3, lod/billboard_cloud_lod.h): the plant
+// never thins out in the middle of a transition, and neither side is sorted or blended. How the
+// faded side fades is its representation's own way: a billboard cloud by Behrendt's Gaussian
+// alpha threshold (§2.3), points and lines by Deussen's prefix (§5.3: the first `fade` of the
+// randomly ordered samples, so the thinning is uniform over the plant), a mesh or a crossed
+// billboard by a stable screen-door dissolve (shaders/mesh.frag). Only the primary casts shadows,
+// so a plant in a band casts once.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "components/lod_state.h"
+
+// The names, the struct and its validation are inline: the scenario loader (sylva_scenarios, which
+// does not link the runtime) checks a scenario's ladders with them and names the JSON path.
+
+namespace sylva {
+
+inline constexpr std::size_t k_max_rungs = 8;
+// Behrendt 2005 §2.3's band for the cloud (lod/billboard_cloud_lod.h k_cloud_band).
+inline constexpr float k_default_band = 0.15f;
+inline constexpr float k_max_band = 0.9f;
+
+// The rungs a ladder may name, as scenarios name them: every representation a plant can be drawn
+// with on its own ("points_lines" is representation::points).
+inline constexpr std::array<std::string_view, 6> k_rung_names{
+    "mesh_full", "mesh_reduced", "mesh_far", "billboard_cloud", "points_lines", "crossed_billboard"};
+inline constexpr std::array<representation, k_rung_names.size()> k_rungs{
+    representation::mesh_full,       representation::mesh_reduced, representation::mesh_far,
+    representation::billboard_cloud, representation::points,       representation::crossed_billboard};
+
+// "" when `r` is not a rung.
+inline std::string_view rung_name(representation r) {
+    for (std::size_t i = 0; i < k_rungs.size(); ++i)
+        if (k_rungs[i] == r) return k_rung_names[i];
+    return {};
+}
+inline std::optional<representation> rung_of_name(std::string_view name) {
+    for (std::size_t i = 0; i < k_rungs.size(); ++i)
+        if (k_rung_names[i] == name) return k_rungs[i];
+    return std::nullopt;
+}
+
+struct ladder {
+    std::array<representation, k_max_rungs> rungs{};
+    // below_px[i], i >= 1: rung i takes over below this projected size (strictly decreasing);
+    // below_px[0] is unused.
+    std::array<float, k_max_rungs> below_px{};
+    std::array<float, k_max_rungs> band{};  // band[i]: half-width of the step into rung i
+    std::uint8_t count = 0;
+
+    bool reaches(representation r) const {
+        return std::find(rungs.begin(), rungs.begin() + count, r) != rungs.begin() + count;
+    }
+    bool operator==(const ladder&) const = default;
+};
+
+// Why a ladder cannot be used, and the rung at fault.
+struct ladder_problem {
+    std::size_t rung = 0;
+    std::string_view field;  // "rung", "below_px", "band", or "" for the ladder itself
+    std::string what;
+};
+
+// Its problem, or nothing when `l` is usable: at least one rung, each a rung named once, switch
+// sizes positive and strictly decreasing, bands in [0, k_max_band] that do not overlap.
+inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
+    if (l.count == 0) return ladder_problem{0, "", "a ladder needs at least one rung"};
+    if (l.count > k_max_rungs) return ladder_problem{k_max_rungs, "", "a ladder has at most 8 rungs"};
+    for (std::size_t i = 0; i < l.count; ++i) {
+        if (rung_name(l.rungs[i]).empty()) return ladder_problem{i, "rung", "not a representation a ladder can draw"};
+        for (std::size_t j = 0; j < i; ++j)
+            if (l.rungs[j] == l.rungs[i])
+                return ladder_problem{i, "rung", std::string(rung_name(l.rungs[i])) + " is already rung " + std::to_string(j)};
+        if (i == 0) continue;
+        if (!(l.below_px[i] > 0.0f) || !std::isfinite(l.below_px[i]))
+            return ladder_problem{i, "below_px", "below_px must be a positive number of pixels"};
+        if (!(l.band[i] >= 0.0f && l.band[i] <= k_max_band))
+            return ladder_problem{i, "band", "band must lie in [0, 0.9]"};
+        if (i >= 2 && !(l.below_px[i] < l.below_px[i - 1]))
+            return ladder_problem{i, "below_px", "below_px must be smaller than the rung before's (" +
+                                         std::to_string(l.below_px[i - 1]) + ")"};
+        if (i >= 2 && l.below_px[i] * (1.0f + l.band[i]) > l.below_px[i - 1] * (1.0f - l.band[i - 1]))
+            return ladder_problem{i, "band", "its band (below_px x (1 +- band)) overlaps the band of the rung before"};
+    }
+    return std::nullopt;
+}
+
+// What a plant is drawn as at one projected size: the primary rung whole, and inside a band a
+// partner at partner_fade (0 none .. 1 whole). The same shape as cloud_lod_choice.
+struct ladder_choice {
+    representation primary = representation::none;
+    representation partner = representation::none;
+    float partner_fade = 0.0f;
+    bool operator==(const ladder_choice&) const = default;
+};
+
+// The choice at `size_px` (a NaN size takes the farthest rung, as a NaN distance does elsewhere).
+ladder_choice choose_rung(const ladder& l, float size_px);
+
+// The projected height in pixels of a sphere of `radius_m` at `distance_m` from the eye: its
+// diameter on the image plane (2·radius / distance) over a pixel's size there
+// (2·tan(fov_y / 2) / viewport height; lod/point_line_lod.h image_plane_units).
+float projected_size_px(float radius_m, float distance_m, float fov_y, float viewport_height_px);
+
+// The ladder the papers draw when a scenario names none (docs/representations/ladder.md): the
+// full mesh, the reduced mesh, the billboard cloud (Behrendt 2005 §2.3: polygonal "closer than
+// 30 meters"), points and lines (Deussen 2002), the crossed billboard far away.
+ladder papers_ladder();
+
+}  // namespace sylva

@@ -1,0 +1,132 @@
+// The representation ladder (DESIGN §1.5, lod/ladder.h) as pure functions: the rung and its
+// partner at hand-computed projected sizes, the projected size itself, and the rules every
+// ladder must keep.
+#include "lod/ladder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sylva {
+namespace {
+
+// mesh_full | 200 px ± 10 % | billboard_cloud | 50 px ± 20 % | crossed_billboard
+ladder three_rungs() {
+    ladder l;
+    l.count = 3;
+    l.rungs = {representation::mesh_full, representation::billboard_cloud, representation::crossed_billboard};
+    l.below_px = {0.0f, 200.0f, 50.0f};
+    l.band = {0.0f, 0.1f, 0.2f};
+    return l;
+}
+
+void expect_choice(const ladder_choice& got, representation primary, representation partner, float fade) {
+    EXPECT_EQ(got.primary, primary);
+    EXPECT_EQ(got.partner, partner);
+    EXPECT_NEAR(got.partner_fade, fade, 1e-5f);
+}
+
+TEST(ladder, each_rung_holds_between_its_bands) {
+    const ladder l = three_rungs();
+    // Band 1: 180 .. 220 px; band 2: 40 .. 60 px (edges just outside: 200 x 1.1f is not 220).
+    expect_choice(choose_rung(l, 1000.0f), representation::mesh_full, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 220.01f), representation::mesh_full, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 180.0f), representation::billboard_cloud, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 100.0f), representation::billboard_cloud, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 60.01f), representation::billboard_cloud, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 40.0f), representation::crossed_billboard, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 0.5f), representation::crossed_billboard, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 0.0f), representation::crossed_billboard, representation::none, 0.0f);
+    expect_choice(choose_rung(l, std::nanf("")), representation::crossed_billboard, representation::none, 0.0f);
+    expect_choice(choose_rung(l, INFINITY), representation::mesh_full, representation::none, 0.0f);
+}
+
+TEST(ladder, across_a_band_the_farther_rung_fades_in_then_the_nearer_fades_out) {
+    const ladder l = three_rungs();
+    // Band 1, t = (220 - size) / 40: the cloud rises 0 -> 1 over t < 1/2 (220 .. 200 px), then
+    // is the primary and the mesh falls 1 -> 0 (200 .. 180 px).
+    expect_choice(choose_rung(l, 219.0f), representation::mesh_full, representation::billboard_cloud, 2.0f / 40.0f);
+    expect_choice(choose_rung(l, 210.0f), representation::mesh_full, representation::billboard_cloud, 0.5f);
+    expect_choice(choose_rung(l, 200.0f), representation::billboard_cloud, representation::mesh_full, 1.0f);
+    expect_choice(choose_rung(l, 190.0f), representation::billboard_cloud, representation::mesh_full, 0.5f);
+    expect_choice(choose_rung(l, 181.0f), representation::billboard_cloud, representation::mesh_full, 2.0f / 40.0f);
+    // Band 2, t = (60 - size) / 20.
+    expect_choice(choose_rung(l, 55.0f), representation::billboard_cloud, representation::crossed_billboard, 0.5f);
+    expect_choice(choose_rung(l, 45.0f), representation::crossed_billboard, representation::billboard_cloud, 0.5f);
+}
+
+TEST(ladder, a_zero_band_is_a_hard_switch_and_one_rung_is_every_size) {
+    ladder l = three_rungs();
+    l.band[1] = 0.0f;
+    expect_choice(choose_rung(l, 200.0f), representation::mesh_full, representation::none, 0.0f);
+    expect_choice(choose_rung(l, 199.99f), representation::billboard_cloud, representation::none, 0.0f);
+    ladder one;
+    one.count = 1;
+    one.rungs[0] = representation::points;
+    expect_choice(choose_rung(one, 1e6f), representation::points, representation::none, 0.0f);
+    expect_choice(choose_rung(one, 1e-6f), representation::points, representation::none, 0.0f);
+    expect_choice(choose_rung(ladder{}, 10.0f), representation::none, representation::none, 0.0f);
+}
+
+TEST(ladder, projected_size_is_the_diameter_over_a_pixel_on_the_image_plane) {
+    // fov 90°: the image plane at distance 1 is 2 units high; at 500 px a pixel is 1/250 of a
+    // unit. A 5 m radius at 50 m spans 10 / 50 = 0.2 units: 50 px.
+    EXPECT_NEAR(projected_size_px(5.0f, 50.0f, float(M_PI / 2.0), 500.0f), 50.0f, 1e-3f);
+    // fov 60°: 2·tan(30°) = 1.1547 units over 270 px; a 7 m radius at 30 m is 0.4667 units.
+    EXPECT_NEAR(projected_size_px(7.0f, 30.0f, float(M_PI / 3.0), 270.0f), 0.46667f / (1.1547005f / 270.0f), 1e-2f);
+    // Twice the resolution, twice the pixels: a ladder means the same at any resolution.
+    EXPECT_NEAR(projected_size_px(7.0f, 30.0f, 1.0f, 540.0f), 2.0f * projected_size_px(7.0f, 30.0f, 1.0f, 270.0f),
+                1e-3f);
+}
+
+TEST(ladder, rung_names_round_trip_and_points_lines_is_the_points_representation) {
+    for (const std::string_view name : k_rung_names) EXPECT_EQ(rung_name(*rung_of_name(name)), name);
+    EXPECT_EQ(rung_of_name("points_lines"), representation::points);
+    EXPECT_FALSE(rung_of_name("points"));
+    EXPECT_FALSE(rung_of_name("none"));
+    EXPECT_EQ(rung_name(representation::none), "");
+}
+
+TEST(ladder, problems_name_the_rung_and_field_at_fault) {
+    EXPECT_FALSE(find_ladder_problem(three_rungs()));
+    EXPECT_FALSE(find_ladder_problem(papers_ladder()));
+    EXPECT_EQ(find_ladder_problem(ladder{})->what, "a ladder needs at least one rung");
+
+    ladder repeated = three_rungs();
+    repeated.rungs[2] = representation::mesh_full;
+    EXPECT_EQ(find_ladder_problem(repeated)->rung, 2u);
+    EXPECT_EQ(find_ladder_problem(repeated)->field, "rung");
+
+    ladder rising = three_rungs();
+    rising.below_px[2] = 250.0f;
+    EXPECT_EQ(find_ladder_problem(rising)->rung, 2u);
+    EXPECT_EQ(find_ladder_problem(rising)->field, "below_px");
+
+    // 50 x 1.2 = 60 px must stay below 200 x 0.9 = 180 px; 160 x 1.2 = 192 does not.
+    ladder overlapping = three_rungs();
+    overlapping.below_px[2] = 160.0f;
+    EXPECT_EQ(find_ladder_problem(overlapping)->rung, 2u);
+    EXPECT_EQ(find_ladder_problem(overlapping)->field, "band");
+
+    ladder unsized = three_rungs();
+    unsized.below_px[1] = 0.0f;
+    EXPECT_EQ(find_ladder_problem(unsized)->field, "below_px");
+    unsized.below_px[1] = NAN;
+    EXPECT_EQ(find_ladder_problem(unsized)->field, "below_px");
+
+    ladder not_a_rung = three_rungs();
+    not_a_rung.rungs[0] = representation::none;
+    EXPECT_EQ(find_ladder_problem(not_a_rung)->rung, 0u);
+}
+
+TEST(ladder, the_papers_ladder_runs_from_the_full_mesh_to_the_crossed_billboard) {
+    const ladder l = papers_ladder();
+    EXPECT_EQ(choose_rung(l, 1e4f).primary, representation::mesh_full);
+    EXPECT_EQ(choose_rung(l, 1.0f).primary, representation::crossed_billboard);
+    EXPECT_TRUE(l.reaches(representation::billboard_cloud));
+    EXPECT_TRUE(l.reaches(representation::points));
+    EXPECT_FALSE(l.reaches(representation::mesh_far));
+}
+
+}  // namespace
+}  // namespace sylva

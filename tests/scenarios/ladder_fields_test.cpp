@@ -1,0 +1,91 @@
+// The `ladder` arrays of the lod section and of a species: read into the runtime's ladder, written
+// back, and every bad ladder refused with the JSON path of the rung and field at fault.
+#include "scenarios/ladder_fields.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "scenarios/scenario_loader.h"
+
+namespace sylva {
+namespace {
+
+using nlohmann::json;
+
+json with_ladder(json ladder, const std::string& where = "/lod/ladder") {
+    json j = json::parse(R"({"species": [{"name": "oak"}], "populations": [{"species": "oak", "count": 10}],
+                             "lod": {"representation": "ladder"}})");
+    j[json::json_pointer(where)] = std::move(ladder);
+    return j;
+}
+
+scenario load(const json& j) { return load_scenario_text(j.dump(), "test.json"); }
+
+void expect_error(const json& j, const std::string& path, const std::string& problem_start) {
+    try {
+        load(j);
+        ADD_FAILURE() << "loaded without error: " << j.dump();
+    } catch (const scenario_error& e) {
+        EXPECT_EQ(e.json_path(), path) << e.what();
+        EXPECT_EQ(e.problem().substr(0, problem_start.size()), problem_start) << e.what();
+    }
+}
+
+const json k_three = json::parse(R"([{"rung": "mesh_full"},
+                                     {"rung": "billboard_cloud", "below_px": 200, "band": 0.1},
+                                     {"rung": "points_lines", "below_px": 50}])");
+
+TEST(ladder_fields, a_ladder_reads_into_the_runtime_ladder_with_the_default_band) {
+    const scenario s = load(with_ladder(k_three));
+    EXPECT_EQ(s.lod.representation, "ladder");
+    const ladder l = ladder_of(s.lod.ladder);
+    ASSERT_EQ(l.count, 3);
+    EXPECT_EQ(l.rungs[0], representation::mesh_full);
+    EXPECT_EQ(l.rungs[1], representation::billboard_cloud);
+    EXPECT_EQ(l.rungs[2], representation::points);
+    EXPECT_EQ(l.below_px[1], 200.0f);
+    EXPECT_EQ(l.band[1], 0.1f);
+    EXPECT_EQ(l.band[2], k_default_band);
+    EXPECT_TRUE(s.species[0].ladder.empty()) << "a species without a ladder takes the lod section's";
+}
+
+TEST(ladder_fields, a_species_ladder_round_trips_and_an_empty_one_is_not_written) {
+    const scenario s = load(with_ladder(k_three, "/species/0/ladder"));
+    EXPECT_TRUE(s.lod.ladder.empty());
+    EXPECT_EQ(ladder_of(s.species[0].ladder).count, 3);
+    const std::string text = scenario_to_json_text(s);
+    EXPECT_EQ(load_scenario_text(text, "round_trip.json").species[0].ladder, s.species[0].ladder);
+    EXPECT_EQ(json::parse(text)["lod"].count("ladder"), 0u);
+}
+
+TEST(ladder_fields, bad_ladders_name_the_rung_and_the_field) {
+    expect_error(with_ladder(json::array()), "/lod/ladder", "expected");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "points", "below_px": 9}])")),
+                 "/lod/ladder/1/rung", "unknown value; expected one of");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full", "below_px": 300}])")),
+                 "/lod/ladder/0/below_px", "the first rung");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "points_lines"}])")),
+                 "/lod/ladder/1/below_px", "missing required item");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "mesh_full", "below_px": 9}])")),
+                 "/lod/ladder/1/rung", "mesh_full is already rung 0");
+    // 100 px after 50 px: switch sizes must fall from rung to rung.
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "billboard_cloud", "below_px": 50},
+                                            {"rung": "crossed_billboard", "below_px": 100}])"),
+                             "/species/0/ladder"),
+                 "/species/0/ladder/2/below_px", "below_px must be smaller");
+    // 45 x 1.15 = 51.75 px reaches into 50 x 0.85 = 42.5 px: the bands overlap. The band left at
+    // its default is not in the file, so the rung stands for it.
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "billboard_cloud", "below_px": 50},
+                                            {"rung": "crossed_billboard", "below_px": 45}])")),
+                 "/lod/ladder/2", "its band");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "billboard_cloud", "below_px": 50,
+                                             "band": 0.95}])")),
+                 "/lod/ladder/1/band", "out of range; expected a number from 0 to 0.9");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "billboard_cloud", "below_px": 50,
+                                             "fade": 1}])")),
+                 "/lod/ladder/1/fade", "unknown");
+}
+
+}  // namespace
+}  // namespace sylva
