@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "app/device_costs.h"
+#include "scenarios/ladder_fields.h"
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -86,6 +87,25 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         policy.mode = lod_policy::kind::billboard_clouds;
         policy.cloud_distance_m = s.lod.cloud_distance_m;
     }
+    if (options.scenario_lod && policy.mode == lod_policy::kind::distance_levels && s.lod.representation == "ladder")
+        policy.mode = lod_policy::kind::ladder;
+    if (policy.mode == lod_policy::kind::ladder) {
+        // DESIGN §1.5: a species' own ladder, else the lod section's, else the papers'. The
+        // points rung draws with the scenario's point settings.
+        if (options.scenario_lod)
+            policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
+                             s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
+                             s.lod.fog_weighted_samples};
+        if (policy.ladders.empty())
+            for (const species_settings& species : s.species)
+                policy.ladders.push_back(!species.ladder.empty() ? ladder_of(species.ladder)
+                                         : !s.lod.ladder.empty() ? ladder_of(s.lod.ladder)
+                                                                 : papers_ladder());
+        if (policy.ladders.size() != s.species.size())
+            throw std::invalid_argument("a ladder policy needs one ladder per species: scenario '" + s.name +
+                                        "' has " + std::to_string(s.species.size()) + " species, the policy " +
+                                        std::to_string(policy.ladders.size()) + " ladders");
+    }
     return policy;
 }
 
@@ -141,7 +161,8 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         context->make_current();
         render::renderer_settings settings = renderer_settings_of(m_scenario);
         settings.id_buffer = options.id_buffer;
-        settings.fade_dissolve = policy.mode == lod_policy::kind::billboard_clouds;
+        settings.fade_dissolve =
+            policy.mode == lod_policy::kind::billboard_clouds || policy.mode == lod_policy::kind::ladder;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
         device.renderer = m_renderer.get();
         // Measured once per device and setting, then read from the cache: without a cache the

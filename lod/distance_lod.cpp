@@ -24,6 +24,9 @@ representation choose_representation(const lod_policy& policy, const species_ent
         case lod_policy::kind::hard_switch:
             // A NaN distance compares false and so takes the far side, like the distance levels.
             return distance_m < policy.switch_distance_m * scale * lod_scale ? policy.near : policy.far;
+        // A ladder chooses by projected size, which needs the camera: select_representation
+        // calls choose_rung (lod/ladder.h) itself and never comes here.
+        case lod_policy::kind::ladder:
         case lod_policy::kind::distance_levels: break;
     }
     return choose_representation(species, distance_m, scale, lod_scale);

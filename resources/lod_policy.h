@@ -1,11 +1,15 @@
 #pragma once
 // How select_representation chooses, as a world resource: the runtime's own distance levels, the
-// point/line representation (Deussen 2002), or one of the fixed policies the bench compares them
-// with (issue 4: "each representation on its own", and the typical engine baseline "full mesh
-// near, one crossed-quad billboard beyond a distance, hard switch").
+// point/line representation (Deussen 2002), each species' representation ladder (DESIGN §1.5),
+// or one of the fixed policies the bench compares them with (issue 4: "each representation on
+// its own", and the typical engine baseline "full mesh near, one crossed-quad billboard beyond a
+// distance, hard switch").
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "components/lod_state.h"
+#include "lod/ladder.h"
 #include "lod/point_line_lod.h"
 
 namespace sylva {
@@ -20,6 +24,9 @@ struct lod_policy {
         // the crossed billboard beyond the species' far distance, cross-faded over bands
         // (lod/billboard_cloud_lod.h).
         billboard_clouds,
+        // DESIGN §1.5: each species' ladder of rungs by projected size, with bands between them
+        // (lod/ladder.h); `ladders` holds one per species.
+        ladder,
     };
     kind mode = kind::distance_levels;
     representation near = representation::mesh_full;
@@ -33,16 +40,29 @@ struct lod_policy {
     // Behrendt 2005 §2.3, "we have to blend to the complex representation, if a typical tree is
     // closer than 30 meters" (billboard_clouds only; times plant scale and lod_scale).
     float cloud_distance_m = 30.0f;
+    // The ladder of each species, by species index (ladder only; the player fills it from the
+    // scenario, the papers' ladder where the scenario names none).
+    std::vector<ladder> ladders{};
+    // Multiplies every projected size the ladders see (ladder only): below 1 every rung switches
+    // nearer, so the bench sweeps a ladder's cost without moving the draw distances, which
+    // lod_scale would.
+    float ladder_size_scale = 1.0f;
+
+    bool any_ladder_reaches(representation r) const {
+        return mode == kind::ladder &&
+               std::any_of(ladders.begin(), ladders.end(), [r](const ladder& l) { return l.reaches(r); });
+    }
 
     // True when select_representation can choose the point/line representation: the scene then
     // bakes and uploads it (and does not otherwise).
     bool uses_point_lines() const {
-        return mode == kind::points_lines ||
-               (mode != kind::distance_levels && (near == representation::points || far == representation::points));
+        return mode == kind::points_lines || any_ladder_reaches(representation::points) ||
+               ((mode == kind::single || mode == kind::hard_switch) &&
+                (near == representation::points || far == representation::points));
     }
     // The same for billboard clouds: the scene then bakes them and uploads their atlases.
     bool uses_billboard_clouds() const {
-        return mode == kind::billboard_clouds ||
+        return mode == kind::billboard_clouds || any_ladder_reaches(representation::billboard_cloud) ||
                ((mode == kind::single || mode == kind::hard_switch) &&
                 (near == representation::billboard_cloud || far == representation::billboard_cloud));
     }

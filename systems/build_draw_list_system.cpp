@@ -31,14 +31,20 @@ struct plant_draws {
     std::array<std::array<prefix_draw, 2 * k_prefix_parts>, k_passes> prefixes;  // [0, prefix_count) set
     std::array<std::uint32_t, k_passes> prefix_count{};
     bool prefixed = false;       // drawn as prefixes (`prefixes`), else one whole mesh per pass
-    bool partnered = false;      // the opaque pass also draws `partner_mesh` (fade_alpha)
+    // The opaque pass also draws the fade_alpha partner: `partner_mesh`, or when the partner is
+    // points and lines its own prefixes (`partner_prefixes`, the first `fade` of the primary's).
+    bool partnered = false;
+    bool partner_prefixed = false;
     std::uint16_t partner_mesh = 0;
+    std::uint32_t partner_prefix_count = 0;
+    std::array<prefix_draw, 2 * k_prefix_parts> partner_prefixes;  // [0, partner_prefix_count) set
     std::uint32_t pass_mask = 0;  // bit i: render_pass i
     float distance = 0.0f;
 
     std::uint32_t items_in(std::size_t pass) const { return prefixed ? prefix_count[pass] : 1u; }
+    std::uint32_t partner_items() const { return !partnered ? 0u : partner_prefixed ? partner_prefix_count : 1u; }
     std::uint32_t items() const {
-        std::uint32_t n = partnered ? 1u : 0u;
+        std::uint32_t n = partner_items();
         for (std::uint32_t mask = pass_mask; mask; mask &= mask - 1) n += items_in(std::size_t(__builtin_ctz(mask)));
         return n;
     }
@@ -94,17 +100,19 @@ public:
             for (int c = 0; c < m_cascade_count; ++c)
                 if (sphere_overlaps_cascade(m_cascades[std::size_t(c)], center, b.radius))
                     d.pass_mask |= 1u << unsigned(shadow_pass(c));
+        // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
+        // only names one for a visible plant); the primary alone casts.
+        if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
+            if (fade.partner == representation::points) add_partner_prefixes(parts, prefix, fade.value, d);
+            else d.partner_mesh = mesh_of(species, fade.partner);
+            d.partnered = true;
+            d.partner_prefixed = fade.partner == representation::points;
+        }
         if (lod.current != representation::points) {
             d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
             for (int c = 0; c < m_cascade_count; ++c)
                 d.mesh[std::size_t(shadow_pass(c))] =
                     mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
-            // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
-            // only names one for a visible plant).
-            if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
-                d.partnered = true;
-                d.partner_mesh = mesh_of(species, fade.partner);
-            }
             return d;
         }
         d.prefixed = true;
@@ -123,7 +131,33 @@ public:
         return d;
     }
 
+    // A split plant's cell whose plant fades its points in as a partner: only the partner's
+    // prefixes, in the opaque pass (the plant's own items draw its primary).
+    plant_draws classify_partner_cell(const world_transform& t, const lod_state& lod, const fade_alpha& fade,
+                                      const point_prefix& prefix, part_range parts) const {
+        plant_draws d;
+        if (!lod.visible || fade.partner != representation::points || !(fade.value > 0.0f)) return d;
+        d.distance = glm::length(glm::vec3(t.position - m_camera.position));
+        d.partnered = d.partner_prefixed = true;
+        add_partner_prefixes(parts, prefix, fade.value, d);
+        return d;
+    }
+
 private:
+    // Deussen 2002 §5.3's prefix blend as a fade: the first `fade` of each prefix. Its triangles
+    // and samples are in random order, so the thinning is uniform over the part.
+    void add_partner_prefixes(part_range parts, const point_prefix& prefix, float fade, plant_draws& d) const {
+        const auto share = [fade](std::uint32_t n) { return std::uint32_t(double(n) * double(fade) + 0.5); };
+        for (std::uint32_t i = 0; i < parts.count && i < k_prefix_parts; ++i) {
+            const lod_part_entry& part = m_library.lod_parts[parts.first + i];
+            if (const std::uint32_t n = share(prefix.triangles[i]))
+                d.partner_prefixes[d.partner_prefix_count++] = {part.mesh_triangles, 0, n};
+            if (const std::uint32_t n = share(prefix.primitives[i]))
+                d.partner_prefixes[d.partner_prefix_count++] = {
+                    prefix.splats[i] ? part.mesh_splats : part.mesh_primitives, 0, n};
+        }
+    }
+
     void add_prefixes(part_range parts, const point_prefix& prefix, plant_draws& d, render_pass pass) const {
         auto& list = d.prefixes[std::size_t(pass)];
         std::uint32_t& count = d.prefix_count[std::size_t(pass)];
@@ -179,8 +213,11 @@ bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, fl
 // Writes the items of one classified plant (or cell) for every pass it is drawn in.
 draw_item* write_items(const plant_draws& d, std::uint32_t plant, draw_item* out) {
     const std::uint32_t depth = quantize_depth(d.distance);
-    if (d.partnered)
+    if (d.partnered && !d.partner_prefixed)
         *out++ = {make_sort_key({render_pass::opaque, d.partner_mesh, depth}), plant | k_partner_item_bit, 0};
+    for (std::uint32_t i = 0; d.partnered && i < d.partner_prefix_count; ++i)
+        *out++ = {make_sort_key({render_pass::opaque, d.partner_prefixes[i].mesh, depth}),
+                  plant | k_partner_item_bit, d.partner_prefixes[i].count};
     for (std::uint32_t mask = d.pass_mask; mask; mask &= mask - 1) {
         const auto pass = static_cast<render_pass>(__builtin_ctz(mask));
         if (!d.prefixed) {
@@ -212,12 +249,16 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     const auto bounds_of = ctx.read<bounds>().data();
     const auto instances = ctx.read<plant_instance>().data();
     const auto lods = ctx.read<lod_state>().data();
+    const auto fades = ctx.read<fade_alpha>().data();
     auto classify_cell = [&](const octree_cell& cell, const cell_prefix& prefix) {
         const std::size_t k = cell.plant;
-        // A plant drawn any other way than as points is drawn whole, by the plant's own items.
-        if (lods[k].current != representation::points) return plant_draws{};
+        const part_range parts = parts_of(library.cells[cell.cell]);
+        // A plant drawn any other way than as points is drawn whole, by the plant's own items,
+        // and so is the partner of one drawn as points; a points partner is drawn by its cells.
+        if (lods[k].current != representation::points)
+            return builder.classify_partner_cell(transforms[k], lods[k], fades[k], prefix.prefix, parts);
         return builder.classify(transforms[k], bounds_of[k], instances[k], lods[k], fade_alpha{}, prefix.prefix,
-                                parts_of(library.cells[cell.cell]));
+                                parts);
     };
 
     // Pass 1: how many items each chunk adds (plant chunks, then octree-cell chunks).
@@ -236,7 +277,9 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             if (lod.current == representation::none) return;
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
             count += builder.classify(t, b, p, lod, fade, prefix, parts_of(species)).items();
-            if (lod.current == representation::points && lod.visible) ++point_plants[c];
+            // Counted as the meshes are (by their items): the primary and a drawn partner.
+            const bool points_partner = fade.partner == representation::points && fade.value > 0.0f;
+            if ((lod.current == representation::points || points_partner) && lod.visible) ++point_plants[c];
         });
         offsets[c + 1] = count;
     });
@@ -285,7 +328,6 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     radix_sort_draw_items(list.items, list.scratch);
 
     // Instance records in sorted order; the tables are aligned, so a dense index reads them all.
-    const auto fades = ctx.read<fade_alpha>().data();
     list.instances.resize(list.items.size());
     ctx.parallel_for(list.items.size(), chunk, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
@@ -301,6 +343,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const bool partner = (k & k_partner_item_bit) != 0;
             const std::uint32_t plant = k & ~k_partner_item_bit;
             list.instances[i] = make_instance(cam, transforms[plant], instances[plant], fades[plant], partner, library);
+            // A points partner fades by its prefix (add_partner_prefixes): its triangles are
+            // drawn whole, not also dissolved.
+            if (partner && library.meshes[decode_sort_key(list.items[i].key).mesh].drawn_as == representation::points)
+                list.instances[i].fade = 1.0f;
         }
         // Point prefixes: the fade is the fractional prefix length, so the soft-splat shader
         // draws splat j at opacity clamp(fade − j, 0, 1) (every splat whole but a faded last).

@@ -2,8 +2,9 @@
 // Chooses each visible plant's representation from its distance to the camera (scaled by the
 // plant's size and the camera's lod_scale): the full mesh near, the reduced mesh beyond the
 // species' reduced distance, the far mesh beyond its far distance. Under other policies: points
-// and lines (Deussen 2002), or billboard clouds with their transition bands (Behrendt 2005 §2.3,
-// lod/billboard_cloud_lod.h), whose partner and fades it writes into fade_alpha. Records
+// and lines (Deussen 2002), billboard clouds with their transition bands (Behrendt 2005 §2.3,
+// lod/billboard_cloud_lod.h), or each species' ladder by projected size (DESIGN §1.5,
+// lod/ladder.h); for the last two it writes the band's partner and fade into fade_alpha. Records
 // the previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"

@@ -98,11 +98,17 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     const bool fade_last = policy.points.splats == splat_style::soft;
     const double fog = policy.points.fog_weighted ? k_fog_density_per_m : 0.0;
     const primitive_costs& costs = ctx.resource<primitive_costs>();
-    auto plants = ctx.query<const world_transform, const plant_instance, const lod_state, point_prefix>();
+    // A plant drawn as points, whole or as the faded partner of a ladder's band (DESIGN §1.5;
+    // build_draw_list draws the partner's first `fade` of these prefixes).
+    const auto drawn_as_points = [](const lod_state& lod, const fade_alpha& fade) {
+        return lod.current == representation::points || fade.partner == representation::points;
+    };
+    auto plants =
+        ctx.query<const world_transform, const plant_instance, const lod_state, const fade_alpha, point_prefix>();
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
-                                          const lod_state& lod, point_prefix& prefix) {
-            if (lod.current != representation::points) {
+                                          const lod_state& lod, const fade_alpha& fade, point_prefix& prefix) {
+            if (!drawn_as_points(lod, fade)) {
                 prefix = {};
                 return;
             }
@@ -115,11 +121,12 @@ void update_point_prefix_system::run(ecs::system_context<update_point_prefix_sys
     // §6.1: each octree cell of a big plant chooses on its own, r measured to its parts.
     const auto transforms = ctx.read<world_transform>().data();
     const auto lods = ctx.read<lod_state>().data();
+    const auto fades = ctx.read<fade_alpha>().data();
     const auto instances = ctx.read<plant_instance>().data();
     auto cells = ctx.query<const octree_cell, cell_prefix>();
     ctx.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         cells.each_chunk(begin, end, [&](ecs::entity, const octree_cell& cell, cell_prefix& out) {
-            if (lods[cell.plant].current != representation::points) {
+            if (!drawn_as_points(lods[cell.plant], fades[cell.plant])) {
                 out.prefix = {};
                 return;
             }

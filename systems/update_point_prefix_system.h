@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "components/camera.h"
+#include "components/fade_alpha.h"
 #include "components/lod_state.h"
 #include "components/octree_cell.h"
 #include "components/plant_instance.h"
@@ -56,8 +57,8 @@ glm::dvec3 part_world_center(const lod_part_entry& part, const world_transform& 
 struct update_point_prefix_system {
     static constexpr std::string_view k_name = "update_point_prefix";
     static constexpr ecs::phase k_phase = ecs::phase::transition;
-    using reads = ecs::reads<camera, world_transform, plant_instance, lod_state, octree_cell, species_library,
-                             lod_policy, primitive_costs>;
+    using reads = ecs::reads<camera, world_transform, plant_instance, lod_state, fade_alpha, octree_cell,
+                             species_library, lod_policy, primitive_costs>;
     using writes = ecs::writes<point_prefix, cell_prefix>;
     static void run(ecs::system_context<update_point_prefix_system>& ctx);
 };

@@ -240,5 +240,27 @@ TEST(chunk_boundary_determinism, sh_lit_points_and_lines) {
     EXPECT_TRUE(one.every_species_sh);
 }
 
+// DESIGN §1.5: every rung of a ladder in one frame, with bands, split spruces fading their
+// cells' points in and out as partners. Switch sizes for the scene's 90-pixel-high frames.
+TEST(chunk_boundary_determinism, ladder_with_every_handover) {
+    SYLVA_REQUIRE_GL();
+    player_options options = with_policy(lod_policy::kind::ladder);
+    ladder l;
+    l.count = 4;
+    l.rungs = {representation::mesh_full, representation::billboard_cloud, representation::points,
+               representation::crossed_billboard};
+    l.below_px = {0.0f, 40.0f, 16.0f, 6.0f};
+    l.band = {0.0f, 0.15f, 0.15f, 0.15f};
+    options.policy.ladders = {l, l};
+    expected_loops expected;
+    expected.update_point_prefix = 2;
+    expected.build_draw_list = 5;
+    const std::vector<frame_trace> one =
+        expect_same_for_1_2_and_4_threads({"ladder", options}, expected).frames;
+    for (const representation r : {representation::mesh_full, representation::billboard_cloud,
+                                   representation::points, representation::crossed_billboard})
+        EXPECT_GT(drawn_as(one, r), 0u) << "no plant on rung " << int(r);
+}
+
 }  // namespace
 }  // namespace sylva
