@@ -117,6 +117,28 @@ bench_configuration_spec billboard_clouds(const std::string& lighting,
     return c;
 }
 
+// DESIGN §1.5: each species drawn by its ladder (the scenario's, else the papers', lod/ladder.h),
+// rungs switched by projected size with a fade across each band; `factor` scales every switch
+// size down (as lod_scale does distances), so smaller factors are cheaper.
+bench_configuration_spec ladder_configuration(double factor = 1.0) {
+    bench_configuration_spec c;
+    std::ostringstream name;
+    name << "ladder";
+    if (factor != 1.0) name << "_x" << factor;
+    c.name = name.str();
+    c.family = "ladder";
+    std::ostringstream description;
+    description << "each species' representation ladder (the scenario's, else the papers': full mesh, reduced "
+                   "mesh, billboard cloud, points and lines, crossed billboard) by projected size, faded "
+                   "across each band";
+    if (factor != 1.0) description << ", projected sizes x" << factor;
+    c.description = description.str();
+    c.quality = factor;
+    c.options.policy.mode = lod_policy::kind::ladder;
+    c.options.policy.ladder_size_scale = float(factor);
+    return c;
+}
+
 // `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`: measured
 // against the SH-lit reference, beside the other SH configurations.
 bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
@@ -178,6 +200,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) list.push_back(baseline(d));
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
+    for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) list.push_back(ladder_configuration(factor));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
     for (float d : {1.0f, 2.0f, 2.5f, 3.0f})
@@ -203,6 +226,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) list.push_back(lit_by_transfer(baseline(d)));
     list.push_back(lit_by_transfer(mesh_lod(1.0)));
     list.push_back(billboard_clouds("sh"));
+    list.push_back(lit_by_transfer(ladder_configuration()));
     list.push_back(lit_by_transfer(points_lines(1.0f)));
     list.push_back(lit_by_transfer(points_lines(2.0f)));
     return list;
@@ -226,6 +250,8 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
     bench_configuration_spec c;
     if (representation == "mesh_levels") {
         c = mesh_lod(1.0);
+    } else if (representation == "ladder") {
+        c = ladder_configuration();
     } else if (representation == "billboard_clouds") {
         c = billboard_clouds(s.lod.lighting, s.lod.cloud_distance_m);
         c.options.lighting.clear();  // the scenario's own lighting, as `play` draws it

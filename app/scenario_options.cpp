@@ -26,10 +26,11 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
     command
         .add_option("--representation", options.representation,
                     "How plants are drawn (overrides lod.representation): mesh_levels (full, reduced and "
-                    "far meshes by distance), points_lines (Deussen 2002 points and lines) or "
+                    "far meshes by distance), points_lines (Deussen 2002 points and lines), "
                     "billboard_clouds (Behrendt 2005: meshes near, billboard clouds beyond "
-                    "lod.cloud_distance_m, crossed billboards far)")
-        ->check(CLI::IsMember({"mesh_levels", "points_lines", "billboard_clouds"}));
+                    "lod.cloud_distance_m, crossed billboards far) or ladder (each species' ladder of "
+                    "representations by projected size: lod.ladder, else the papers')")
+        ->check(CLI::IsMember({"mesh_levels", "points_lines", "billboard_clouds", "ladder"}));
     command
         .add_option(
             "--lighting", options.lighting,
