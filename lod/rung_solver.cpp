@@ -1,0 +1,103 @@
+#include "lod/rung_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sylva {
+namespace {
+
+const double k_log_lambda_min = std::log(k_lambda_min);
+const double k_log_lambda_step = (std::log(k_lambda_max) - std::log(k_lambda_min)) / double(k_lambda_buckets);
+
+// The bucket whose range (edge(b - 1), edge(b)] holds λ; k_lambda_buckets beyond the last edge.
+std::size_t bucket_of(double lambda) {
+    if (!(lambda > k_lambda_min)) return 0;
+    const double b = std::ceil((std::log(lambda) - k_log_lambda_min) / k_log_lambda_step) - 1.0;
+    return std::size_t(std::clamp(b, 0.0, double(k_lambda_buckets)));
+}
+
+}  // namespace
+
+float interpolate_table(const std::array<float, k_rung_table_size_count>& table, float size_px) {
+    const auto& sizes = k_rung_table_sizes_px;
+    if (!(size_px > sizes.front())) return table.front();
+    if (size_px >= sizes.back()) return table.back();
+    std::size_t i = 1;
+    while (sizes[i] < size_px) ++i;
+    const float t = std::log(size_px / sizes[i - 1]) / std::log(sizes[i] / sizes[i - 1]);
+    return table[i - 1] + t * (table[i] - table[i - 1]);
+}
+
+rung_candidates candidates_at(const species_rung_tables& tables, float size_px) {
+    rung_candidates c;
+    c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
+    for (std::size_t r = 0; r < c.count; ++r) {
+        c.error[r] = interpolate_table(tables.rungs[r].error, size_px);
+        c.cost_us[r] = interpolate_table(tables.rungs[r].cost_us, size_px);
+    }
+    return c;
+}
+
+std::uint8_t choose_at(const rung_candidates& c, double lambda, std::uint8_t previous, float hysteresis) {
+    std::uint8_t best = 0;
+    double best_value = INFINITY;
+    for (std::uint8_t r = 0; r < c.count; ++r) {
+        const double value = double(c.error[r]) + lambda * double(c.cost_us[r]);
+        if (value < best_value || (value == best_value && c.cost_us[r] < c.cost_us[best])) {
+            best = r;
+            best_value = value;
+        }
+    }
+    if (previous < c.count && previous != best) {
+        const double kept = double(c.error[previous]) + lambda * double(c.cost_us[previous]);
+        if (kept - best_value <= double(hysteresis) * std::abs(kept)) return previous;
+    }
+    return best;
+}
+
+double lambda_bucket_edge(std::size_t bucket) {
+    return std::exp(k_log_lambda_min + double(bucket + 1) * k_log_lambda_step);
+}
+
+void lambda_histogram::add(const rung_candidates& c) {
+    if (c.count == 0) return;
+    // The lower convex hull from the least-error rung towards the cheapest: from the current
+    // vertex, the next is the cheaper rung reached at the least λ (Δerror / Δcost), ties to the
+    // cheaper. Each step saves its cost difference from that λ on.
+    std::uint8_t at = choose_at(c, 0.0, k_max_rungs, 0.0f);
+    cost_at_zero_us += double(c.cost_us[at]);
+    double lambda = 0.0;
+    for (;;) {
+        std::uint8_t next = at;
+        double next_lambda = INFINITY;
+        for (std::uint8_t r = 0; r < c.count; ++r) {
+            if (!(c.cost_us[r] < c.cost_us[at])) continue;
+            const double l = std::max(lambda, double(c.error[r] - c.error[at]) / double(c.cost_us[at] - c.cost_us[r]));
+            if (l < next_lambda || (l == next_lambda && c.cost_us[r] < c.cost_us[next])) {
+                next = r;
+                next_lambda = l;
+            }
+        }
+        if (next == at) return;
+        saving_us[bucket_of(next_lambda)] += double(c.cost_us[at] - c.cost_us[next]);
+        at = next;
+        lambda = next_lambda;
+    }
+}
+
+void lambda_histogram::merge(const lambda_histogram& other) {
+    cost_at_zero_us += other.cost_at_zero_us;
+    for (std::size_t b = 0; b < saving_us.size(); ++b) saving_us[b] += other.saving_us[b];
+}
+
+double solve_lambda(const lambda_histogram& h, double budget_us) {
+    double cost = h.cost_at_zero_us;
+    if (cost <= budget_us) return 0.0;
+    for (std::size_t b = 0; b < k_lambda_buckets; ++b) {
+        cost -= h.saving_us[b];
+        if (cost <= budget_us) return lambda_bucket_edge(b);
+    }
+    return k_lambda_max;
+}
+
+}  // namespace sylva
