@@ -1,6 +1,7 @@
 // `sylva view`: a window onto a scenario. It plays the scenario's camera path; F switches to
 // flying by hand (W/A/S/D, Q/E, drag with the left mouse button to look), Space pauses, N steps
-// one frame, Escape quits. An overlay shows the frame's measurements.
+// one frame, R tints every plant by the rung it is drawn with (app/rung_colours.h), Escape quits.
+// An overlay shows the frame's measurements and, in rung colours, the key.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -12,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/commands.h"
+#include "app/rung_colours.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
 #include "scenarios/scenario_loader.h"
@@ -30,6 +32,7 @@ struct view_options {
     std::string screenshot;
     bool hidden = false;
     bool overlay = true;
+    bool rungs = false;  // start with the rung colours on
 };
 
 struct walk_state {
@@ -39,6 +42,7 @@ struct walk_state {
     double last_x = 0.0, last_y = 0.0;
     bool dragging = false;
     float yaw = 0.0f, pitch = 0.0f;
+    bool rungs = false;
 };
 
 void key_callback(GLFWwindow* window, int key, int, int action, int) {
@@ -48,6 +52,7 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
     if (key == GLFW_KEY_SPACE) state->paused = !state->paused;
     if (key == GLFW_KEY_N) state->step = true;
     if (key == GLFW_KEY_F) state->flying = !state->flying;
+    if (key == GLFW_KEY_R) state->rungs = !state->rungs;
 }
 
 // Moves the camera by hand: yaw/pitch from mouse drags, position from keys (metres/second).
@@ -91,9 +96,13 @@ void draw_overlay(const frame_record& r, const walk_state& state, const run_info
     for (const auto& [name, ms] : r.passes) ImGui::Text("  gpu %-18s %6.2f ms", name.c_str(), ms);
     ImGui::Text("triangles %llu (+%llu shadow)  draws %u", static_cast<unsigned long long>(r.triangles),
                 static_cast<unsigned long long>(r.shadow_triangles), r.draw_calls);
-    ImGui::Text("instances: full %u  reduced %u  far %u", r.instances[1], r.instances[2], r.instances[3]);
+    ImGui::Text("instances per rung%s:", state.rungs ? " (the colours in the view)" : "");
+    for (const rung_colour& c : k_rung_colours)
+        ImGui::TextColored(state.rungs ? ImVec4(c.rgb[0] / 255.0f, c.rgb[1] / 255.0f, c.rgb[2] / 255.0f, 1.0f)
+                                       : ImGui::GetStyleColorVec4(ImGuiCol_Text),
+                           "  %-18s %u", c.name.data(), r.instances[std::size_t(c.rung)]);
     ImGui::Text("%zu plants  %s", info.plants, info.gl_renderer.c_str());
-    ImGui::TextDisabled("F fly  WASDQE move  drag look  Space pause  N step  Esc quit");
+    ImGui::TextDisabled("F fly  WASDQE move  drag look  R rung colours  Space pause  N step  Esc quit");
     ImGui::End();
 }
 
@@ -110,8 +119,12 @@ int view(const view_options& o) {
         context_options.title = "Sylva — " + s.name;
         auto context = render::create_context(context_options);
         bake_cache cache;
-        scenario_player player(s, o.scenario.threads, context.get(), &cache);
+        // The ID buffer tells each pixel's plant, for the rung colours.
+        player_options player_settings;
+        player_settings.id_buffer = true;
+        scenario_player player(s, o.scenario.threads, context.get(), &cache, player_settings);
         walk_state state;
+        state.rungs = o.rungs;
         GLFWwindow* window = context->window();
         glfwSetWindowUserPointer(window, &state);
         glfwSetKeyCallback(window, key_callback);
@@ -132,7 +145,12 @@ int view(const view_options& o) {
             frame_record record = player.step();
             if (state.paused && !state.step) player.set_frame(frame);
             state.step = false;
-            player.present(context->width(), context->height());
+            if (state.rungs)
+                render::draw_image_to_default(
+                    tint_by_rung(player.capture(), player.capture_plant_ids(), player.world().table<lod_state>().values()),
+                    context->width(), context->height());
+            else
+                player.present(context->width(), context->height());
             ++shown;
             if (!o.screenshot.empty() && o.exit_after && shown == o.exit_after)
                 write_image(render::read_default_framebuffer(context->width(), context->height()),
@@ -172,6 +190,10 @@ command_runner add_view_command(CLI::App& app) {
                    "With --exit-after: save the last frame (without the overlay) to this PNG");
     app.add_flag("--hidden", options->hidden, "Keep the window hidden (automated tests)");
     app.add_flag("!--no-overlay", options->overlay, "Hide the statistics overlay");
+    app.add_flag("--rungs", options->rungs,
+                 "Start with every plant tinted by the rung it is drawn with (R toggles): mesh_full red, "
+                 "mesh_reduced orange, mesh_far yellow, billboard_cloud green, points_lines blue, "
+                 "crossed_billboard violet");
     return [options] { return view(*options); };
 }
 

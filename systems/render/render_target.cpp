@@ -83,4 +83,19 @@ image_rgba8 read_default_framebuffer(int width, int height) {
     return image_from_bottom_up(width, height, bottom_up);
 }
 
+void draw_image_to_default(const image_rgba8& image, int window_width, int window_height) {
+    const GLsizei w = GLsizei(image.width), h = GLsizei(image.height);
+    const gl_texture texture = make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.id(), 1, GL_RGBA8, w, h);
+    // Rows bottom-up, as GL counts them.
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (GLsizei y = 0; y < h; ++y)
+        glTextureSubImage2D(texture.id(), 0, 0, h - 1 - y, w, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                            image.texels.data() + std::size_t(y) * std::size_t(w) * 4);
+    const gl_framebuffer source = make_framebuffer();
+    glNamedFramebufferTexture(source.id(), GL_COLOR_ATTACHMENT0, texture.id(), 0);
+    glBlitNamedFramebuffer(source.id(), 0, 0, 0, w, h, 0, 0, window_width, window_height, GL_COLOR_BUFFER_BIT,
+                           GL_LINEAR);
+}
+
 }  // namespace sylva::render

@@ -37,4 +37,8 @@ private:
 // Reads the window's back buffer (after a blit, before the overlay) as an image, top row first.
 image_rgba8 read_default_framebuffer(int width, int height);
 
+// Draws `image` (top row first) over the whole window's back buffer, scaled as blit_to_default
+// scales a frame (the view's rung colours, app/rung_colours.h).
+void draw_image_to_default(const image_rgba8& image, int window_width, int window_height);
+
 }  // namespace sylva::render
