@@ -91,8 +91,9 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         policy.mode = lod_policy::kind::ladder;
     if (policy.mode == lod_policy::kind::ladder) {
         // DESIGN §1.5: a species' own ladder, else the lod section's, else the papers'. The
-        // points rung draws with the scenario's point settings.
-        if (options.scenario_lod)
+        // points rung draws with the scenario's point settings whenever the ladders are the
+        // scenario's (the bench's ladder family too).
+        if (options.scenario_lod || policy.ladders.empty())
             policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
                              s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
                              s.lod.fog_weighted_samples};

@@ -83,7 +83,10 @@ INSTANTIATE_TEST_SUITE_P(
                       loop_case{"tiny", "points_lines", "pre_lit", "soft", true},
                       loop_case{"tiny", "billboard_clouds", "pre_lit", "soft", false},
                       loop_case{"tiny", "billboard_clouds", "sh", "soft", true},
-                      loop_case{"default", "points_lines", "normal_mapped", "soft", false}),
+                      loop_case{"default", "points_lines", "normal_mapped", "soft", false},
+                      // The papers' ladder (points fading in and out as partners), and default's own.
+                      loop_case{"tiny", "ladder", "sh", "soft", true},
+                      loop_case{"default", "ladder", "normal_mapped", "soft", false}),
     case_name);
 
 }  // namespace
