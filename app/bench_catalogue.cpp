@@ -139,6 +139,21 @@ bench_configuration_spec ladder_configuration(double factor = 1.0) {
     return c;
 }
 
+// DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
+// species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
+bench_configuration_spec auto_ladder(double budget_ms) {
+    bench_configuration_spec c = ladder_configuration();
+    std::ostringstream value;
+    value << budget_ms;
+    c.name = "auto_" + value.str();
+    c.family = "auto";
+    c.description = "each species' ladder, every plant's rung chosen per frame by the budget solver from measured "
+                    "error and cost tables, plants' predicted cost within " + value.str() + " ms";
+    c.quality = budget_ms;
+    c.options.plant_budget_ms = budget_ms;
+    return c;
+}
+
 // `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`: measured
 // against the SH-lit reference, beside the other SH configurations.
 bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
@@ -201,6 +216,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
     for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) list.push_back(ladder_configuration(factor));
+    for (double budget_ms : {30.0, 60.0, 120.0, 250.0, 500.0}) list.push_back(auto_ladder(budget_ms));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
     for (float d : {1.0f, 2.0f, 2.5f, 3.0f})
@@ -236,7 +252,7 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
                                                                    const scenario_options& o) {
     const bool points_options =
         o.sample_distance_px || o.splats || o.primitive_budget || o.target_frame_ms;
-    if (!o.representation && !points_options) return std::nullopt;
+    if (!o.representation && !points_options && !o.plant_budget_ms) return std::nullopt;
     const std::string& representation = s.lod.representation;
     if (points_options && representation != "points_lines") {
         const char* option = o.sample_distance_px ? "--sample-distance"
@@ -251,7 +267,7 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
     if (representation == "mesh_levels") {
         c = mesh_lod(1.0);
     } else if (representation == "ladder") {
-        c = ladder_configuration();
+        c = s.lod.plant_budget_ms > 0.0 ? auto_ladder(s.lod.plant_budget_ms) : ladder_configuration();
     } else if (representation == "billboard_clouds") {
         c = billboard_clouds(s.lod.lighting, s.lod.cloud_distance_m);
         c.options.lighting.clear();  // the scenario's own lighting, as `play` draws it

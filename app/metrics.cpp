@@ -74,6 +74,8 @@ nlohmann::json frame_json(const frame_record& f) {
             {"draw_calls", f.draw_calls},
             {"aggregated_tiles", f.aggregated_tiles},
             {"aggregated_plants", f.aggregated_plants},
+            {"ladder_lambda", f.ladder_lambda},
+            {"predicted_plant_ms", f.predicted_plant_ms},
             {"image_hash", f.image_hash},
             {"state_hash", f.state_hash}};
 }

@@ -40,6 +40,10 @@ struct frame_record {
     // Deussen 2002 §6.2: far eco tiles drawn as their aggregated point sets, and their plants.
     std::uint32_t aggregated_tiles = 0;
     std::uint32_t aggregated_plants = 0;
+    // The auto ladder (resources/rung_budget.h): the solver's multiplier λ (error per µs) and
+    // the plants' cost it predicted, in ms; both 0 without measured rung tables.
+    double ladder_lambda = 0.0;
+    double predicted_plant_ms = 0.0;
     std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)
     std::uint64_t state_hash = 0;  // FNV-1a of the frame's component state and draw list
 };

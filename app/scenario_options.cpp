@@ -62,6 +62,12 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "Adapt d' every frame to hold this GPU frame time (points_lines; not deterministic; "
                     "overrides lod.target_frame_ms)")
         ->check(CLI::Range(0.0, 1e5));
+    command
+        .add_option("--plant-budget-ms", options.plant_budget_ms,
+                    "With --representation ladder: choose every plant's rung each frame from tables measured per "
+                    "species and rung (once, kept in the bake cache) so that the plants' predicted cost stays "
+                    "within this many ms (the auto ladder; overrides lod.plant_budget_ms; 0: by projected size)")
+        ->check(CLI::Range(0.0, 1e5));
 }
 
 scenario load_scenario_file_or_bundled(const std::string& path) {
@@ -90,6 +96,7 @@ scenario load_with_overrides(const scenario_options& options) {
         s.lod.target_frame_ms = *options.target_frame_ms;
         s.lod.primitive_budget = 0.0;
     }
+    if (options.plant_budget_ms) s.lod.plant_budget_ms = *options.plant_budget_ms;
     return s;
 }
 

@@ -22,6 +22,7 @@ struct scenario_options {
     std::optional<std::string> splats;
     std::optional<double> primitive_budget;
     std::optional<double> target_frame_ms;
+    std::optional<double> plant_budget_ms;
 };
 
 void add_scenario_options(CLI::App& command, scenario_options& options);

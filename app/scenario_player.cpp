@@ -1,5 +1,8 @@
 #include "app/scenario_player.h"
 
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <iterator>
@@ -8,6 +11,7 @@
 #include <tuple>
 
 #include "app/device_costs.h"
+#include "app/rung_tables.h"
 #include "scenarios/ladder_fields.h"
 #include "components/camera.h"
 #include "components/fade_alpha.h"
@@ -172,11 +176,13 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
             m_world.set_resource(device_cost_model(*m_renderer, *context, *cache, policy.points.splat_factor,
                                                    false, options.calibration)
                                      .costs_for(policy.points));
+        m_world.set_resource(auto_ladder(policy, options, *context, cache));
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();
     }
     m_world.set_resource(device);
+    if (!m_world.has_resource<rung_budget>()) m_world.set_resource(rung_budget{});
 
     m_info.scenario = m_scenario.name;
     m_info.source = m_scenario.source;
@@ -261,6 +267,8 @@ void scenario_player::step(frame_record& record) {
     record.draw_calls = stats.draw_calls;
     record.aggregated_tiles = m_world.resource<tile_point_draws>().tiles;
     record.aggregated_plants = m_world.resource<tile_point_draws>().plants;
+    record.ladder_lambda = m_world.resource<rung_budget>().lambda;
+    record.predicted_plant_ms = m_world.resource<rung_budget>().predicted_us / 1000.0;
     record.image_hash = 0;
     record.state_hash = state_hash();
     ++m_frame;
@@ -294,6 +302,32 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
             if (id != 0 && id - 1 < items.size()) plants[y * width + x] = plant_of(items[id - 1].instance) + 1;
         }
     return plants;
+}
+
+rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_options& options,
+                                        render::gl_context& context, bake_cache* cache) {
+    rung_budget budget;
+    const double budget_ms = options.plant_budget_ms > 0.0 ? options.plant_budget_ms
+                             : options.scenario_lod      ? m_scenario.lod.plant_budget_ms
+                                                         : 0.0;
+    if (budget_ms <= 0.0 || policy.mode != lod_policy::kind::ladder) return budget;
+    std::vector<representation> rungs;
+    for (const ladder& l : policy.ladders)
+        for (std::size_t r = 0; r < l.count; ++r)
+            if (std::find(rungs.begin(), rungs.end(), l.rungs[r]) == rungs.end()) rungs.push_back(l.rungs[r]);
+    const auto measured = measure_rung_tables(m_scenario, rungs, policy.points, context, cache,
+                                              [](const std::string& species) {
+                                                  spdlog::info("measuring the rung tables of {} (once; kept in the bake cache)", species);
+                                              });
+    context.make_current();  // the measuring players drew in it
+    std::optional<primitive_cost_model> model;
+    if (cache && options.measure_costs)
+        model = device_cost_model(*m_renderer, context, *cache, policy.points.splat_factor, false, options.calibration)
+                    .model;
+    for (std::size_t i = 0; i < measured.size(); ++i)
+        budget.tables.push_back(solver_tables(measured[i], policy.ladders[i], model, policy.points));
+    budget.plant_budget_us = budget_ms * 1000.0;
+    return budget;
 }
 
 void scenario_player::present(int window_width, int window_height) const {

@@ -17,6 +17,7 @@
 #include "systems/render/renderer.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "resources/lod_policy.h"
+#include "resources/rung_budget.h"
 #include "resources/scene_assets.h"
 
 namespace sylva {
@@ -54,6 +55,11 @@ struct player_options {
     // Every species lit this way ("normal_mapped", "pre_lit" or "sh"; scenario `lighting`),
     // whatever the scenario says; empty: as the scenario says. The bench compares variants so.
     std::string lighting;
+    // With a ladder policy: choose every plant's rung by measured rung tables (app/rung_tables.h)
+    // so that the plants' predicted cost stays within this many ms a frame (the auto ladder,
+    // resources/rung_budget.h); 0: with scenario_lod the scenario's lod.plant_budget_ms, else
+    // the ladders switch by projected size.
+    double plant_budget_ms = 0.0;
 };
 
 class scenario_player {
@@ -93,6 +99,11 @@ public:
     const primitive_costs& costs() const { return m_world.resource<primitive_costs>(); }
 
 private:
+    // The auto ladder's tables and budget (measured through `cache` on `context`), or an empty
+    // rung_budget when the ladders switch by size.
+    rung_budget auto_ladder(const lod_policy& policy, const player_options& options, render::gl_context& context,
+                            bake_cache* cache);
+
     scenario m_scenario;
     scene_assets m_assets;
     ecs::world m_world;

@@ -170,6 +170,11 @@
 //     sh_interreflection boolean false   with lighting "sh": add one diffuse bounce of the
 //                                       plant's own light to its transfer (Sloan et al. 2002's
 //                                       interreflected transfer; bakes about twice as long)
+//     plant_budget_ms    number  0      0 .. 100000; with representation "ladder": every plant's
+//                                       rung chosen each frame from tables measured per species
+//                                       and rung (error against the full plant, and cost), so
+//                                       that the plants' predicted cost stays within this many
+//                                       ms (the auto ladder); 0: rungs switch by projected size
 //     ladder             array   none   1 .. 8 rungs, nearest first, for representation
 //                                       "ladder"; none: the papers' ladder (lod/ladder.h
 //                                       papers_ladder). Each {
@@ -350,6 +355,7 @@ struct lod_settings {
     std::uint32_t sh_bands = 3;
     bool sh_interreflection = false;
     std::vector<ladder_step_settings> ladder;  // empty: the papers' ladder (lod/ladder.h)
+    double plant_budget_ms = 0.0;  // ladder: rungs chosen by measured tables within this cost
     bool operator==(const lod_settings&) const = default;
 };
 

@@ -346,6 +346,7 @@ const field_table<lod_settings>& lod_fields() {
                                   .boolean("sh_interreflection", &t::sh_interreflection)
                                   .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
                                        [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
+                                  .number("plant_budget_ms", &t::plant_budget_ms, {0.0, 1e5})
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

@@ -8,10 +8,87 @@
 
 namespace sylva {
 
-void select_representation_system::run(ecs::system_context<select_representation_system>& ctx) {
+namespace {
+
+// The rung index of `r` in a species' tables, or k_max_rungs when it has none.
+std::uint8_t rung_index(const species_rung_tables& tables, representation r) {
+    for (std::size_t i = 0; i < tables.rungs.size(); ++i)
+        if (tables.rungs[i].rung == r) return std::uint8_t(i);
+    return std::uint8_t(k_max_rungs);
+}
+
+// DESIGN §1.5 `auto`: every plant drawn (seen or casting) on the rung the budget solver picks
+// (lod/rung_solver.h). Two passes over the plants: each chunk's histogram of cost savings over
+// λ, merged in chunk order; then each plant's choice at λ, with hysteresis, and its predicted
+// cost summed per chunk. A plant whose rung changed keeps the old one as a partner dissolving
+// over fade_frames frames.
+void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
+    rung_budget& budget = ctx.resource_mut<rung_budget>();
+    auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
+    const auto size_of = [&](const world_transform& t, const plant_instance& p) {
+        const float distance = float(glm::length(t.position - cam.position));
+        return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, cam.fov_y,
+                                 cam.viewport_height_px) *
+               cam.lod_scale;
+    };
+    // Per-chunk results folded in chunk order: the same sums for any thread count.
+    const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
+    budget.histograms.assign(chunks, lambda_histogram{});
+    budget.costs.assign(chunks, 0.0);
+    ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
+        lambda_histogram& h = budget.histograms[chunk];
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
+                                          lod_state& lod, fade_alpha&) {
+            if (lod.visible || lod.in_shadow_range)
+                h.add(candidates_at(budget.tables[std::size_t(p.species)], size_of(t, p)));
+        });
+    });
+    lambda_histogram total;
+    for (const lambda_histogram& h : budget.histograms) total.merge(h);
+    budget.lambda = solve_lambda(total, budget.plant_budget_us);
+    const double lambda = budget.lambda;
+    const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
+    ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
+        double& cost = budget.costs[chunk];
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
+                                          lod_state& lod, fade_alpha& fade) {
+            lod.previous = lod.current;
+            if (!lod.visible && !lod.in_shadow_range) {
+                lod.current = representation::none;
+                fade = {};
+                return;
+            }
+            const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
+            const rung_candidates c = candidates_at(tables, size_of(t, p));
+            const std::uint8_t chosen = choose_at(c, lambda, rung_index(tables, lod.current), budget.hysteresis);
+            cost += double(c.cost_us[chosen]);
+            const representation rung = tables.rungs[chosen].rung;
+            if (rung != lod.current && lod.current != representation::none) {
+                fade = {1.0f, lod.current};  // the old rung dissolves; the new one is whole
+            } else if (fade.partner != representation::none) {
+                fade.value -= fade_step;
+                if (!(fade.value > 0.0f) || fade.partner == rung) fade = {};
+            }
+            lod.current = rung;
+            if (!lod.visible) fade = {};  // only a seen plant draws a partner
+        });
+    });
+    budget.predicted_us = 0.0;
+    for (const double cost : budget.costs) budget.predicted_us += cost;
+}
+
+}  // namespace
+
+void select_representation_system::run(ecs::system_context<select_representation_system>& ctx) {
     const lod_policy& policy = ctx.resource<lod_policy>();
+    if (policy.mode == lod_policy::kind::ladder && ctx.resource<rung_budget>().active()) {
+        choose_by_budget(ctx);
+        return;
+    }
+    const camera& cam = ctx.single<camera>();
+    const auto& library = ctx.resource<species_library>().species;
     auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,

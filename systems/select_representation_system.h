@@ -4,8 +4,10 @@
 // species' reduced distance, the far mesh beyond its far distance. Under other policies: points
 // and lines (Deussen 2002), billboard clouds with their transition bands (Behrendt 2005 §2.3,
 // lod/billboard_cloud_lod.h), or each species' ladder by projected size (DESIGN §1.5,
-// lod/ladder.h); for the last two it writes the band's partner and fade into fade_alpha. Records
-// the previous choice so measurements can count switches.
+// lod/ladder.h); for the last two it writes the band's partner and fade into fade_alpha. With
+// measured rung tables (resources/rung_budget.h) a ladder's rung is instead the one the budget
+// solver picks (lod/rung_solver.h), and a plant that changes rung dissolves its old one over a
+// few frames. Records the previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -14,6 +16,7 @@
 #include "ecs/system.h"
 #include "lod/distance_lod.h"
 #include "resources/lod_policy.h"
+#include "resources/rung_budget.h"
 #include "resources/scene_assets.h"
 
 namespace sylva {
@@ -22,7 +25,7 @@ struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";
     static constexpr ecs::phase k_phase = ecs::phase::select;
     using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy>;
-    using writes = ecs::writes<lod_state, fade_alpha>;
+    using writes = ecs::writes<lod_state, fade_alpha, rung_budget>;
     static void run(ecs::system_context<select_representation_system>& ctx);
 };
 

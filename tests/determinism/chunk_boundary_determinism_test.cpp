@@ -262,5 +262,32 @@ TEST(chunk_boundary_determinism, ladder_with_every_handover) {
         EXPECT_GT(drawn_as(one, r), 0u) << "no plant on rung " << int(r);
 }
 
+// DESIGN §1.5 `auto`: the same ladder with every rung chosen by the budget solver from tables
+// measured on this scene's species (through the test's cache), a budget between all-cheapest
+// and all-best so that the solver has to mix rungs.
+TEST(chunk_boundary_determinism, auto_ladder_under_a_budget) {
+    SYLVA_REQUIRE_GL();
+    player_options options = with_policy(lod_policy::kind::ladder);
+    ladder l;
+    l.count = 4;
+    l.rungs = {representation::mesh_full, representation::billboard_cloud, representation::points,
+               representation::crossed_billboard};
+    l.below_px = {0.0f, 40.0f, 16.0f, 6.0f};
+    l.band = {0.0f, 0.15f, 0.15f, 0.15f};
+    options.policy.ladders = {l, l};
+    options.plant_budget_ms = 20.0;
+    expected_loops expected;
+    expected.select_representation = 2;  // the histograms, then the choices
+    expected.update_point_prefix = 2;
+    expected.build_draw_list = 5;
+    const std::vector<frame_trace> one =
+        expect_same_for_1_2_and_4_threads({"auto_ladder", options}, expected).frames;
+    std::size_t rungs_used = 0;
+    for (const representation r : {representation::mesh_full, representation::billboard_cloud,
+                                   representation::points, representation::crossed_billboard})
+        rungs_used += drawn_as(one, r) > 0;
+    EXPECT_GE(rungs_used, 2u) << "the budget should make the solver mix rungs";
+}
+
 }  // namespace
 }  // namespace sylva

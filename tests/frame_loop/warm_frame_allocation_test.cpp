@@ -42,6 +42,11 @@ TEST_P(warm_frame_allocations, the_second_pass_over_the_camera_path_allocates_no
     s.height = 90;
     s.frames = 4;
     s.lod.representation = c.representation;
+    // "auto": the ladder with rungs chosen by the budget solver (resources/rung_budget.h).
+    if (s.lod.representation == "auto") {
+        s.lod.representation = "ladder";
+        s.lod.plant_budget_ms = 60.0;
+    }
     s.lod.lighting = c.lighting;
     for (species_settings& species : s.species) species.lighting = "scenario";
     s.lod.splats = c.splats;
@@ -86,7 +91,8 @@ INSTANTIATE_TEST_SUITE_P(
                       loop_case{"default", "points_lines", "normal_mapped", "soft", false},
                       // The papers' ladder (points fading in and out as partners), and default's own.
                       loop_case{"tiny", "ladder", "sh", "soft", true},
-                      loop_case{"default", "ladder", "normal_mapped", "soft", false}),
+                      loop_case{"default", "ladder", "normal_mapped", "soft", false},
+                      loop_case{"default", "auto", "normal_mapped", "soft", false}),
     case_name);
 
 }  // namespace

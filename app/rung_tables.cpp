@@ -1,0 +1,266 @@
+#include "app/rung_tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/scenario_player.h"
+#include "components/transform.h"
+#include "lod/point_line_lod.h"
+#include "models/image/image_ops.h"
+#include "resources/playback.h"
+#include "scenarios/scenario_loader.h"
+
+namespace sylva {
+namespace {
+
+constexpr float k_fov_deg = 50.0f;
+constexpr std::uint32_t k_reference_samples = 3;
+constexpr std::uint32_t k_format_version = 1;
+
+// Species `i` of `s` alone on flat ground, in a square view of `view_px`.
+scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px) {
+    scenario one = s;
+    // Only what changes the measurement stays (it keys the cache): the species, the seed its
+    // model grows from, the light, the shadows, the ground's colour.
+    one.name = s.species[i].name + ":rung_tables";
+    one.width = one.height = view_px;
+    one.frames = 1;
+    one.fps = scenario{}.fps;
+    one.camera = camera_settings{};
+    const lod_settings lod = s.lod;
+    one.lod = lod_settings{};
+    one.lod.lighting = lod.lighting;
+    one.lod.sh_bands = lod.sh_bands;
+    one.lod.sh_interreflection = lod.sh_interreflection;
+    one.world_offset = glm::dvec3(0.0);
+    one.species = {s.species[i]};
+    one.species[0].max_distance_m = 1e6f;  // never culled at the smallest size
+    one.species[0].ladder.clear();
+    population_settings p;
+    p.species = s.species[i].name;
+    p.count = 1;
+    p.min_spacing_m = 0.5f;
+    p.scale_min = p.scale_max = 1.0f;
+    p.area = {-0.5, -0.5, 0.5, 0.5};
+    one.populations = {p};
+    one.terrain = terrain_settings{};
+    one.terrain.size_m = 64.0;
+    one.terrain.resolution = 9;
+    one.terrain.height_m = 0.0f;
+    one.terrain.ground_color = s.terrain.ground_color;
+    one.eco_tiles.enabled = false;
+    return one;
+}
+
+struct view_sample {
+    double error_per_pixel = 0.0;
+    double plant_pixels = 0.0;
+    double drawn_pixels = 0.0;
+};
+
+// Looks at the plant level from `azimuth_deg` so that its sphere is `size_px` high.
+void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_t view_px) {
+    ecs::world& world = player.world();
+    const world_transform& t = world.table<world_transform>().data()[0];
+    const species_entry& species = world.resource<species_library>().species[0];
+    const double pixel = image_plane_units(1.0, double(k_fov_deg) * M_PI / 180.0, double(view_px));
+    // select_representation measures from the eye to the plant's base.
+    const double d = 2.0 * double(species.bounding_radius * t.scale) / (double(size_px) * pixel);
+    const double centre = double(species.center_height * t.scale);
+    const double eye_height = std::min(centre, 0.7 * d);
+    const double across = std::sqrt(std::max(d * d - eye_height * eye_height, 0.0));
+    const double a = double(azimuth_deg) * M_PI / 180.0;
+    camera_keyframe key;
+    key.position = t.position + glm::dvec3(across * std::sin(a), eye_height, across * std::cos(a));
+    key.target = t.position + glm::dvec3(0.0, centre, 0.0);
+    key.fov_deg = k_fov_deg;
+    world.resource<camera_track>().keys = {key};
+    player.set_frame(0);
+}
+
+view_sample compare(const image_rgba8& reference, const std::vector<std::uint32_t>& reference_ids,
+                    const image_rgba8& image, const std::vector<std::uint32_t>& ids) {
+    view_sample v;
+    double error = 0.0;
+    for (std::size_t i = 0; i < ids.size() && i < reference_ids.size(); ++i) {
+        const bool a = reference_ids[i] != 0, b = ids[i] != 0;
+        v.plant_pixels += a;
+        v.drawn_pixels += b;
+        if (!a && !b) continue;
+        for (std::size_t c = 0; c < 3; ++c)
+            error += std::abs(int(reference.texels[4 * i + c]) - int(image.texels[4 * i + c])) / (3.0 * 255.0);
+    }
+    v.error_per_pixel = error / std::max(1.0, v.plant_pixels);
+    return v;
+}
+
+species_rung_measurements measure_species(const scenario& one, const std::vector<representation>& rungs,
+                                          const point_line_quality& points, render::gl_context& context,
+                                          bake_cache* cache) {
+    species_rung_measurements out;
+    out.species = one.species[0].name;
+    scenario big = one;
+    big.width = big.height = one.width * k_reference_samples;
+    player_options full(geometry_mode::full);
+    full.id_buffer = true;
+    full.scenario_lod = false;
+    scenario_player reference(big, 0, &context, cache, full);
+    // Every view of the reference first: one player at a time holds the context's frame.
+    struct reference_view {
+        image_rgba8 image;
+        std::vector<std::uint32_t> ids;
+    };
+    std::vector<reference_view> views;
+    for (const float size : k_rung_table_sizes_px)
+        for (const float azimuth : k_rung_table_directions) {
+            aim(reference, size, azimuth, one.height);  // the same camera: 3x the pixels
+            (void)reference.step();
+            views.push_back({box_downsample(reference.capture(), k_reference_samples),
+                             reference.capture_plant_ids(k_reference_samples)});
+        }
+    for (const representation r : rungs) {
+        player_options options;
+        options.policy = {lod_policy::kind::single, r, r, 0.0f};
+        options.policy.points = points;
+        options.scenario_lod = false;
+        options.measure_costs = false;
+        options.id_buffer = true;
+        scenario_player player(one, 0, &context, cache, options);
+        rung_measurement m;
+        m.rung = r;
+        std::size_t view = 0;
+        for (std::size_t s = 0; s < k_rung_table_size_count; ++s) {
+            const double n = double(k_rung_table_directions.size());
+            for (const float azimuth : k_rung_table_directions) {
+                aim(player, k_rung_table_sizes_px[s], azimuth, one.height);
+                const frame_record record = player.step();
+                const view_sample v =
+                    compare(views[view].image, views[view].ids, player.capture(), player.capture_plant_ids());
+                ++view;
+                m.error_per_pixel[s] += float(v.error_per_pixel / n);
+                m.plant_pixels[s] += float(v.plant_pixels / n);
+                m.drawn_pixels[s] += float(v.drawn_pixels / n);
+                m.triangles[s] += float(double(record.triangles) / n);
+                m.shadow_triangles[s] += float(double(record.shadow_triangles) / n);
+                m.points[s] += float(double(record.points) / n);
+                m.lines[s] += float(double(record.lines) / n);
+            }
+        }
+        out.rungs.push_back(m);
+    }
+    return out;
+}
+
+std::uint64_t table_key(const scenario& one, const std::vector<representation>& rungs,
+                        const point_line_quality& points) {
+    std::ostringstream text;
+    text << scenario_to_json_text(one) << "|rungs";
+    for (const representation r : rungs) text << ':' << int(r);
+    text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
+         << int(points.fog_weighted) << "|version:" << k_format_version;
+    const std::string key = text.str();
+    return fnv1a(key.data(), key.size());
+}
+
+}  // namespace
+
+std::vector<std::byte> encode_rung_measurements(const species_rung_measurements& m) {
+    binary_writer out;
+    out.pod(k_format_version);
+    out.pod(std::uint32_t(k_rung_table_size_count));
+    out.text(m.species);
+    out.pod(std::uint32_t(m.rungs.size()));
+    for (const rung_measurement& r : m.rungs) {
+        out.pod(std::uint8_t(r.rung));
+        for (const auto* table : {&r.error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles,
+                                  &r.shadow_triangles, &r.points, &r.lines})
+            out.pod(*table);
+    }
+    return std::move(out.bytes());
+}
+
+species_rung_measurements decode_rung_measurements(std::span<const std::byte> bytes) {
+    binary_reader in(bytes);
+    if (in.pod<std::uint32_t>() != k_format_version) throw std::runtime_error("rung table: another version");
+    if (in.pod<std::uint32_t>() != k_rung_table_size_count)
+        throw std::runtime_error("rung table: another number of sizes");
+    species_rung_measurements m;
+    m.species = in.text();
+    const auto count = in.pod<std::uint32_t>();
+    if (count >= std::uint32_t(representation::count))
+        throw std::runtime_error("rung table: " + std::to_string(count) + " rungs");
+    for (std::uint32_t i = 0; i < count; ++i) {
+        rung_measurement r;
+        const auto rung = in.pod<std::uint8_t>();
+        if (rung == 0 || rung >= std::uint8_t(representation::count))
+            throw std::runtime_error("rung table: rung " + std::to_string(rung) + " is no representation");
+        r.rung = representation(rung);
+        for (auto* table : {&r.error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles, &r.shadow_triangles,
+                            &r.points, &r.lines}) {
+            *table = in.pod<std::array<float, k_rung_table_size_count>>();
+            for (const float v : *table)
+                if (!std::isfinite(v) || v < 0.0f) throw std::runtime_error("rung table: a value of " + std::to_string(v));
+        }
+        m.rungs.push_back(r);
+    }
+    if (!in.at_end()) throw std::runtime_error("rung table: bytes after the last rung");
+    return m;
+}
+
+species_rung_tables solver_tables(const species_rung_measurements& m, const ladder& ladder,
+                                  const std::optional<primitive_cost_model>& model, const point_line_quality& q) {
+    const primitive_costs paper;
+    const double triangle_us = model ? model->paths[std::size_t(cost_path::triangles)].a_us : 1.0;
+    const double pixel_us = model ? model->paths[std::size_t(cost_path::triangles)].b_us_per_px : 0.0;
+    const double point_us = model ? model->paths[std::size_t(splat_path(q))].at(splat_pixels(q))
+                                  : paper.point / paper.triangle;
+    const double line_us =
+        model ? model->paths[std::size_t(line_path(q))].at(line_pixels(q)) : paper.line / paper.triangle;
+    // Beyond the view the plant's pixels are not all seen: grow the last whole size's coverage.
+    const std::size_t last_whole = k_rung_table_size_count - 2;
+    const auto beyond = [&](std::size_t i) {
+        const double grow = double(k_rung_table_sizes_px[i]) / double(k_rung_table_sizes_px[last_whole]);
+        return i > last_whole ? grow * grow : 1.0;
+    };
+    species_rung_tables out;
+    for (std::size_t r = 0; r < ladder.count; ++r) {
+        const auto it = std::find_if(m.rungs.begin(), m.rungs.end(),
+                                     [&](const rung_measurement& x) { return x.rung == ladder.rungs[r]; });
+        if (it == m.rungs.end())
+            throw std::invalid_argument("rung tables of " + m.species + " have no " +
+                                        std::string(rung_name(ladder.rungs[r])));
+        rung_table t;
+        t.rung = it->rung;
+        for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+            const std::size_t whole = std::min(i, last_whole);
+            t.error[i] = float(double(it->error_per_pixel[i]) * double(it->plant_pixels[whole]) * beyond(i));
+            t.cost_us[i] = float((double(it->triangles[i]) + double(it->shadow_triangles[i])) * triangle_us +
+                                 double(it->points[i]) * point_us + double(it->lines[i]) * line_us +
+                                 double(it->drawn_pixels[whole]) * beyond(i) * pixel_us);
+        }
+        out.rungs.push_back(t);
+    }
+    return out;
+}
+
+std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, const std::vector<representation>& rungs,
+                                                           const point_line_quality& points,
+                                                           render::gl_context& context, bake_cache* cache,
+                                                           const std::function<void(const std::string&)>& progress) {
+    std::vector<species_rung_measurements> out;
+    for (std::size_t i = 0; i < s.species.size(); ++i) {
+        const scenario one = species_alone(s, i, k_rung_table_view_px);
+        out.push_back(read_or_bake(
+            cache, "rung_tables", table_key(one, rungs, points),
+            [&] {
+                if (progress) progress(s.species[i].name);  // measuring, not read from the cache
+                return encode_rung_measurements(measure_species(one, rungs, points, context, cache));
+            },
+            [](const std::vector<std::byte>& bytes) { return decode_rung_measurements(bytes); }));
+    }
+    return out;
+}
+
+}  // namespace sylva

@@ -1,0 +1,76 @@
+#pragma once
+// What each rung of a species draws and how far it is from the species' full geometry, as a
+// function of projected size: the measured tables the auto ladder chooses from (DESIGN §1.5,
+// issue 21 item 3; the choice itself is lod/rung_solver.h).
+//
+// For each species of a scenario, the species is planted alone on flat ground and seen level
+// from k_rung_table_directions azimuths at every size of k_rung_table_sizes_px (its bounding
+// sphere that many pixels high in a k_rung_table_view_px-square view, a camera moved as
+// select_representation measures size). Each rung is drawn on its own and compared with the
+// full geometry at 3x3 samples per pixel, lit the same way: the error is the mean absolute colour
+// difference (of 1, over RGB) over the pixels either covers, per pixel the reference's plant
+// covers. Beside it the table keeps what the rung drew (view and shadow triangles, points, lines,
+// covered pixels), so its cost follows from the device's calibration (lod/primitive_cost_model.h)
+// on any machine, while the table itself is the same everywhere. Tables are stored in the bake
+// cache (kind "rung_tables"), keyed by the one-plant scenario and the rungs.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "components/lod_state.h"
+#include "lod/primitive_cost_model.h"
+#include "lod/rung_solver.h"
+#include "models/cache/bake_cache.h"
+#include "resources/lod_policy.h"
+#include "scenarios/scenario.h"
+
+namespace sylva {
+namespace render {
+class gl_context;
+}
+
+inline constexpr std::uint32_t k_rung_table_view_px = 256;
+inline constexpr std::array<float, 3> k_rung_table_directions{0.0f, 120.0f, 240.0f};  // azimuth, degrees
+
+// One rung of one species, per table size (means over the directions).
+struct rung_measurement {
+    representation rung = representation::none;
+    std::array<float, k_rung_table_size_count> error_per_pixel{};
+    std::array<float, k_rung_table_size_count> plant_pixels{};  // the reference's, in the view
+    std::array<float, k_rung_table_size_count> drawn_pixels{};  // the rung's
+    std::array<float, k_rung_table_size_count> triangles{};
+    std::array<float, k_rung_table_size_count> shadow_triangles{};
+    std::array<float, k_rung_table_size_count> points{};
+    std::array<float, k_rung_table_size_count> lines{};
+};
+
+struct species_rung_measurements {
+    std::string species;
+    std::vector<rung_measurement> rungs;  // in the order asked for
+};
+
+// Measures `rungs` of every species of `s` (drawn with `points` for the points rung), through
+// `cache` when it is not null. `progress` hears each species' name as its measuring starts (not when its
+// tables come from the cache).
+std::vector<species_rung_measurements> measure_rung_tables(
+    const scenario& s, const std::vector<representation>& rungs, const point_line_quality& points,
+    render::gl_context& context, bake_cache* cache, const std::function<void(const std::string&)>& progress = {});
+
+// What the solver chooses from: for the rungs of `ladder` (in its order; each must have been
+// measured), the error summed over the plant's pixels (error per pixel x the pixels the plant
+// covers, those beyond the view grown with the size's square) and the cost in microseconds of
+// what the rung drew: triangles (view and shadow) and covered pixels on the device's triangle
+// path, points and lines at quality `q` on theirs (lod/primitive_cost_model.h). Without a
+// calibration (`model` empty) a triangle costs 1 µs (about what llvmpipe draws, 1 M a second),
+// points and lines the paper's share of it (Deussen 2002 §4.1), pixels nothing.
+species_rung_tables solver_tables(const species_rung_measurements& m, const ladder& ladder,
+                                  const std::optional<primitive_cost_model>& model, const point_line_quality& q);
+
+// The bytes the cache keeps, and back (throws std::runtime_error on anything malformed).
+std::vector<std::byte> encode_rung_measurements(const species_rung_measurements& m);
+species_rung_measurements decode_rung_measurements(std::span<const std::byte> bytes);
+
+}  // namespace sylva
