@@ -20,6 +20,7 @@
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "resources/draw_list.h"
+#include "resources/rung_budget.h"
 #include "systems/fit_shadow_cascades_system.h"
 #include "systems/select_representation_system.h"
 #include "systems/update_camera_system.h"
@@ -40,7 +41,10 @@ struct landscape {
     ecs::world world;
     ecs::schedule schedule;
 
-    landscape() {
+    // solver: the auto ladder (DESIGN §1.5): every plant's rung chosen by lod/rung_solver.h from
+    // hand-built tables of the three mesh levels (timing only: the tables' values decide which
+    // rungs win, not how long choosing takes) under a budget that makes it mix them.
+    explicit landscape(bool solver = false) {
         species_library library;
         for (int s = 0; s < 2; ++s) {
             species_entry e;
@@ -86,7 +90,32 @@ struct landscape {
         world.set_resource(shadow_settings{});
         world.set_resource(cascade_set{});
         world.set_resource(draw_list{});
-        world.set_resource(lod_policy{});
+        lod_policy policy;
+        rung_budget budget;
+        if (solver) {
+            ladder l;
+            l.count = 3;
+            l.rungs = {representation::mesh_full, representation::mesh_reduced, representation::mesh_far};
+            l.below_px = {0.0f, 200.0f, 60.0f};
+            l.band = {0.0f, 0.15f, 0.15f};
+            policy.mode = lod_policy::kind::ladder;
+            policy.ladders = {l, l};
+            species_rung_tables tables;
+            const std::array<float, 3> triangles{6600.0f, 860.0f, 180.0f};
+            for (std::size_t r = 0; r < 3; ++r) {
+                rung_table t{l.rungs[r], {}, {}};
+                for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+                    const float px = k_rung_table_sizes_px[i] * k_rung_table_sizes_px[i];
+                    t.error[i] = px * 0.02f * float(r + 1);
+                    t.cost_us[i] = triangles[r] * 0.5f + px * 0.005f;
+                }
+                tables.rungs.push_back(t);
+            }
+            budget.tables = {tables, tables};
+            budget.plant_budget_us = 5e6;  // between every plant cheapest and every plant best
+        }
+        world.set_resource(std::move(policy));
+        world.set_resource(std::move(budget));
         world.set_resource(primitive_costs{});
         world.set_resource(tile_point_sets{});
         world.set_resource(tile_point_draws{});
@@ -98,13 +127,14 @@ struct landscape {
     }
 };
 
-landscape& shared_landscape() {
-    static landscape l;
-    return l;
+landscape& shared_landscape(bool solver) {
+    static landscape by_size(false);
+    static landscape by_budget(true);
+    return solver ? by_budget : by_size;
 }
 
-void frame_update(benchmark::State& state) {
-    landscape& l = shared_landscape();
+void run_frame_update(benchmark::State& state, bool solver) {
+    landscape& l = shared_landscape(solver);
     ecs::executor executor(int(state.range(0)));
     for (auto _ : state) {
         executor.run([&] { l.schedule.run(l.world, executor); });
@@ -118,8 +148,14 @@ void frame_update(benchmark::State& state) {
     state.counters["visible_reduced"] = double(draws.instances_by_representation[2]);
     state.counters["visible_far"] = double(draws.instances_by_representation[3]);
     for (const auto& [name, ms] : l.schedule.last_timings()) state.counters[std::string(name) + "_ms"] = ms;
+    if (solver) state.counters["lambda"] = l.world.resource<rung_budget>().lambda;
 }
+
+void frame_update(benchmark::State& state) { run_frame_update(state, false); }
+// Issue 21: the same frame with the budget solver choosing every plant's rung.
+void frame_update_auto_ladder(benchmark::State& state) { run_frame_update(state, true); }
 BENCHMARK(frame_update)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(frame_update_auto_ladder)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 }  // namespace
 }  // namespace sylva

@@ -18,22 +18,42 @@ std::size_t bucket_of(double lambda) {
 
 }  // namespace
 
-float interpolate_table(const std::array<float, k_rung_table_size_count>& table, float size_px) {
+namespace {
+
+// Where a size falls among the table sizes: between entry i - 1 and i at t (log-linear), or held
+// at an end (t = 0 at i = 0, or at the last entry).
+struct table_position {
+    std::size_t i = 0;
+    float t = 0.0f;
+};
+
+table_position position_of(float size_px) {
     const auto& sizes = k_rung_table_sizes_px;
-    if (!(size_px > sizes.front())) return table.front();
-    if (size_px >= sizes.back()) return table.back();
+    if (!(size_px > sizes.front())) return {0, 0.0f};
+    if (size_px >= sizes.back()) return {k_rung_table_size_count - 1, 0.0f};
     std::size_t i = 1;
     while (sizes[i] < size_px) ++i;
-    const float t = std::log(size_px / sizes[i - 1]) / std::log(sizes[i] / sizes[i - 1]);
-    return table[i - 1] + t * (table[i] - table[i - 1]);
+    return {i, std::log(size_px / sizes[i - 1]) / std::log(sizes[i] / sizes[i - 1])};
+}
+
+float at(const std::array<float, k_rung_table_size_count>& table, table_position p) {
+    if (p.t == 0.0f) return table[p.i];
+    return table[p.i - 1] + p.t * (table[p.i] - table[p.i - 1]);
+}
+
+}  // namespace
+
+float interpolate_table(const std::array<float, k_rung_table_size_count>& table, float size_px) {
+    return at(table, position_of(size_px));
 }
 
 rung_candidates candidates_at(const species_rung_tables& tables, float size_px) {
     rung_candidates c;
     c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
+    const table_position p = position_of(size_px);  // once for every rung
     for (std::size_t r = 0; r < c.count; ++r) {
-        c.error[r] = interpolate_table(tables.rungs[r].error, size_px);
-        c.cost_us[r] = interpolate_table(tables.rungs[r].cost_us, size_px);
+        c.error[r] = at(tables.rungs[r].error, p);
+        c.cost_us[r] = at(tables.rungs[r].cost_us, p);
     }
     return c;
 }
