@@ -13,6 +13,7 @@
 // farther one fades in over the first half and is drawn whole beyond: the two overlap, so the
 // plant never thins out in the middle of a transition, and neither is sorted or blended.
 #include "components/lod_state.h"
+#include "lod/ladder.h"
 #include "resources/scene_assets.h"
 
 namespace sylva {
@@ -21,13 +22,8 @@ namespace sylva {
 inline constexpr float k_cloud_band = 0.15f;
 
 // What a plant is drawn as at one distance: the primary representation whole, and during a band
-// a partner at partner_fade (0 none .. 1 whole).
-struct cloud_lod_choice {
-    representation primary = representation::none;
-    representation partner = representation::none;
-    float partner_fade = 0.0f;
-    bool operator==(const cloud_lod_choice&) const = default;
-};
+// a partner at partner_fade (0 none .. 1 whole); the same choice a ladder makes by size.
+using cloud_lod_choice = ladder_choice;
 
 // The cloud's switch distance for a species at scale 1 and lod_scale 1: cloud_distance_m, but
 // never so close to the far distance that the two bands overlap (a small plant with a short far

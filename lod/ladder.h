@@ -102,7 +102,8 @@ inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
 }
 
 // What a plant is drawn as at one projected size: the primary rung whole, and inside a band a
-// partner at partner_fade (0 none .. 1 whole). The same shape as cloud_lod_choice.
+// partner at partner_fade (0 none .. 1 whole). The billboard-cloud policy's choice by distance
+// is the same (lod/billboard_cloud_lod.h cloud_lod_choice).
 struct ladder_choice {
     representation primary = representation::none;
     representation partner = representation::none;

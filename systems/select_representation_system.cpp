@@ -110,9 +110,7 @@ void select_representation_system::run(ecs::system_context<select_representation
                                    cam.lod_scale * policy.ladder_size_scale;
                 choice = choose_rung(policy.ladders[static_cast<std::size_t>(p.species)], size);
             } else if (policy.mode == lod_policy::kind::billboard_clouds) {
-                const cloud_lod_choice c =
-                    choose_cloud_lod(species, policy.cloud_distance_m, distance, t.scale, cam.lod_scale);
-                choice = {c.primary, c.partner, c.partner_fade};
+                choice = choose_cloud_lod(species, policy.cloud_distance_m, distance, t.scale, cam.lod_scale);
             } else {
                 lod.current = choose_representation(policy, species, distance, t.scale, cam.lod_scale);
                 return;

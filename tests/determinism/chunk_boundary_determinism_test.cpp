@@ -240,10 +240,9 @@ TEST(chunk_boundary_determinism, sh_lit_points_and_lines) {
     EXPECT_TRUE(one.every_species_sh);
 }
 
-// DESIGN §1.5: every rung of a ladder in one frame, with bands, split spruces fading their
-// cells' points in and out as partners. Switch sizes for the scene's 90-pixel-high frames.
-TEST(chunk_boundary_determinism, ladder_with_every_handover) {
-    SYLVA_REQUIRE_GL();
+// Full mesh, billboard cloud, points and lines, crossed billboard: every handover between the
+// papers' rungs, with switch sizes for the scene's 90-pixel-high frames, for both species.
+player_options with_every_handover() {
     player_options options = with_policy(lod_policy::kind::ladder);
     ladder l;
     l.count = 4;
@@ -252,6 +251,14 @@ TEST(chunk_boundary_determinism, ladder_with_every_handover) {
     l.below_px = {0.0f, 40.0f, 16.0f, 6.0f};
     l.band = {0.0f, 0.15f, 0.15f, 0.15f};
     options.policy.ladders = {l, l};
+    return options;
+}
+
+// DESIGN §1.5: every rung of a ladder in one frame, with bands, split spruces fading their
+// cells' points in and out as partners.
+TEST(chunk_boundary_determinism, ladder_with_every_handover) {
+    SYLVA_REQUIRE_GL();
+    const player_options options = with_every_handover();
     expected_loops expected;
     expected.update_point_prefix = 2;
     expected.build_draw_list = 5;
@@ -267,14 +274,7 @@ TEST(chunk_boundary_determinism, ladder_with_every_handover) {
 // and all-best so that the solver has to mix rungs.
 TEST(chunk_boundary_determinism, auto_ladder_under_a_budget) {
     SYLVA_REQUIRE_GL();
-    player_options options = with_policy(lod_policy::kind::ladder);
-    ladder l;
-    l.count = 4;
-    l.rungs = {representation::mesh_full, representation::billboard_cloud, representation::points,
-               representation::crossed_billboard};
-    l.below_px = {0.0f, 40.0f, 16.0f, 6.0f};
-    l.band = {0.0f, 0.15f, 0.15f, 0.15f};
-    options.policy.ladders = {l, l};
+    player_options options = with_every_handover();
     options.plant_budget_ms = 20.0;
     expected_loops expected;
     expected.select_representation = 2;  // the histograms, then the choices
