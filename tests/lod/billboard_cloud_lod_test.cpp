@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_choice.h"
+
 #include <cmath>
 
 #include "models/bake/billboard_cloud.h"
@@ -20,11 +22,7 @@ species_entry oak() {
     return s;
 }
 
-void expect_choice(const cloud_lod_choice& got, representation primary, representation partner, float fade) {
-    EXPECT_EQ(got.primary, primary);
-    EXPECT_EQ(got.partner, partner);
-    EXPECT_NEAR(got.partner_fade, fade, 1e-4f);
-}
+using testing::expect_choice;
 
 TEST(billboard_cloud_lod, polygons_near_the_cloud_from_30_m_crossed_billboards_beyond_the_far_distance) {
     const species_entry s = oak();

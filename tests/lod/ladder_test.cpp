@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_choice.h"
+
 #include <cmath>
 
 namespace sylva {
@@ -20,11 +22,7 @@ ladder three_rungs() {
     return l;
 }
 
-void expect_choice(const ladder_choice& got, representation primary, representation partner, float fade) {
-    EXPECT_EQ(got.primary, primary);
-    EXPECT_EQ(got.partner, partner);
-    EXPECT_NEAR(got.partner_fade, fade, 1e-5f);
-}
+using testing::expect_choice;
 
 TEST(ladder, each_rung_holds_between_its_bands) {
     const ladder l = three_rungs();
