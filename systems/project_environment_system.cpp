@@ -38,12 +38,8 @@ sh9_rgb turned(const sh9_rgb& coefficients, float delta_azimuth_deg) {
 sh9_rgb analytic_sky_radiance(environment& env, const sun& light) {
     sky_projection_cache& cache = env.sky_cache;
     if (!cache_matches(cache, env, light)) {
-        sky_model sky;
-        sky.sun_direction =
-            sun_direction_from_angles(light.elevation_deg, env.reference_azimuth_deg);
-        sky.turbidity = env.turbidity;
-        sky.sky_intensity = env.sky_intensity;
-        sky.ground_albedo = env.ground_albedo;
+        const sky_model sky =
+            analytic_sky(env, sun_direction_from_angles(light.elevation_deg, env.reference_azimuth_deg));
         cache = {true,
                  light.elevation_deg,
                  env.turbidity,
@@ -69,6 +65,15 @@ sh9_rgb map_radiance(const environment& env, const sun& light) {
 }
 
 }  // namespace
+
+sky_model analytic_sky(const environment& env, glm::vec3 sun_direction) {
+    sky_model sky;
+    sky.sun_direction = sun_direction;
+    sky.turbidity = env.turbidity;
+    sky.sky_intensity = env.sky_intensity;
+    sky.ground_albedo = env.ground_albedo;
+    return sky;
+}
 
 float environment_map_turn_deg(const environment& env, const sun& light) {
     return env.map_rotation_deg + (light.azimuth_deg - env.reference_azimuth_deg);

@@ -7,6 +7,7 @@
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"
+#include "lighting/sky_model.h"
 
 namespace sylva {
 
@@ -14,6 +15,10 @@ namespace sylva {
 // env.sky_cache from `light`'s elevation and azimuth (its direction is derived from them by
 // update_sun). Ignores sky_revision.
 void project_environment(environment& env, const sun& light);
+
+// The Preetham sky of `env`'s settings with the sun in `sun_direction` (what project_environment
+// integrates, and what the renderer's sky background shows).
+sky_model analytic_sky(const environment& env, glm::vec3 sun_direction);
 
 // How far the environment map is turned about the vertical, in degrees of azimuth (clockwise
 // from above): the scenario's map_rotation_deg plus the sun's azimuth change since the first

@@ -61,15 +61,6 @@ bool same_sky(const sky_model& a, const sky_model& b) {
            a.sun_irradiance == b.sun_irradiance;
 }
 
-sky_model sky_of(const environment& environment_sky, const sun& sun_light) {
-    sky_model sky;
-    sky.sun_direction = sun_light.direction;
-    sky.turbidity = environment_sky.turbidity;
-    sky.sky_intensity = environment_sky.sky_intensity;
-    sky.ground_albedo = environment_sky.ground_albedo;
-    return sky;
-}
-
 }  // namespace
 
 sky_texture::sky_texture(const scene_assets& assets)
@@ -90,7 +81,7 @@ std::uint64_t sky_texture::update(const environment& sky, const sun& sun_light) 
     // Keyed on the sky's inputs, not on environment::sky_revision: revisions count changes of
     // one environment, and two environments drawn by one renderer (the primitive-cost
     // calibration's and a scene's) can share a number while their skies differ.
-    const sky_model model = sky_of(sky, sun_light);
+    const sky_model model = analytic_sky(sky, sun_light.direction);
     if (m_texture && m_sky_drawn && same_sky(*m_sky_drawn, model)) return 0;
     fill_sky_radiance_grid(model, m_grid);
     m_sky_drawn = model;

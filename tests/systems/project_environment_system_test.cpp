@@ -21,12 +21,7 @@ sun sun_at(float elevation_deg, float azimuth_deg) {
 }
 
 sh9_rgb direct_projection(const environment& env, const sun& light) {
-    sky_model sky;
-    sky.sun_direction = light.direction;
-    sky.turbidity = env.turbidity;
-    sky.sky_intensity = env.sky_intensity;
-    sky.ground_albedo = env.ground_albedo;
-    return project_sky(sky);
+    return project_sky(analytic_sky(env, light.direction));
 }
 
 float largest_coefficient(const std::array<glm::vec3, 9>& c) {
