@@ -22,8 +22,7 @@ ladder_choice choose_rung(const ladder& l, float size_px) {
 }
 
 float projected_size_px(float radius_m, float distance_m, float fov_y, float viewport_height_px) {
-    const double pixel = image_plane_units(1.0, double(fov_y), double(viewport_height_px));
-    return float(2.0 * double(radius_m) / (double(distance_m) * pixel));
+    return projected_size_px(radius_m, distance_m, image_plane_units(1.0, double(fov_y), double(viewport_height_px)));
 }
 
 ladder papers_ladder() {

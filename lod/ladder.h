@@ -118,6 +118,10 @@ ladder_choice choose_rung(const ladder& l, float size_px);
 // diameter on the image plane (2·radius / distance) over a pixel's size there
 // (2·tan(fov_y / 2) / viewport height; lod/point_line_lod.h image_plane_units).
 float projected_size_px(float radius_m, float distance_m, float fov_y, float viewport_height_px);
+// The same with the pixel's size on the image plane already known (once per frame, not per plant).
+inline float projected_size_px(float radius_m, float distance_m, double pixel_units) {
+    return float(2.0 * double(radius_m) / (double(distance_m) * pixel_units));
+}
 
 // The ladder the papers draw when a scenario names none (docs/representations/ladder.md): the
 // full mesh, the reduced mesh, the billboard cloud (Behrendt 2005 §2.3: polygonal "closer than

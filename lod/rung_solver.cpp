@@ -16,10 +16,6 @@ std::size_t bucket_of(double lambda) {
     return std::size_t(std::clamp(b, 0.0, double(k_lambda_buckets)));
 }
 
-}  // namespace
-
-namespace {
-
 // Where a size falls among the table sizes: between entry i - 1 and i at t (log-linear), or held
 // at an end (t = 0 at i = 0, or at the last entry).
 struct table_position {

@@ -5,6 +5,7 @@
 #include "ecs/parallel.h"
 #include "lod/billboard_cloud_lod.h"
 #include "lod/ladder.h"
+#include "lod/point_line_lod.h"
 
 namespace sylva {
 
@@ -27,10 +28,10 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const auto& library = ctx.resource<species_library>().species;
     rung_budget& budget = ctx.resource_mut<rung_budget>();
     auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
+    const double pixel = image_plane_units(1.0, double(cam.fov_y), double(cam.viewport_height_px));
     const auto size_of = [&](const world_transform& t, const plant_instance& p) {
         const float distance = float(glm::length(t.position - cam.position));
-        return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, cam.fov_y,
-                                 cam.viewport_height_px) *
+        return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, pixel) *
                cam.lod_scale;
     };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
@@ -89,6 +90,7 @@ void select_representation_system::run(ecs::system_context<select_representation
     }
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
+    const double pixel = image_plane_units(1.0, double(cam.fov_y), double(cam.viewport_height_px));
     auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
@@ -105,8 +107,7 @@ void select_representation_system::run(ecs::system_context<select_representation
             if (policy.mode == lod_policy::kind::ladder) {
                 // DESIGN §1.5: the rung by projected size; lod_scale stretches it as it does
                 // every switch distance (the reference's 1e6 keeps every plant on its first rung).
-                const float size = projected_size_px(species.bounding_radius * t.scale, distance, cam.fov_y,
-                                                     cam.viewport_height_px) *
+                const float size = projected_size_px(species.bounding_radius * t.scale, distance, pixel) *
                                    cam.lod_scale * policy.ladder_size_scale;
                 choice = choose_rung(policy.ladders[static_cast<std::size_t>(p.species)], size);
             } else if (policy.mode == lod_policy::kind::billboard_clouds) {
