@@ -97,6 +97,10 @@ scenario load_with_overrides(const scenario_options& options) {
         s.lod.primitive_budget = 0.0;
     }
     if (options.plant_budget_ms) s.lod.plant_budget_ms = *options.plant_budget_ms;
+    if (s.lod.plant_budget_ms > 0.0 && s.lod.representation != "ladder")
+        throw scenario_error(s.source, "/lod/plant_budget_ms", std::to_string(s.lod.plant_budget_ms),
+                             "--plant-budget-ms chooses the rungs of a ladder, but the scenario draws " +
+                                 s.lod.representation + ": add --representation ladder");
     return s;
 }
 

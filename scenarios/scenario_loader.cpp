@@ -351,6 +351,9 @@ const field_table<lod_settings>& lod_fields() {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")
                                               ->fail("give either primitive_budget or target_frame_ms, not both");
+                                      if (s.plant_budget_ms > 0.0 && s.representation != "ladder")
+                                          n.find("plant_budget_ms")
+                                              ->fail("chooses the rungs of a ladder: it needs representation \"ladder\"");
                                   });
     return table;
 }

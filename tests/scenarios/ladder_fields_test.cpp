@@ -87,5 +87,13 @@ TEST(ladder_fields, bad_ladders_name_the_rung_and_the_field) {
                  "/lod/ladder/1/fade", "unknown");
 }
 
+TEST(ladder_fields, a_plant_budget_needs_a_ladder_to_choose_from) {
+    json j = with_ladder(k_three);
+    j["lod"]["plant_budget_ms"] = 40;
+    EXPECT_EQ(load(j).lod.plant_budget_ms, 40.0);
+    j["lod"]["representation"] = "mesh_levels";
+    expect_error(j, "/lod/plant_budget_ms", "chooses the rungs of a ladder");
+}
+
 }  // namespace
 }  // namespace sylva
