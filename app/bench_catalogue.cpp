@@ -250,10 +250,12 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
 
 std::optional<bench_configuration_spec> command_line_configuration(const scenario& s,
                                                                    const scenario_options& o) {
-    const bool points_options =
-        o.sample_distance_px || o.splats || o.primitive_budget || o.target_frame_ms;
-    if (!o.representation && !points_options && !o.plant_budget_ms) return std::nullopt;
     const std::string& representation = s.lod.representation;
+    // With a ladder a frame-time target drives the auto ladder's budget, not d'.
+    const bool points_options = o.sample_distance_px || o.splats || o.primitive_budget ||
+                                (o.target_frame_ms && representation != "ladder");
+    if (!o.representation && !points_options && !o.plant_budget_ms && !o.max_error && !o.target_frame_ms)
+        return std::nullopt;
     if (points_options && representation != "points_lines") {
         const char* option = o.sample_distance_px ? "--sample-distance"
                              : o.splats           ? "--splats"
@@ -267,7 +269,25 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
     if (representation == "mesh_levels") {
         c = mesh_lod(1.0);
     } else if (representation == "ladder") {
-        c = s.lod.plant_budget_ms > 0.0 ? auto_ladder(s.lod.plant_budget_ms) : ladder_configuration();
+        const lod_settings& lod = s.lod;
+        c = lod.plant_budget_ms > 0.0 ? auto_ladder(lod.plant_budget_ms) : ladder_configuration();
+        std::ostringstream value;
+        if (lod.max_error > 0.0) {
+            value << lod.max_error;
+            c.name = "auto_error_" + value.str();
+            c.family = "auto";
+            c.description = "each species' ladder, every plant on the cheapest rung whose measured error per plant "
+                            "pixel is at most " + value.str();
+            c.options.max_error = lod.max_error;
+        } else if (lod.target_frame_ms > 0.0) {
+            value << lod.target_frame_ms;
+            c.name = "auto_target_" + value.str() + "ms";
+            c.family = "auto";
+            c.description = "each species' ladder chosen by the budget solver, the plant budget adapted every frame "
+                            "to a GPU frame time of " + value.str() + " ms (timing-dependent: its errors vary from "
+                            "run to run)";
+            c.options.target_frame_ms = lod.target_frame_ms;
+        }
     } else if (representation == "billboard_clouds") {
         c = billboard_clouds(s.lod.lighting, s.lod.cloud_distance_m);
         c.options.lighting.clear();  // the scenario's own lighting, as `play` draws it

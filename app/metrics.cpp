@@ -76,6 +76,7 @@ nlohmann::json frame_json(const frame_record& f) {
             {"aggregated_plants", f.aggregated_plants},
             {"ladder_lambda", f.ladder_lambda},
             {"predicted_plant_ms", f.predicted_plant_ms},
+            {"plant_budget_ms", f.plant_budget_ms},
             {"image_hash", f.image_hash},
             {"state_hash", f.state_hash}};
 }

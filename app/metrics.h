@@ -44,6 +44,7 @@ struct frame_record {
     // the plants' cost it predicted, in ms; both 0 without measured rung tables.
     double ladder_lambda = 0.0;
     double predicted_plant_ms = 0.0;
+    double plant_budget_ms = 0.0;  // what the solver held them to (adapted under a frame-time target)
     std::uint64_t image_hash = 0;  // FNV-1a of the captured RGBA8 pixels (0 when not captured)
     std::uint64_t state_hash = 0;  // FNV-1a of the frame's component state and draw list
 };

@@ -224,6 +224,14 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
         const double grow = double(k_rung_table_sizes_px[i]) / double(k_rung_table_sizes_px[last_whole]);
         return i > last_whole ? grow * grow : 1.0;
     };
+    // The measuring scene's shadows reach only so far: at a size no rung cast (a plant further
+    // than its shadow range), a plant that does cast is costed as at the next size that did.
+    std::array<std::size_t, k_rung_table_size_count> shadow_size{};
+    for (std::size_t i = k_rung_table_size_count; i-- > 0;) {
+        const bool cast = std::any_of(m.rungs.begin(), m.rungs.end(),
+                                      [&](const rung_measurement& x) { return x.shadow_triangles[i] > 0.0f; });
+        shadow_size[i] = cast || i + 1 == k_rung_table_size_count ? i : shadow_size[i + 1];
+    }
     species_rung_tables out;
     for (std::size_t r = 0; r < ladder.count; ++r) {
         const auto it = std::find_if(m.rungs.begin(), m.rungs.end(),
@@ -235,8 +243,10 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
         t.rung = it->rung;
         for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
             const std::size_t whole = std::min(i, last_whole);
-            t.error[i] = float(double(it->error_per_pixel[i]) * double(it->plant_pixels[whole]) * beyond(i));
-            t.cost_us[i] = float((double(it->triangles[i]) + double(it->shadow_triangles[i])) * triangle_us +
+            out.plant_pixels[i] = float(double(it->plant_pixels[whole]) * beyond(i));  // the same for every rung
+            t.error[i] = float(double(it->error_per_pixel[i]) * double(out.plant_pixels[i]));
+            t.shadow_cost_us[i] = float(double(it->shadow_triangles[shadow_size[i]]) * triangle_us);
+            t.cost_us[i] = float(double(it->triangles[i]) * triangle_us +
                                  double(it->points[i]) * point_us + double(it->lines[i]) * line_us +
                                  double(it->drawn_pixels[whole]) * beyond(i) * pixel_us);
         }

@@ -62,8 +62,10 @@ std::vector<species_rung_measurements> measure_rung_tables(
 // What the solver chooses from: for the rungs of `ladder` (in its order; each must have been
 // measured), the error summed over the plant's pixels (error per pixel x the pixels the plant
 // covers, those beyond the view grown with the size's square) and the cost in microseconds of
-// what the rung drew: triangles (view and shadow) and covered pixels on the device's triangle
-// path, points and lines at quality `q` on theirs (lod/primitive_cost_model.h). Without a
+// what the rung drew in the view (triangles and covered pixels on the device's triangle path,
+// points and lines at quality `q` on theirs, lod/primitive_cost_model.h) and apart from it what
+// its shadow cost (shadow triangles; at a size where the measuring scene cast no shadow, as at
+// the next size where it did), so a plant only casting pays only its shadow. Without a
 // calibration (`model` empty) a triangle costs 1 µs (about what llvmpipe draws, 1 M a second),
 // points and lines the paper's share of it (Deussen 2002 §4.1), pixels nothing.
 species_rung_tables solver_tables(const species_rung_measurements& m, const ladder& ladder,

@@ -1,6 +1,8 @@
 #include "app/scenario_options.h"
 
 #include <filesystem>
+#include <string>
+#include <tuple>
 #include <spdlog/spdlog.h>
 
 #include "scenarios/scenario_loader.h"
@@ -59,8 +61,9 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
         ->check(CLI::Range(0.0, 1e9));
     command
         .add_option("--target-frame-ms", options.target_frame_ms,
-                    "Adapt d' every frame to hold this GPU frame time (points_lines; not deterministic; "
-                    "overrides lod.target_frame_ms)")
+                    "Hold this GPU frame time (not deterministic; overrides lod.target_frame_ms): with points_lines "
+                    "by adapting d' every frame, with --representation ladder by adapting the auto ladder's plant "
+                    "budget every frame")
         ->check(CLI::Range(0.0, 1e5));
     command
         .add_option("--plant-budget-ms", options.plant_budget_ms,
@@ -68,6 +71,11 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "species and rung (once, kept in the bake cache) so that the plants' predicted cost stays "
                     "within this many ms (the auto ladder; overrides lod.plant_budget_ms; 0: by projected size)")
         ->check(CLI::Range(0.0, 1e5));
+    command
+        .add_option("--max-error", options.max_error,
+                    "With --representation ladder, instead of a budget: draw every plant on the cheapest rung whose "
+                    "measured mean colour error per plant pixel (0..1) is at most this (overrides lod.max_error)")
+        ->check(CLI::Range(0.0, 1.0));
 }
 
 scenario load_scenario_file_or_bundled(const std::string& path) {
@@ -92,15 +100,32 @@ scenario load_with_overrides(const scenario_options& options) {
         s.lod.primitive_budget = *options.primitive_budget;
         s.lod.target_frame_ms = 0.0;
     }
+    // A budget or a target on the command line replaces the file's threshold, and the reverse.
     if (options.target_frame_ms) {
         s.lod.target_frame_ms = *options.target_frame_ms;
         s.lod.primitive_budget = 0.0;
+        s.lod.max_error = 0.0;
     }
-    if (options.plant_budget_ms) s.lod.plant_budget_ms = *options.plant_budget_ms;
-    if (s.lod.plant_budget_ms > 0.0 && s.lod.representation != "ladder")
-        throw scenario_error(s.source, "/lod/plant_budget_ms", std::to_string(s.lod.plant_budget_ms),
-                             "--plant-budget-ms chooses the rungs of a ladder, but the scenario draws " +
-                                 s.lod.representation + ": add --representation ladder");
+    if (options.plant_budget_ms) {
+        s.lod.plant_budget_ms = *options.plant_budget_ms;
+        s.lod.max_error = 0.0;
+    }
+    if (options.max_error) {
+        s.lod.max_error = *options.max_error;
+        s.lod.plant_budget_ms = 0.0;
+        if (s.lod.representation == "ladder") s.lod.target_frame_ms = 0.0;
+        if (options.plant_budget_ms || (options.target_frame_ms && s.lod.representation == "ladder"))
+            throw scenario_error(s.source, "/lod/max_error", std::to_string(s.lod.max_error),
+                                 "--max-error chooses the rungs without a budget: give it or "
+                                 "--plant-budget-ms/--target-frame-ms, not both");
+    }
+    for (const auto& [field, option, value] :
+         {std::tuple{"plant_budget_ms", "--plant-budget-ms", s.lod.plant_budget_ms},
+          std::tuple{"max_error", "--max-error", s.lod.max_error}})
+        if (value > 0.0 && s.lod.representation != "ladder")
+            throw scenario_error(s.source, std::string("/lod/") + field, std::to_string(value),
+                                 std::string(option) + " chooses the rungs of a ladder, but the scenario draws " +
+                                     s.lod.representation + ": add --representation ladder");
     return s;
 }
 

@@ -23,6 +23,7 @@ struct scenario_options {
     std::optional<double> primitive_budget;
     std::optional<double> target_frame_ms;
     std::optional<double> plant_budget_ms;
+    std::optional<double> max_error;
 };
 
 void add_scenario_options(CLI::App& command, scenario_options& options);

@@ -19,6 +19,7 @@
 #include "components/octree_cell.h"
 #include "components/point_prefix.h"
 #include "components/tile_visibility.h"
+#include "systems/adapt_plant_budget_system.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "systems/aggregate_eco_tiles_system.h"
 #include "systems/build_draw_list_system.h"
@@ -54,6 +55,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<update_camera_system>();
     schedule.add<update_sun_system>();
     schedule.add<adapt_sample_distance_system>();
+    schedule.add<adapt_plant_budget_system>();
     schedule.add<cull_system>();
     schedule.add<select_representation_system>();
     schedule.add<aggregate_eco_tiles_system>();
@@ -269,6 +271,7 @@ void scenario_player::step(frame_record& record) {
     record.aggregated_plants = m_world.resource<tile_point_draws>().plants;
     record.ladder_lambda = m_world.resource<rung_budget>().lambda;
     record.predicted_plant_ms = m_world.resource<rung_budget>().predicted_us / 1000.0;
+    record.plant_budget_ms = m_world.resource<rung_budget>().plant_budget_us / 1000.0;
     record.image_hash = 0;
     record.state_hash = state_hash();
     ++m_frame;
@@ -307,10 +310,20 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
 rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_options& options,
                                         render::gl_context& context, bake_cache* cache) {
     rung_budget budget;
-    const double budget_ms = options.plant_budget_ms > 0.0 ? options.plant_budget_ms
-                             : options.scenario_lod      ? m_scenario.lod.plant_budget_ms
-                                                         : 0.0;
-    if (budget_ms <= 0.0 || policy.mode != lod_policy::kind::ladder) return budget;
+    const bool own = options.plant_budget_ms > 0.0 || options.target_frame_ms > 0.0 || options.max_error > 0.0;
+    const auto choose = [&](double plant_budget_ms, double target_frame_ms, double max_error) {
+        budget.max_error = max_error;
+        budget.target_frame_ms = target_frame_ms;
+        // Under a frame-time target alone the budget climbs from every plant on its cheapest rung
+        // (systems/adapt_plant_budget_system.h).
+        budget.plant_budget_us = plant_budget_ms * 1000.0;
+    };
+    if (own)
+        choose(options.plant_budget_ms, options.target_frame_ms, options.max_error);
+    else if (options.scenario_lod)
+        choose(m_scenario.lod.plant_budget_ms, m_scenario.lod.target_frame_ms, m_scenario.lod.max_error);
+    const bool chosen_by_tables = budget.plant_budget_us > 0.0 || budget.max_error > 0.0 || budget.target_frame_ms > 0.0;
+    if (!chosen_by_tables || policy.mode != lod_policy::kind::ladder) return {};
     std::vector<representation> rungs;
     for (const ladder& l : policy.ladders)
         for (std::size_t r = 0; r < l.count; ++r)
@@ -326,7 +339,6 @@ rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_
                     .model;
     for (std::size_t i = 0; i < measured.size(); ++i)
         budget.tables.push_back(solver_tables(measured[i], policy.ladders[i], model, policy.points));
-    budget.plant_budget_us = budget_ms * 1000.0;
     return budget;
 }
 

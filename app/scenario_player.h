@@ -60,6 +60,12 @@ struct player_options {
     // resources/rung_budget.h); 0: with scenario_lod the scenario's lod.plant_budget_ms, else
     // the ladders switch by projected size.
     double plant_budget_ms = 0.0;
+    // The same, with the budget adapted every frame to hold this GPU frame time (from
+    // plant_budget_ms, or from every plant cheapest; not deterministic), or instead of a budget the cheapest
+    // rung within this mean colour error per plant pixel. Any of the three set here replaces the
+    // scenario's.
+    double target_frame_ms = 0.0;
+    double max_error = 0.0;
 };
 
 class scenario_player {

@@ -43,15 +43,33 @@ float interpolate_table(const std::array<float, k_rung_table_size_count>& table,
     return at(table, position_of(size_px));
 }
 
-rung_candidates candidates_at(const species_rung_tables& tables, float size_px) {
+rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen, bool casts) {
     rung_candidates c;
     c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
     const table_position p = position_of(size_px);  // once for every rung
     for (std::size_t r = 0; r < c.count; ++r) {
-        c.error[r] = at(tables.rungs[r].error, p);
-        c.cost_us[r] = at(tables.rungs[r].cost_us, p);
+        const rung_table& t = tables.rungs[r];
+        c.error[r] = seen ? at(t.error, p) : 0.0f;
+        c.cost_us[r] = (seen ? at(t.cost_us, p) : 0.0f) + (casts ? at(t.shadow_cost_us, p) : 0.0f);
     }
+    c.plant_pixels = at(tables.plant_pixels, p);
     return c;
+}
+
+std::uint8_t cheapest_within(const rung_candidates& c, double max_error, std::uint8_t previous, float hysteresis) {
+    std::uint8_t best = k_max_rungs;
+    for (std::uint8_t r = 0; r < c.count; ++r) {
+        if (!(double(c.error[r]) <= max_error)) continue;
+        if (best == k_max_rungs || c.cost_us[r] < c.cost_us[best] ||
+            (c.cost_us[r] == c.cost_us[best] && c.error[r] < c.error[best]))
+            best = r;
+    }
+    if (best == k_max_rungs) return choose_at(c, 0.0, previous, hysteresis);  // none is good enough
+    if (previous < c.count && previous != best &&
+        double(c.error[previous]) <= (1.0 + double(hysteresis)) * max_error &&
+        double(c.cost_us[previous]) <= (1.0 + double(hysteresis)) * double(c.cost_us[best]))
+        return previous;
+    return best;
 }
 
 std::uint8_t choose_at(const rung_candidates& c, double lambda, std::uint8_t previous, float hysteresis) {
@@ -66,7 +84,8 @@ std::uint8_t choose_at(const rung_candidates& c, double lambda, std::uint8_t pre
     }
     if (previous < c.count && previous != best) {
         const double kept = double(c.error[previous]) + lambda * double(c.cost_us[previous]);
-        if (kept - best_value <= double(hysteresis) * std::abs(kept)) return previous;
+        const double cost_gap = std::abs(double(c.cost_us[previous]) - double(c.cost_us[best]));
+        if (kept - best_value <= double(hysteresis) * lambda * cost_gap) return previous;
     }
     return best;
 }
@@ -106,14 +125,17 @@ void lambda_histogram::merge(const lambda_histogram& other) {
     for (std::size_t b = 0; b < saving_us.size(); ++b) saving_us[b] += other.saving_us[b];
 }
 
-double solve_lambda(const lambda_histogram& h, double budget_us) {
+lambda_choice solve_lambda(const lambda_histogram& h, double budget_us) {
     double cost = h.cost_at_zero_us;
-    if (cost <= budget_us) return 0.0;
+    if (cost <= budget_us) return {};
     for (std::size_t b = 0; b < k_lambda_buckets; ++b) {
+        const double before = cost;
         cost -= h.saving_us[b];
-        if (cost <= budget_us) return lambda_bucket_edge(b);
+        if (cost <= budget_us)
+            return {b == 0 ? 0.0 : lambda_bucket_edge(b - 1), lambda_bucket_edge(b),
+                    std::clamp((before - budget_us) / h.saving_us[b], 0.0, 1.0)};
     }
-    return k_lambda_max;
+    return {k_lambda_max, k_lambda_max, 1.0};
 }
 
 }  // namespace sylva

@@ -3,6 +3,7 @@
 // rung tables (app/rung_tables.h turned into error and cost by the device's costs), the budget
 // the plants' predicted cost must hold, and what select_representation found this frame.
 // Empty tables: the ladders switch by projected size alone (lod/ladder.h).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,16 @@ namespace sylva {
 struct rung_budget {
     std::vector<species_rung_tables> tables;  // by species, each in its ladder's order
     double plant_budget_us = 0.0;             // predicted cost of every plant drawn, per frame
+    // Above 0, instead of a budget: each plant takes the cheapest rung whose mean colour error
+    // per plant pixel (of 1, as the tables measure it) is at most this (lod/rung_solver.h
+    // cheapest_within).
+    double max_error = 0.0;
+    // Above 0: plant_budget_us is adapted every frame so that the GPU frame takes this long
+    // (systems/adapt_plant_budget_system.h; not deterministic).
+    double target_frame_ms = 0.0;
+    // The controller's last point (budget, GPU ms), for its secant.
+    double controller_budget_us = 0.0;
+    double controller_ms = 0.0;
     float hysteresis = 0.05f;                 // lod/rung_solver.h choose_at
     // A plant that changes rung keeps drawing the old one as its partner, dissolving over this
     // many frames (the new rung is whole at once, so the plant never thins).
@@ -20,9 +31,14 @@ struct rung_budget {
 
     // Written by select_representation each frame.
     double lambda = 0.0;
-    double predicted_us = 0.0;
+    double predicted_us = 0.0;  // the rungs chosen (view and shadow)
+    double partners_us = 0.0;   // the old rungs still dissolving (view only)
+    // What a budget could change this frame: the predicted cost with every plant on its
+    // least-error rung, and with every plant on its cheapest (the controller stays between).
+    double most_useful_us = 0.0;
+    double least_possible_us = 0.0;
     std::vector<lambda_histogram> histograms;  // per chunk, scratch kept warm
-    std::vector<double> costs;                 // per chunk, scratch kept warm
+    std::vector<std::array<double, 2>> costs;  // per chunk {chosen, partners}, scratch kept warm
 
     bool active() const { return !tables.empty(); }
 };

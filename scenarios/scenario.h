@@ -151,7 +151,11 @@
 //                                       0: d' stays fixed
 //     target_frame_ms    number  0      0 .. 100000; the same for a GPU frame time (not
 //                                       deterministic: for walkthroughs); not with
-//                                       primitive_budget
+//                                       primitive_budget. With representation "ladder" it
+//                                       drives the auto ladder instead: the plants' budget
+//                                       starts at plant_budget_ms (0: every plant on its
+//                                       cheapest rung) and is adapted each frame to hold this
+//                                       GPU time
 //     cloud_distance_m   number  30     0.1 .. 100000; billboard_clouds: nearer than this (times
 //                                       plant scale and lod_scale) plants are polygonal (the
 //                                       paper's "about 30 m"); capped per species at 0.74 x
@@ -175,6 +179,11 @@
 //                                       and rung (error against the full plant, and cost), so
 //                                       that the plants' predicted cost stays within this many
 //                                       ms (the auto ladder); 0: rungs switch by projected size
+//     max_error          number  0      0 .. 1; with representation "ladder", instead of a
+//                                       budget: every plant on the cheapest rung whose mean
+//                                       colour error per plant pixel (of 1, in the same tables)
+//                                       is at most this; not with plant_budget_ms or
+//                                       target_frame_ms
 //     ladder             array   none   1 .. 8 rungs, nearest first, for representation
 //                                       "ladder"; none: the papers' ladder (lod/ladder.h
 //                                       papers_ladder). Each {
@@ -356,6 +365,7 @@ struct lod_settings {
     bool sh_interreflection = false;
     std::vector<ladder_step_settings> ladder;  // empty: the papers' ladder (lod/ladder.h)
     double plant_budget_ms = 0.0;  // ladder: rungs chosen by measured tables within this cost
+    double max_error = 0.0;        // ladder: the cheapest rung within this error per plant pixel
     bool operator==(const lod_settings&) const = default;
 };
 

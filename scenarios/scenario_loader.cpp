@@ -347,13 +347,21 @@ const field_table<lod_settings>& lod_fields() {
                                   .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
                                        [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
                                   .number("plant_budget_ms", &t::plant_budget_ms, {0.0, 1e5})
+                                  .number("max_error", &t::max_error, {0.0, 1.0})
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")
                                               ->fail("give either primitive_budget or target_frame_ms, not both");
+                                      const char* const needs_ladder =
+                                          "chooses the rungs of a ladder: it needs representation \"ladder\"";
                                       if (s.plant_budget_ms > 0.0 && s.representation != "ladder")
-                                          n.find("plant_budget_ms")
-                                              ->fail("chooses the rungs of a ladder: it needs representation \"ladder\"");
+                                          n.find("plant_budget_ms")->fail(needs_ladder);
+                                      if (s.max_error > 0.0 && s.representation != "ladder")
+                                          n.find("max_error")->fail(needs_ladder);
+                                      if (s.max_error > 0.0 && (s.plant_budget_ms > 0.0 || s.target_frame_ms > 0.0))
+                                          n.find("max_error")
+                                              ->fail("an error threshold chooses the rungs without a budget: give "
+                                                     "max_error or plant_budget_ms/target_frame_ms, not both");
                                   });
     return table;
 }

@@ -11,6 +11,10 @@ namespace sylva {
 
 namespace {
 
+// The part number of a plant's dither for the budget's shared bucket (lod/rung_solver.h
+// lambda_choice), apart from the dithers of its point and line counts.
+constexpr std::uint32_t k_lambda_dither_part = 0x4c414d42;  // "LAMB"
+
 // The rung index of `r` in a species' tables, or k_max_rungs when it has none.
 std::uint8_t rung_index(const species_rung_tables& tables, representation r) {
     for (std::size_t i = 0; i < tables.rungs.size(); ++i)
@@ -19,10 +23,11 @@ std::uint8_t rung_index(const species_rung_tables& tables, representation r) {
 }
 
 // DESIGN §1.5 `auto`: every plant drawn (seen or casting) on the rung the budget solver picks
-// (lod/rung_solver.h). Two passes over the plants: each chunk's histogram of cost savings over
-// λ, merged in chunk order; then each plant's choice at λ, with hysteresis, and its predicted
-// cost summed per chunk. A plant whose rung changed keeps the old one as a partner dissolving
-// over fade_frames frames.
+// (lod/rung_solver.h). Under a budget, two passes over the plants: each chunk's histogram of
+// cost savings over λ, merged in chunk order; then each plant's choice at λ, with hysteresis,
+// and its predicted cost summed per chunk. Under an error threshold only the second pass, each
+// plant on its cheapest rung within it. A plant whose rung changed keeps the old one as a
+// partner dissolving over fade_frames frames.
 void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
@@ -37,22 +42,29 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
     budget.histograms.assign(chunks, lambda_histogram{});
-    budget.costs.assign(chunks, 0.0);
-    ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
-        lambda_histogram& h = budget.histograms[chunk];
-        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
-                                          lod_state& lod, fade_alpha&) {
-            if (lod.visible || lod.in_shadow_range)
-                h.add(candidates_at(budget.tables[std::size_t(p.species)], size_of(t, p)));
+    budget.costs.assign(chunks, {});
+    const bool by_error = budget.max_error > 0.0;
+    if (!by_error) {
+        ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
+            lambda_histogram& h = budget.histograms[chunk];
+            plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
+                                              lod_state& lod, fade_alpha&) {
+                if (lod.visible || lod.in_shadow_range)
+                    h.add(candidates_at(budget.tables[std::size_t(p.species)], size_of(t, p), lod.visible,
+                                        lod.in_shadow_range));
+            });
         });
-    });
+    }
     lambda_histogram total;
     for (const lambda_histogram& h : budget.histograms) total.merge(h);
-    budget.lambda = solve_lambda(total, budget.plant_budget_us);
-    const double lambda = budget.lambda;
+    const lambda_choice lambda = by_error ? lambda_choice{} : solve_lambda(total, budget.plant_budget_us);
+    budget.lambda = lambda.at;
+    budget.most_useful_us = total.cost_at_zero_us;
+    budget.least_possible_us = total.cost_at_zero_us;
+    for (const double saving : total.saving_us) budget.least_possible_us -= saving;
     const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
-        double& cost = budget.costs[chunk];
+        auto& [cost, partners] = budget.costs[chunk];
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                           lod_state& lod, fade_alpha& fade) {
             lod.previous = lod.current;
@@ -62,8 +74,13 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                 return;
             }
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
-            const rung_candidates c = candidates_at(tables, size_of(t, p));
-            const std::uint8_t chosen = choose_at(c, lambda, rung_index(tables, lod.current), budget.hysteresis);
+            const float size = size_of(t, p);
+            const rung_candidates c = candidates_at(tables, size, lod.visible, lod.in_shadow_range);
+            const std::uint8_t previous = rung_index(tables, lod.current);
+            const std::uint8_t chosen =
+                by_error ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
+                         : choose_at(c, lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis), previous,
+                                     budget.hysteresis);
             cost += double(c.cost_us[chosen]);
             const representation rung = tables.rungs[chosen].rung;
             if (rung != lod.current && lod.current != representation::none) {
@@ -74,10 +91,16 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             }
             lod.current = rung;
             if (!lod.visible) fade = {};  // only a seen plant draws a partner
+            if (fade.partner != representation::none)  // seen, never casting
+                partners += double(interpolate_table(tables.rungs[rung_index(tables, fade.partner)].cost_us, size));
         });
     });
     budget.predicted_us = 0.0;
-    for (const double cost : budget.costs) budget.predicted_us += cost;
+    budget.partners_us = 0.0;
+    for (const auto& [cost, partners] : budget.costs) {
+        budget.predicted_us += cost;
+        budget.partners_us += partners;
+    }
 }
 
 }  // namespace

@@ -49,6 +49,23 @@ TEST(play_command, missing_file_and_bad_option_values_exit_2) {
     EXPECT_EQ(run("frobnicate").exit_code, 2);
 }
 
+// The auto ladder's options on the command line: each needs a ladder, and a threshold is not
+// a budget. The message names the option, the field and the value, and exits 2 before drawing.
+TEST(play_command, ladder_budget_options_without_a_ladder_or_together_exit_2_naming_them) {
+    const result error = run("play tiny --headless --max-error 0.05");
+    EXPECT_EQ(error.exit_code, 2);
+    EXPECT_NE(error.output.find("--max-error"), std::string::npos) << error.output;
+    EXPECT_NE(error.output.find("/lod/max_error"), std::string::npos) << error.output;
+    EXPECT_NE(error.output.find("--representation ladder"), std::string::npos) << error.output;
+    const result both = run("play tiny --headless --representation ladder --max-error 0.05 --plant-budget-ms 10");
+    EXPECT_EQ(both.exit_code, 2);
+    EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
+    EXPECT_EQ(run("play tiny --headless --representation ladder --max-error 2").exit_code, 2);
+    const result help = run("play --help");
+    for (const char* option : {"--max-error", "--plant-budget-ms", "--target-frame-ms"})
+        EXPECT_NE(help.output.find(option), std::string::npos) << option;
+}
+
 TEST(play_command, help_explains_every_option) {
     const result r = run("play --help");
     EXPECT_EQ(r.exit_code, 0);

@@ -56,21 +56,49 @@ TEST(rung_solver, lambda_holds_the_budget_at_the_known_optimum) {
         return double(p1.cost_us[a] + p2.cost_us[b]);
     };
     double error = 0.0;
-    EXPECT_EQ(solve_lambda(h, 500.0), 0.0) << "a budget above the least-error cost needs no multiplier";
-    // Budget 120 µs: the optimum over all 9 choices is (B, A), cost 120, error 10.
-    double lambda = solve_lambda(h, 120.0);
+    EXPECT_EQ(solve_lambda(h, 500.0).at, 0.0) << "a budget above the least-error cost needs no multiplier";
+    // Budget 120 µs: the optimum over all 9 choices is (B, A), cost 120, error 10. All of the
+    // bucket's saving is needed: every plant takes `at`.
+    EXPECT_EQ(solve_lambda(h, 120.0).share, 1.0);
+    double lambda = solve_lambda(h, 120.0).at;
     EXPECT_GE(lambda, 0.125);
     EXPECT_LT(lambda, 0.375);
     EXPECT_EQ(total(lambda, error), 120.0);
     EXPECT_EQ(error, 10.0);
     // Budget 50 µs: (B, B), cost 40, error 40 (the cheaper (B, C) costs 21 for error 70).
-    lambda = solve_lambda(h, 50.0);
+    lambda = solve_lambda(h, 50.0).at;
     EXPECT_EQ(total(lambda, error), 40.0);
     EXPECT_EQ(error, 40.0);
     // Below every plant's cheapest: the cheapest rungs, λ at the top of the range.
-    lambda = solve_lambda(h, 1.0);
+    lambda = solve_lambda(h, 1.0).at;
     EXPECT_EQ(lambda, k_lambda_max);
     EXPECT_EQ(total(lambda, error), 2.0);
+}
+
+// 1000 plants alike, each saving 80 µs at the same breakpoint: a budget needing 30 % of that
+// saving moves the 30 % of plants whose dither is below 0.3, not all of them.
+TEST(rung_solver, plants_sharing_a_bucket_take_only_the_share_of_it_the_budget_needs) {
+    const rung_candidates plant = three(10.0f, 50.0f);
+    lambda_histogram h;
+    for (int i = 0; i < 1000; ++i) h.add(plant);
+    const double budget = 100000.0 - 0.3 * 80000.0;  // all on A cost 100,000; all on B 20,000
+    const lambda_choice l = solve_lambda(h, budget);
+    EXPECT_NEAR(l.share, 0.3, 1e-12);
+    EXPECT_LT(l.below, 0.125);
+    EXPECT_GE(l.at, 0.125);
+    double cost = 0.0;
+    for (int i = 0; i < 1000; ++i) {
+        const double dither = (i + 0.5) / 1000.0;  // evenly spread, as hashed seeds are on average
+        cost += double(plant.cost_us[choose_at(plant, l.for_plant(dither, 0.0f), k_none, 0.0f)]);
+    }
+    EXPECT_NEAR(cost, budget, 80.0) << "within one plant's saving of the budget";
+    // Every plant on A before, with 5 % hysteresis: the share still moves, hysteresis or not.
+    cost = 0.0;
+    for (int i = 0; i < 1000; ++i) {
+        const double dither = (i + 0.5) / 1000.0;
+        cost += double(plant.cost_us[choose_at(plant, l.for_plant(dither, 0.05f), 0, 0.05f)]);
+    }
+    EXPECT_NEAR(cost, budget, 80.0) << "hysteresis kept plants the share moved";
 }
 
 TEST(rung_solver, the_bucket_edges_cover_the_lambda_range_geometrically) {
@@ -114,10 +142,55 @@ TEST(rung_solver, candidates_come_from_the_species_tables_at_the_plant_size) {
         cloud.cost_us[i] = 50.0f;
     }
     s.rungs = {mesh, cloud};
+    s.plant_pixels = {10.0f, 20.0f, 40.0f, 80.0f, 160.0f, 320.0f, 640.0f};
     const rung_candidates c = candidates_at(s, 64.0f);  // table index 3
     ASSERT_EQ(c.count, 2);
     EXPECT_EQ(c.error[1], 3.0f);
     EXPECT_EQ(c.cost_us[0], 500.0f);
+    EXPECT_EQ(c.plant_pixels, 80.0f);
+}
+
+TEST(rung_solver, a_plant_only_casting_pays_its_shadow_and_shows_no_error) {
+    species_rung_tables s;
+    rung_table mesh{representation::mesh_full, {}, {}, {}}, quad{representation::crossed_billboard, {}, {}, {}};
+    mesh.error.fill(1.0f);
+    mesh.cost_us.fill(500.0f);
+    mesh.shadow_cost_us.fill(300.0f);
+    quad.error.fill(9.0f);
+    quad.cost_us.fill(4.0f);
+    quad.shadow_cost_us.fill(8.0f);
+    s.rungs = {mesh, quad};
+    const rung_candidates both = candidates_at(s, 64.0f);
+    EXPECT_EQ(both.cost_us[0], 800.0f);
+    EXPECT_EQ(both.error[1], 9.0f);
+    const rung_candidates casting = candidates_at(s, 64.0f, false, true);
+    EXPECT_EQ(casting.cost_us[0], 300.0f);
+    EXPECT_EQ(casting.cost_us[1], 8.0f);
+    EXPECT_EQ(casting.error[0], 0.0f);
+    EXPECT_EQ(choose_at(casting, 0.0, k_none, 0.0f), 1) << "no error to buy: the cheaper shadow";
+    const rung_candidates seen = candidates_at(s, 64.0f, true, false);
+    EXPECT_EQ(seen.cost_us[0], 500.0f);
+    EXPECT_EQ(seen.error[0], 1.0f);
+}
+
+// --max-error: with 100 plant pixels a threshold of 0.05 per pixel allows an error of 5 in all.
+TEST(rung_solver, under_an_error_threshold_a_plant_takes_the_cheapest_rung_within_it) {
+    rung_candidates c = three(2.0f, 10.0f);
+    c.plant_pixels = 100.0f;
+    const double limit = 0.05 * double(c.plant_pixels);
+    EXPECT_EQ(cheapest_within(c, limit, k_none, 0.05f), 1) << "B (error 2) is within 5, C (10) is not";
+    EXPECT_EQ(cheapest_within(c, 10.0, k_none, 0.05f), 2) << "C is within 10 and cheapest";
+    EXPECT_EQ(cheapest_within(c, 1.0, k_none, 0.05f), 0) << "only A (error 0) is within 1";
+    // Nothing within: the least-error rung, whatever it costs.
+    rung_candidates bad = three(2.0f, 10.0f);
+    bad.error[0] = 3.0f;
+    EXPECT_EQ(cheapest_within(bad, 1.0, k_none, 0.05f), 1);
+    EXPECT_EQ(cheapest_within(c, limit, 0, 0.05f), 1) << "A costs 100, not within 1.05 x B's 20";
+    // C at 5.2 is over 5 but within 5 x 1.05 = 5.25: a plant already on C stays, a new one takes B.
+    const rung_candidates near = three(2.0f, 5.2f);
+    EXPECT_EQ(cheapest_within(near, 5.0, 2, 0.05f), 2);
+    EXPECT_EQ(cheapest_within(near, 5.0, k_none, 0.05f), 1);
+    EXPECT_EQ(cheapest_within(near, 5.0, 2, 0.0f), 1) << "without hysteresis the threshold is strict";
 }
 
 }  // namespace

@@ -95,5 +95,24 @@ TEST(ladder_fields, a_plant_budget_needs_a_ladder_to_choose_from) {
     expect_error(j, "/lod/plant_budget_ms", "chooses the rungs of a ladder");
 }
 
+TEST(ladder_fields, an_error_threshold_needs_a_ladder_and_no_budget) {
+    json j = with_ladder(k_three);
+    j["lod"]["max_error"] = 0.04;
+    EXPECT_EQ(load(j).lod.max_error, 0.04);
+    j["lod"]["max_error"] = 1.5;
+    expect_error(j, "/lod/max_error", "");
+    j["lod"]["max_error"] = 0.04;
+    j["lod"]["representation"] = "mesh_levels";
+    expect_error(j, "/lod/max_error", "chooses the rungs of a ladder");
+    j["lod"]["representation"] = "ladder";
+    j["lod"]["plant_budget_ms"] = 40;
+    expect_error(j, "/lod/max_error", "an error threshold chooses the rungs without a budget");
+    j["lod"].erase("plant_budget_ms");
+    j["lod"]["target_frame_ms"] = 30;
+    expect_error(j, "/lod/max_error", "an error threshold chooses the rungs without a budget");
+    j["lod"].erase("max_error");
+    EXPECT_EQ(load(j).lod.target_frame_ms, 30.0) << "a frame-time target drives a ladder's budget";
+}
+
 }  // namespace
 }  // namespace sylva
