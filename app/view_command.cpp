@@ -1,7 +1,8 @@
 // `sylva view`: a window onto a scenario. It plays the scenario's camera path; F switches to
 // flying by hand (W/A/S/D, Q/E, drag with the left mouse button to look), Space pauses, N steps
 // one frame, R tints every plant by the rung it is drawn with (app/rung_colours.h), Escape quits.
-// An overlay shows the frame's measurements and, in rung colours, the key.
+// An overlay shows the frame's measurements, in rung colours the key, and with the auto ladder a
+// slider for its budget (or frame-time target, or error threshold).
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -82,7 +83,29 @@ void fly(GLFWwindow* window, walk_state& state, camera& cam, float dt) {
     cam.position += glm::dvec3(move * speed);
 }
 
-void draw_overlay(const frame_record& r, const walk_state& state, const run_info& info) {
+// The auto ladder's aim as a slider (issue 21 item 6): the frame-time target, the error
+// threshold or the plants' budget, whichever the run chose its rungs by; the next frame solves
+// for the new value. Nothing without measured rung tables.
+void budget_slider(rung_budget& budget) {
+    if (!budget.active()) return;
+    if (budget.max_error > 0.0) {
+        float e = float(budget.max_error);
+        if (ImGui::SliderFloat("max error", &e, 0.001f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic))
+            budget.max_error = double(e);
+    } else if (budget.target_frame_ms > 0.0) {
+        float t = float(budget.target_frame_ms);
+        if (ImGui::SliderFloat("target frame ms", &t, 5.0f, 2000.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+            budget.target_frame_ms = double(t);
+        ImGui::Text("plant budget %.1f ms (adapted)", budget.plant_budget_us / 1000.0);
+    } else {
+        float ms = float(budget.plant_budget_us / 1000.0);
+        if (ImGui::SliderFloat("plant budget ms", &ms, 1.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+            budget.plant_budget_us = double(ms) * 1000.0;
+    }
+    ImGui::Text("predicted plants %.1f ms  lambda %.3g", budget.predicted_us / 1000.0, budget.lambda);
+}
+
+void draw_overlay(const frame_record& r, const walk_state& state, const run_info& info, rung_budget& budget) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("Sylva", nullptr,
@@ -101,6 +124,7 @@ void draw_overlay(const frame_record& r, const walk_state& state, const run_info
         ImGui::TextColored(state.rungs ? ImVec4(c.rgb[0] / 255.0f, c.rgb[1] / 255.0f, c.rgb[2] / 255.0f, 1.0f)
                                        : ImGui::GetStyleColorVec4(ImGuiCol_Text),
                            "  %-18s %u", c.name.data(), r.instances[std::size_t(c.rung)]);
+    budget_slider(budget);
     ImGui::Text("%zu plants  %s", info.plants, info.gl_renderer.c_str());
     ImGui::TextDisabled("F fly  WASDQE move  drag look  R rung colours  Space pause  N step  Esc quit");
     ImGui::End();
@@ -159,7 +183,7 @@ int view(const view_options& o) {
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
                 ImGui::NewFrame();
-                draw_overlay(record, state, player.info());
+                draw_overlay(record, state, player.info(), player.world().resource<rung_budget>());
                 ImGui::Render();
                 ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             }
