@@ -216,7 +216,8 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
     for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) list.push_back(ladder_configuration(factor));
-    for (double budget_ms : {30.0, 60.0, 120.0, 250.0, 500.0}) list.push_back(auto_ladder(budget_ms));
+    for (double budget_ms : {4.0, 8.0, 15.0, 30.0, 45.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0})
+        list.push_back(auto_ladder(budget_ms));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
     for (float d : {1.0f, 2.0f, 2.5f, 3.0f})

@@ -3,7 +3,6 @@
 // rung tables (app/rung_tables.h turned into error and cost by the device's costs), the budget
 // the plants' predicted cost must hold, and what select_representation found this frame.
 // Empty tables: the ladders switch by projected size alone (lod/ladder.h).
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -32,13 +31,12 @@ struct rung_budget {
     // Written by select_representation each frame.
     double lambda = 0.0;
     double predicted_us = 0.0;  // the rungs chosen (view and shadow)
-    double partners_us = 0.0;   // the old rungs still dissolving (view only)
     // What a budget could change this frame: the predicted cost with every plant on its
     // least-error rung, and with every plant on its cheapest (the controller stays between).
     double most_useful_us = 0.0;
     double least_possible_us = 0.0;
     std::vector<lambda_histogram> histograms;  // per chunk, scratch kept warm
-    std::vector<std::array<double, 2>> costs;  // per chunk {chosen, partners}, scratch kept warm
+    std::vector<double> costs;                 // per chunk, scratch kept warm
 
     bool active() const { return !tables.empty(); }
 };

@@ -42,7 +42,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
     budget.histograms.assign(chunks, lambda_histogram{});
-    budget.costs.assign(chunks, {});
+    budget.costs.assign(chunks, 0.0);
     const bool by_error = budget.max_error > 0.0;
     if (!by_error) {
         ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
@@ -64,7 +64,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     for (const double saving : total.saving_us) budget.least_possible_us -= saving;
     const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
-        auto& [cost, partners] = budget.costs[chunk];
+        double& cost = budget.costs[chunk];
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                           lod_state& lod, fade_alpha& fade) {
             lod.previous = lod.current;
@@ -74,13 +74,13 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                 return;
             }
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
-            const float size = size_of(t, p);
-            const rung_candidates c = candidates_at(tables, size, lod.visible, lod.in_shadow_range);
+            const rung_candidates c = candidates_at(tables, size_of(t, p), lod.visible, lod.in_shadow_range);
             const std::uint8_t previous = rung_index(tables, lod.current);
+            const double plant_lambda =
+                lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis);
             const std::uint8_t chosen =
                 by_error ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
-                         : choose_at(c, lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis), previous,
-                                     budget.hysteresis);
+                         : choose_at(c, plant_lambda, previous, budget.hysteresis);
             cost += double(c.cost_us[chosen]);
             const representation rung = tables.rungs[chosen].rung;
             if (rung != lod.current && lod.current != representation::none) {
@@ -91,16 +91,10 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             }
             lod.current = rung;
             if (!lod.visible) fade = {};  // only a seen plant draws a partner
-            if (fade.partner != representation::none)  // seen, never casting
-                partners += double(interpolate_table(tables.rungs[rung_index(tables, fade.partner)].cost_us, size));
         });
     });
     budget.predicted_us = 0.0;
-    budget.partners_us = 0.0;
-    for (const auto& [cost, partners] : budget.costs) {
-        budget.predicted_us += cost;
-        budget.partners_us += partners;
-    }
+    for (const double cost : budget.costs) budget.predicted_us += cost;
 }
 
 }  // namespace
