@@ -17,7 +17,7 @@ namespace {
 
 constexpr float k_fov_deg = 50.0f;
 constexpr std::uint32_t k_reference_samples = 3;
-constexpr std::uint32_t k_format_version = 1;
+constexpr std::uint32_t k_format_version = 3;  // 3: from 2 px, the error between 2x2 block means
 
 // Species `i` of `s` alone on flat ground, in a square view of `view_px`.
 scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px) {
@@ -80,18 +80,38 @@ void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_
     player.set_frame(0);
 }
 
+// The colour difference is taken between 2x2 block means of the two images, over the blocks
+// either plant touches: a plant among many of its kind is seen through its neighbours, and what
+// a frame's SSIM and FLIP hold against it is mostly what shifts the local mean (coverage lost,
+// colour changed) rather than one-sample aliasing that its neighbours average out.
+//
+// Measured against the per-pixel difference of the first tables (with the sizes from 2 px), on
+// `meadow` at 480x270 auto_1000 covered the plants with IoU 0.680 against 0.551, SSIM 0.804
+// against 0.791, FLIP 0.073 against 0.077; on `default` it lost a little (SSIM 0.774 against
+// 0.777, FLIP 0.072 against 0.073). Three other errors were tried and left out: docs/
+// representations/ladder.md, "Where the tables fall short".
+constexpr std::uint32_t k_error_block = 2;
+
 view_sample compare(const image_rgba8& reference, const std::vector<std::uint32_t>& reference_ids,
                     const image_rgba8& image, const std::vector<std::uint32_t>& ids) {
     view_sample v;
-    double error = 0.0;
+    const std::uint32_t width = image.width, bw = width / k_error_block, bh = image.height / k_error_block;
+    std::vector<std::uint8_t> touched(std::size_t(bw) * bh, 0);
     for (std::size_t i = 0; i < ids.size() && i < reference_ids.size(); ++i) {
         const bool a = reference_ids[i] != 0, b = ids[i] != 0;
         v.plant_pixels += a;
         v.drawn_pixels += b;
-        if (!a && !b) continue;
-        for (std::size_t c = 0; c < 3; ++c)
-            error += std::abs(int(reference.texels[4 * i + c]) - int(image.texels[4 * i + c])) / (3.0 * 255.0);
+        const std::uint32_t x = std::uint32_t(i % width) / k_error_block, y = std::uint32_t(i / width) / k_error_block;
+        if ((a || b) && x < bw && y < bh) touched[std::size_t(y) * bw + x] = 1;
     }
+    const image_rgba8 ra = box_downsample(reference, k_error_block), ia = box_downsample(image, k_error_block);
+    double error = 0.0;
+    for (std::size_t j = 0; j < touched.size(); ++j) {
+        if (!touched[j]) continue;
+        for (std::size_t c = 0; c < 3; ++c)
+            error += std::abs(int(ra.texels[4 * j + c]) - int(ia.texels[4 * j + c])) / (3.0 * 255.0);
+    }
+    error *= double(k_error_block * k_error_block);  // per pixel of the block
     v.error_per_pixel = error / std::max(1.0, v.plant_pixels);
     return v;
 }

@@ -8,8 +8,8 @@
 // sphere that many pixels high in a k_rung_table_view_px-square view, a camera moved as
 // select_representation measures size). Each rung is drawn on its own and compared with the
 // full geometry at 3x3 samples per pixel, lit the same way: the error is the mean absolute colour
-// difference (of 1, over RGB) over the pixels either covers, per pixel the reference's plant
-// covers. Beside it the table keeps what the rung drew (view and shadow triangles, points, lines,
+// difference (of 1, over RGB) between 2x2 block means over the blocks either covers, per pixel
+// the reference's plant covers. Beside it the table keeps what the rung drew (view and shadow triangles, points, lines,
 // covered pixels), so its cost follows from the device's calibration (lod/primitive_cost_model.h)
 // on any machine, while the table itself is the same everywhere. Tables are stored in the bake
 // cache (kind "rung_tables"), keyed by the one-plant scenario and the rungs.

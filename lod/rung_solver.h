@@ -33,7 +33,10 @@ namespace sylva {
 
 // Projected sizes (px) at which a species' tables are sampled; between them a value is
 // interpolated linearly in log size, beyond them it is held.
-inline constexpr std::array<float, 7> k_rung_table_sizes_px{8.0f, 16.0f, 32.0f, 64.0f, 128.0f, 256.0f, 512.0f};
+// From 2 px: most of a meadow's grass is that small, and there a crossed billboard's
+// alpha-tested texture keeps far less of the plant's coverage than at 8 px.
+inline constexpr std::array<float, 9> k_rung_table_sizes_px{2.0f,   4.0f,   8.0f,   16.0f, 32.0f,
+                                                            64.0f, 128.0f, 256.0f, 512.0f};
 inline constexpr std::size_t k_rung_table_size_count = k_rung_table_sizes_px.size();
 
 // One rung of a species: its expected image error (summed over the plant's pixels, so errors of

@@ -47,22 +47,24 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
     const rung_measurement& crossed = of(tree, representation::crossed_billboard);
     for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
         SCOPED_TRACE("size " + std::to_string(k_rung_table_sizes_px[i]));
-        // The full mesh differs from its own supersampled self only by aliasing; from 64 px on
-        // that is less than what two crossed quads lose (below, one sample per pixel of thin
-        // leaves aliases about as much as the quads' prefiltered texture blurs: measured 0.070
-        // and 0.070 at 32 px, which is why the auto ladder needs measured tables).
-        if (i >= 3) {
+        // The full mesh differs from its own supersampled self only by aliasing, which the 2x2
+        // block means of the error mostly average away; from 8 px on that is less than what two
+        // crossed quads lose (measured 0.050 against 0.068 at 32 px; with per-pixel differences
+        // the two were equal there, 0.070, and the mesh lost below).
+        if (k_rung_table_sizes_px[i] >= 8.0f) {
             EXPECT_LT(full.error_per_pixel[i], crossed.error_per_pixel[i]);
         }
-        if (i > 0) {
-            EXPECT_GT(full.plant_pixels[i], full.plant_pixels[i - 1] * (i < 6 ? 2.0f : 1.0f));
+        // Twice the size, about four times the pixels (the last size overflows the view).
+        if (k_rung_table_sizes_px[i] >= 8.0f) {
+            EXPECT_GT(full.plant_pixels[i], full.plant_pixels[i - 1] * (i + 1 < k_rung_table_size_count ? 2.0f : 1.0f));
         }
         EXPECT_GT(full.triangles[i], cloud.triangles[i]);
         EXPECT_GT(cloud.triangles[i], crossed.triangles[i]);
     }
     // Large on screen, a cloud stands closer to the tree than two crossed quads (Behrendt §2).
-    for (std::size_t i = 3; i < k_rung_table_size_count; ++i)
-        EXPECT_LT(cloud.error_per_pixel[i], crossed.error_per_pixel[i]) << "size " << k_rung_table_sizes_px[i];
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i)
+        if (k_rung_table_sizes_px[i] >= 64.0f)
+            EXPECT_LT(cloud.error_per_pixel[i], crossed.error_per_pixel[i]) << "size " << k_rung_table_sizes_px[i];
     // The bytes the cache keeps come back equal; a cut entry is refused.
     const std::vector<std::byte> bytes = encode_rung_measurements(tree);
     const species_rung_measurements back = decode_rung_measurements(bytes);

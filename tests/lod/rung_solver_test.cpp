@@ -23,14 +23,14 @@ rung_candidates three(float b_error, float c_error) {
 constexpr std::uint8_t k_none = std::uint8_t(k_max_rungs);
 
 TEST(rung_solver, tables_are_interpolated_linearly_in_log_size_and_held_beyond) {
-    std::array<float, k_rung_table_size_count> t{10.0f, 20.0f, 40.0f, 80.0f, 160.0f, 320.0f, 640.0f};
+    std::array<float, k_rung_table_size_count> t{2.5f, 5.0f, 10.0f, 20.0f, 40.0f, 80.0f, 160.0f, 320.0f, 640.0f};
     EXPECT_FLOAT_EQ(interpolate_table(t, 8.0f), 10.0f);
     EXPECT_FLOAT_EQ(interpolate_table(t, 16.0f), 20.0f);
     // √(16·32) is halfway between 16 and 32 in log size.
     EXPECT_NEAR(interpolate_table(t, std::sqrt(16.0f * 32.0f)), 30.0f, 1e-4f);
-    EXPECT_FLOAT_EQ(interpolate_table(t, 2.0f), 10.0f);
+    EXPECT_FLOAT_EQ(interpolate_table(t, 1.0f), 2.5f);
     EXPECT_FLOAT_EQ(interpolate_table(t, 1e5f), 640.0f);
-    EXPECT_FLOAT_EQ(interpolate_table(t, std::nanf("")), 10.0f);
+    EXPECT_FLOAT_EQ(interpolate_table(t, std::nanf("")), 2.5f);
 }
 
 TEST(rung_solver, a_plant_takes_the_rung_minimising_error_plus_lambda_cost) {
@@ -142,10 +142,10 @@ TEST(rung_solver, candidates_come_from_the_species_tables_at_the_plant_size) {
         cloud.cost_us[i] = 50.0f;
     }
     s.rungs = {mesh, cloud};
-    s.plant_pixels = {10.0f, 20.0f, 40.0f, 80.0f, 160.0f, 320.0f, 640.0f};
-    const rung_candidates c = candidates_at(s, 64.0f);  // table index 3
+    s.plant_pixels = {2.5f, 5.0f, 10.0f, 20.0f, 40.0f, 80.0f, 160.0f, 320.0f, 640.0f};
+    const rung_candidates c = candidates_at(s, 64.0f);  // table index 5
     ASSERT_EQ(c.count, 2);
-    EXPECT_EQ(c.error[1], 3.0f);
+    EXPECT_EQ(c.error[1], 5.0f);
     EXPECT_EQ(c.cost_us[0], 500.0f);
     EXPECT_EQ(c.plant_pixels, 80.0f);
 }
