@@ -156,6 +156,9 @@ def index(pages):
     if os.path.exists(os.path.join(RESULTS, "calibration.md")):
         lines += ["", "The device calibration's run-to-run spread: [calibration.md](calibration.md) "
                       "(`docs/measure_calibration.py`)."]
+    if os.path.exists(os.path.join(RESULTS, "budget_holding.md")):
+        lines += ["", "How closely the auto ladder holds a frame time: [budget_holding.md](budget_holding.md) "
+                      "(`docs/measure_budget_holding.sh`)."]
     return "\n".join(lines) + "\n"
 
 
