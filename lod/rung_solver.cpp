@@ -125,6 +125,12 @@ void lambda_histogram::merge(const lambda_histogram& other) {
     for (std::size_t b = 0; b < saving_us.size(); ++b) saving_us[b] += other.saving_us[b];
 }
 
+double lambda_histogram::cheapest_cost_us() const {
+    double cost = cost_at_zero_us;
+    for (const double saving : saving_us) cost -= saving;
+    return cost;
+}
+
 lambda_choice solve_lambda(const lambda_histogram& h, double budget_us) {
     double cost = h.cost_at_zero_us;
     if (cost <= budget_us) return {};

@@ -92,6 +92,7 @@ struct lambda_histogram {
     std::array<double, k_lambda_buckets + 1> saving_us{};  // [k_lambda_buckets]: beyond k_lambda_max
     void add(const rung_candidates& c);
     void merge(const lambda_histogram& other);  // in chunk order, for a fixed sum order
+    double cheapest_cost_us() const;             // every plant on its cheapest rung
 };
 
 // The multiplier that holds `budget_us`: `at` is the least bucket edge (or 0) whose total cost

@@ -7,8 +7,7 @@ namespace sylva {
 
 double next_plant_budget(double current_us, double target_ms, const plant_budget_feedback& f) {
     if (!(target_ms > 0.0) || !(f.measured_ms > 0.0) || !std::isfinite(f.measured_ms)) return current_us;
-    // Below every plant on its cheapest rung a budget buys nothing: the frame measured that.
-    double next = f.most_us > 0.0 ? std::max(current_us, std::min(f.least_us, f.most_us)) : current_us;
+    double next = spent_budget_us(current_us, f);
     if (std::abs(std::log(f.measured_ms / target_ms)) > std::log1p(k_plant_budget_dead_band)) {
         const double from = next;
         next = from * target_ms / f.measured_ms;
@@ -40,7 +39,7 @@ void adapt_plant_budget_system::run(ecs::system_context<adapt_plant_budget_syste
     f.previous_budget_us = budget.controller_budget_us;
     f.previous_ms = budget.controller_ms;
     if (f.measured_ms > 0.0) {  // this frame's point for the next secant
-        budget.controller_budget_us = std::max(budget.plant_budget_us, std::min(f.least_us, f.most_us));
+        budget.controller_budget_us = spent_budget_us(budget.plant_budget_us, f);
         budget.controller_ms = f.measured_ms;
     }
     budget.plant_budget_us = next_plant_budget(budget.plant_budget_us, budget.target_frame_ms, f);

@@ -26,6 +26,8 @@
 // budget still once there; a step is at most a factor of 8; the budget stays between every plant
 // on its cheapest rung and every plant on its least-error rung (what select_representation
 // found last frame), so an unreachable target does not wind it up or down without end.
+#include <algorithm>
+
 #include "ecs/system.h"
 #include "resources/frame_stats.h"
 #include "resources/rung_budget.h"
@@ -46,6 +48,12 @@ struct plant_budget_feedback {
     double previous_budget_us = 0.0;
     double previous_ms = 0.0;
 };
+
+// The budget the last frame was actually drawn with: below every plant on its cheapest rung a
+// budget buys nothing (the frame measured that).
+inline double spent_budget_us(double current_us, const plant_budget_feedback& f) {
+    return f.most_us > 0.0 ? std::max(current_us, std::min(f.least_us, f.most_us)) : current_us;
+}
 
 // The next budget (µs) for `target_ms`. Pure; a frame without a measurement keeps it.
 double next_plant_budget(double current_us, double target_ms, const plant_budget_feedback& f);

@@ -60,8 +60,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const lambda_choice lambda = by_error ? lambda_choice{} : solve_lambda(total, budget.plant_budget_us);
     budget.lambda = lambda.at;
     budget.most_useful_us = total.cost_at_zero_us;
-    budget.least_possible_us = total.cost_at_zero_us;
-    for (const double saving : total.saving_us) budget.least_possible_us -= saving;
+    budget.least_possible_us = total.cheapest_cost_us();
     const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
         double& cost = budget.costs[chunk];
@@ -76,11 +75,12 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
             const rung_candidates c = candidates_at(tables, size_of(t, p), lod.visible, lod.in_shadow_range);
             const std::uint8_t previous = rung_index(tables, lod.current);
-            const double plant_lambda =
-                lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis);
+            // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =
                 by_error ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
-                         : choose_at(c, plant_lambda, previous, budget.hysteresis);
+                         : choose_at(c,
+                                     lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis),
+                                     previous, budget.hysteresis);
             cost += double(c.cost_us[chosen]);
             const representation rung = tables.rungs[chosen].rung;
             if (rung != lod.current && lod.current != representation::none) {

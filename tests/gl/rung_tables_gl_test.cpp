@@ -62,9 +62,11 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
         EXPECT_GT(cloud.triangles[i], crossed.triangles[i]);
     }
     // Large on screen, a cloud stands closer to the tree than two crossed quads (Behrendt §2).
-    for (std::size_t i = 0; i < k_rung_table_size_count; ++i)
-        if (k_rung_table_sizes_px[i] >= 64.0f)
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+        if (k_rung_table_sizes_px[i] >= 64.0f) {
             EXPECT_LT(cloud.error_per_pixel[i], crossed.error_per_pixel[i]) << "size " << k_rung_table_sizes_px[i];
+        }
+    }
     // The bytes the cache keeps come back equal; a cut entry is refused.
     const std::vector<std::byte> bytes = encode_rung_measurements(tree);
     const species_rung_measurements back = decode_rung_measurements(bytes);
