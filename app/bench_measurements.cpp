@@ -39,6 +39,12 @@ std::map<std::string, double> primitives_of(const frame_record& r) {
                                     {"shadow_triangles", double(r.shadow_triangles)},
                                     {"points", double(r.points)},
                                     {"lines", double(r.lines)}};
+    if (r.work_counted) {
+        p["vertices"] = double(r.vertices);
+        p["fragments"] = double(r.fragments);
+        p["shadow_vertices"] = double(r.shadow_vertices);
+        p["shadow_fragments"] = double(r.shadow_fragments);
+    }
     for (std::size_t i = 1; i < r.instances.size(); ++i)
         p["instances_" + std::string(representation_name(static_cast<representation>(i)))] = double(r.instances[i]);
     return p;

@@ -53,6 +53,12 @@ nlohmann::json frame_json(const frame_record& f) {
     nlohmann::json instances = nlohmann::json::object();
     for (std::size_t r = 1; r < f.instances.size(); ++r)
         instances[std::string(representation_name(static_cast<representation>(r)))] = f.instances[r];
+    nlohmann::json work = nullptr;  // null where the device cannot count shader invocations
+    if (f.work_counted)
+        work = {{"vertices", f.vertices},
+                {"fragments", f.fragments},
+                {"shadow_vertices", f.shadow_vertices},
+                {"shadow_fragments", f.shadow_fragments}};
     return {{"frame", f.frame},
             {"time_s", f.time_s},
             {"frame_ms", f.frame_ms},
@@ -67,6 +73,7 @@ nlohmann::json frame_json(const frame_record& f) {
             {"shadow_drawn", f.shadow_drawn},
             {"points", f.points},
             {"lines", f.lines},
+            {"shader_work", work},
             {"instances", instances},
             {"submit_record_ms", f.submit_record_ms},
             {"submit_issue_ms", f.submit_issue_ms},

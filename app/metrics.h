@@ -32,6 +32,13 @@ struct frame_record {
     std::vector<int> shadow_drawn;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
+    // The shader work the frame made the device do (render::pass_timer::read_work): the view's
+    // passes summed, the shadow pass apart. Only where the device counts (work_counted).
+    bool work_counted = false;
+    std::uint64_t vertices = 0;   // vertex shader invocations
+    std::uint64_t fragments = 0;  // fragment shader invocations
+    std::uint64_t shadow_vertices = 0;
+    std::uint64_t shadow_fragments = 0;
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances{};
     double submit_record_ms = 0.0;  // Sylva's CPU work to prepare the GL submission
     double submit_issue_ms = 0.0;   // issuing the GL calls (llvmpipe does vertex work here)

@@ -262,6 +262,15 @@ void scenario_player::step(frame_record& record) {
     }
     record.points = draws.points;
     record.lines = draws.lines;
+    record.work_counted = stats.work_counted;
+    record.vertices = record.fragments = 0;
+    for (std::size_t p = 0; p < stats.pass_vertices.size(); ++p) {
+        if (p == std::size_t(render::gpu_pass::shadow)) continue;
+        record.vertices += stats.pass_vertices[p];
+        record.fragments += stats.pass_fragments[p];
+    }
+    record.shadow_vertices = stats.pass_vertices[std::size_t(render::gpu_pass::shadow)];
+    record.shadow_fragments = stats.pass_fragments[std::size_t(render::gpu_pass::shadow)];
     record.instances = draws.instances_by_representation;
     record.upload_bytes = stats.upload_bytes;
     record.submit_record_ms = stats.record_ms;

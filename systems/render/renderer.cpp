@@ -178,6 +178,13 @@ void renderer::render(const frame_view& view) {
 frame_stats renderer::finish() {
     glFinish();
     frame_stats stats;
+    stats.work_counted = m_timer.has_counts();
+    const auto work = m_timer.read_work();
+    for (std::size_t p = 0; p < work.size(); ++p) {
+        stats.pass_vertices[p] = work[p].vertices;
+        stats.pass_primitives[p] = work[p].primitives;
+        stats.pass_fragments[p] = work[p].fragments;
+    }
     stats.gpu_pass_ms = m_timer.read();
     for (double ms : stats.gpu_pass_ms) stats.gpu_ms += ms;
     stats.upload_bytes = m_frame_upload_bytes;
