@@ -1,6 +1,7 @@
 // `sylva calibrate`: measures what a triangle, a point and a line cost on this GL device
-// (systems/render/primitive_cost_calibration.h), stores the model in the bake cache and prints
-// it with the costs it gives at a range of d'. `play` and `bench` calibrate on first use anyway;
+// (systems/render/primitive_cost_calibration.h) and what shader work costs
+// (systems/render/shader_work_calibration.h), stores both in the bake cache and prints them,
+// the first with the costs it gives at a range of d'. `play` and `bench` calibrate on first use anyway;
 // this shows the figures, and --force measures again (after a driver update, say).
 #include <spdlog/spdlog.h>
 
@@ -102,6 +103,48 @@ void print(const std::string& device, const device_calibration& c, float splat_f
     }
 }
 
+void print_work(const device_work_calibration& w) {
+    std::printf("shader work (the auto ladder's rung costs):\n");
+    if (w.measurement) {
+        static constexpr const char* k_shapes[] = {"small triangles, view", "large triangles, view",
+                                                   "large triangles, shadow"};
+        for (std::size_t i = 0; i < w.measurement->samples.size(); ++i) {
+            const work_sample& s = w.measurement->samples[i];
+            std::printf("  %-24s %9.1f ± %.1f us for %.0f vertices, %.0f fragments, %.0f shadow fragments\n",
+                        k_shapes[i], s.us, s.error_us, s.vertices, s.fragments, s.shadow_fragments);
+        }
+    }
+    if (!w.costs) {
+        std::printf("  refused: %s\n  the auto ladder costs its rungs by their triangles.\n", w.refusal.c_str());
+        return;
+    }
+    std::printf("  %.5f us per vertex, %.6f us per view fragment, %.6f us per shadow fragment\n",
+                w.costs->vertex_us, w.costs->fragment_us, w.costs->shadow_fragment_us);
+}
+
+nlohmann::ordered_json work_json(const device_work_calibration& w) {
+    nlohmann::ordered_json j;
+    j["measured_now"] = w.measured_now;
+    if (w.measurement) {
+        nlohmann::ordered_json samples = nlohmann::ordered_json::array();
+        for (const work_sample& s : w.measurement->samples)
+            samples.push_back({{"us", s.us},
+                               {"error_us", s.error_us},
+                               {"vertices", s.vertices},
+                               {"fragments", s.fragments},
+                               {"shadow_fragments", s.shadow_fragments}});
+        j["samples"] = samples;
+        j["seconds"] = w.measurement->seconds;
+    }
+    if (w.costs)
+        j["costs"] = {{"vertex_us", w.costs->vertex_us},
+                      {"fragment_us", w.costs->fragment_us},
+                      {"shadow_fragment_us", w.costs->shadow_fragment_us}};
+    else
+        j["refused"] = w.refusal;
+    return j;
+}
+
 int calibrate(const calibrate_options& o) {
     try {
         bake_cache cache(o.cache_dir);
@@ -121,11 +164,18 @@ int calibrate(const calibrate_options& o) {
         if (o.force) spdlog::info("calibrating primitive costs on {}", context->renderer());
         const device_calibration c = device_cost_model(r, *context, cache, o.splat_factor, o.force);
         print(device, c, o.splat_factor);
+        // Shader work is measured with a shadow map: one cascade takes the shadow shape.
+        settings.shadows = true;
+        render::renderer shadowed(settings, assets);
+        const device_work_calibration w = device_work_costs(shadowed, *context, cache, o.force);
+        print_work(w);
         if (!o.json.empty()) {
-            write_atomically(o.json, report_json(device, c, o.splat_factor).dump(2) + "\n");
+            nlohmann::ordered_json j = report_json(device, c, o.splat_factor);
+            j["shader_work"] = work_json(w);
+            write_atomically(o.json, j.dump(2) + "\n");
             spdlog::info("wrote {}", o.json);
         }
-        return c.model ? k_exit_ok : k_exit_failure;
+        return c.model && w.costs ? k_exit_ok : k_exit_failure;
     } catch (const std::exception& e) {
         spdlog::error("{}", e.what());
         return k_exit_failure;
@@ -163,7 +213,10 @@ command_runner add_calibrate_command(CLI::App& app) {
         "select with "
         "the paper's costs (Deussen 2002 §4.1: a triangle as three points). The cache key names "
         "the CPU model "
-        "and threads, LP_NUM_THREADS, the GL renderer and version.");
+        "and threads, LP_NUM_THREADS, the GL renderer and version. It also measures what a vertex, a view "
+        "fragment and a shadow-map fragment cost (small and large triangles in the view, large ones into a "
+        "shadow map, the invocations counted by the device): the auto ladder costs each rung from the shader "
+        "work its tables counted.");
     return [o] { return calibrate(*o); };
 }
 

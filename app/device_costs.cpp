@@ -16,6 +16,7 @@ namespace {
 // reason.
 constexpr std::uint8_t k_model = 0;
 constexpr std::uint8_t k_refused = 1;
+const float calibration_settings_splat_factor = render::calibration_settings{}.splat_factor;
 
 std::vector<std::byte> encode(const device_calibration& c) {
     binary_writer out;
@@ -65,6 +66,42 @@ void warn_once(const std::string& device, const std::string& why) {
         why);
 }
 
+std::vector<std::byte> encode_work(const device_work_calibration& c) {
+    binary_writer out;
+    if (c.costs) {
+        out.pod(k_model);
+        out.pod(c.costs->vertex_us);
+        out.pod(c.costs->fragment_us);
+        out.pod(c.costs->shadow_fragment_us);
+    } else {
+        out.pod(k_refused);
+        out.text(c.refusal);
+    }
+    return out.bytes();
+}
+
+device_work_calibration decode_work(const std::vector<std::byte>& bytes) {
+    binary_reader in(bytes);
+    device_work_calibration c;
+    const auto status = in.pod<std::uint8_t>();
+    if (status == k_model) {
+        shader_work_costs w;
+        w.vertex_us = in.pod<double>();
+        w.fragment_us = in.pod<double>();
+        w.shadow_fragment_us = in.pod<double>();
+        for (const double v : {w.vertex_us, w.fragment_us, w.shadow_fragment_us})
+            if (!(std::isfinite(v) && v > 0.0))
+                throw std::runtime_error("shader work costs hold a cost of " + std::to_string(v));
+        c.costs = w;
+    } else if (status == k_refused) {
+        c.refusal = in.text();
+    } else {
+        throw std::runtime_error("shader work costs: unknown status " + std::to_string(status));
+    }
+    if (!in.at_end()) throw std::runtime_error("shader work costs entry has trailing bytes");
+    return c;
+}
+
 }  // namespace
 
 std::string describe_cost_device(const render::gl_context& context, const render::renderer& r,
@@ -105,6 +142,34 @@ device_calibration device_cost_model(render::renderer& r, const render::gl_conte
     c.refusal = c.measurement->refusal;
     if (!c.model) warn_once(device, c.refusal);
     cache.store_or_warn("primitive_cost_model", key, encode(c));
+    return c;
+}
+
+device_work_calibration device_work_costs(render::renderer& r, const render::gl_context& context, bake_cache& cache,
+                                          bool force, const render::calibration_settings& settings) {
+    // The splat factor does not change what shader work costs: the key takes the default one.
+    const std::string device = describe_cost_device(context, r, calibration_settings_splat_factor);
+    const std::uint64_t key = hash_string(device, hash_string("shader_work_costs/1"));
+    if (!force)
+        if (const auto bytes = cache.load("shader_work_costs", key)) {
+            try {
+                return decode_work(*bytes);
+            } catch (const std::runtime_error& e) {
+                cache.discard("shader_work_costs", key, e.what());
+            }
+        }
+    device_work_calibration c;
+    c.measured_now = true;
+    render::calibration_settings s = settings;
+    if (!s.timer) s.timer = render::device_frame_timer(context.renderer());
+    c.measurement = render::calibrate_shader_work(r, s);
+    c.costs = c.measurement->costs;
+    c.refusal = c.measurement->refusal;
+    if (!c.costs)
+        spdlog::warn("the device calibration of shader work was refused ({}); the auto ladder costs its rungs by "
+                     "their triangles. `sylva calibrate --force` measures again",
+                     c.refusal);
+    cache.store_or_warn("shader_work_costs", key, encode_work(c));
     return c;
 }
 

@@ -15,9 +15,11 @@
 
 #include "models/cache/bake_cache.h"
 #include "lod/primitive_cost_model.h"
+#include "lod/shader_work_costs.h"
 #include "systems/render/gl_context.h"
 #include "systems/render/primitive_cost_calibration.h"
 #include "systems/render/renderer.h"
+#include "systems/render/shader_work_calibration.h"
 
 namespace sylva {
 
@@ -41,5 +43,18 @@ struct device_calibration {
 device_calibration device_cost_model(render::renderer& r, const render::gl_context& context,
                                      bake_cache& cache, float splat_factor, bool force = false,
                                      const render::calibration_settings& settings = {});
+
+// What shader work costs on this device (lod/shader_work_costs.h), from the cache or measured on
+// `r` now (and stored) when absent or when `force`; the auto ladder costs its rungs with it. A
+// refusal (no invocation counts, a timer it cannot trust) is cached too, with its reason, and
+// the rungs are then costed by their triangles. GL thread only.
+struct device_work_calibration {
+    std::optional<shader_work_costs> costs;
+    std::string refusal;
+    bool measured_now = false;
+    std::optional<render::work_calibration_result> measurement;  // when measured now
+};
+device_work_calibration device_work_costs(render::renderer& r, const render::gl_context& context, bake_cache& cache,
+                                          bool force = false, const render::calibration_settings& settings = {});
 
 }  // namespace sylva

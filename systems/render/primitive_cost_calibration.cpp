@@ -11,22 +11,15 @@
 #include "systems/update_camera_system.h"
 
 namespace sylva::render {
-namespace {
 
-constexpr float k_distance_m =
-    20.0f;  // where the calibration primitives float, in front of the eye
-
-// `count` primitives of one kind scattered over the middle of the view at k_distance_m, as leaf
-// samples (the leaf texture's opaque centre), facing the eye: triangles with legs of
-// k_calibration_triangle_px, lines k_calibration_line_px long.
-mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m,
-                           float half_width_m, float half_height_m) {
+mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m, float half_width_m,
+                           float half_height_m, double triangle_leg_px) {
     mesh_data mesh;
     mesh.primitive = kind;
     rng random(0xca1b7a7eULL, std::uint64_t(kind));
     const std::uint32_t per =
         kind == primitive_kind::triangles ? 3u : (kind == primitive_kind::lines ? 2u : 1u);
-    const float triangle_leg = float(k_calibration_triangle_px) * pixel_m;
+    const float triangle_leg = float(triangle_leg_px) * pixel_m;
     const float line_length = float(k_calibration_line_px) * pixel_m;
     const float edge = kind == primitive_kind::lines ? line_length : triangle_leg;
     for (std::uint32_t i = 0; i < count; ++i) {
@@ -45,6 +38,8 @@ mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel
     mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material_kind::leaf});
     return mesh;
 }
+
+namespace {
 
 primitive_kind kind_of(cost_path path) {
     switch (path) {
@@ -118,8 +113,8 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     cam.viewport_height_px = float(r.settings().height);
     derive_camera_matrices(cam);
     const auto pixel_m =
-        float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_distance_m;
-    const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_distance_m;
+        float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_calibration_distance_m;
+    const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_calibration_distance_m;
     const float half_width = half_height * cam.aspect;
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
     std::array<std::uint16_t, 3> meshes{};
@@ -144,7 +139,7 @@ calibration_result calibrate_primitive_costs(renderer& r, const calibration_sett
     const frame_timer timer = settings.timer ? settings.timer : frame_timer(process_cpu_ms);
     auto time_frame = [&](const calibration_frame& frame) {
         instance_gpu instance;
-        instance.position = {0.0f, 0.0f, -k_distance_m};
+        instance.position = {0.0f, 0.0f, -k_calibration_distance_m};
         instance.fade = float(frame.count);  // every splat whole (draw_list.h instance_gpu::fade)
         list.instances = {instance};
         list.batches = {

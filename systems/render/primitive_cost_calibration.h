@@ -33,11 +33,24 @@
 
 namespace sylva::render {
 
+// Where the calibration primitives float, in front of the eye.
+inline constexpr float k_calibration_distance_m = 20.0f;
+
+// `count` primitives of one kind scattered over the middle of the view at
+// k_calibration_distance_m, as leaf samples (the leaf texture's opaque centre), facing the eye:
+// triangles with legs of `triangle_leg_px`, lines k_calibration_line_px long (`pixel_m`: metres
+// per pixel there).
+mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m, float half_width_m,
+                           float half_height_m, double triangle_leg_px = k_calibration_triangle_px);
+
 // One frame the calibration times: `count` primitives on `path`, drawn at `quality`.
 struct calibration_frame {
     cost_path path = cost_path::triangles;
     point_line_quality quality;
     std::uint32_t count = 0;
+    // The shader-work calibration's shape (shader_work_calibration.h: 0 small triangles in the
+    // view, 1 large ones, 2 large ones into a shadow map); 0 in the primitive calibration.
+    std::uint32_t shape = 0;
 };
 
 // Runs `draw` (which renders the frame and waits for it) and returns how long it took, in ms.
