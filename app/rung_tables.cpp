@@ -17,7 +17,7 @@ namespace {
 
 constexpr float k_fov_deg = 50.0f;
 constexpr std::uint32_t k_reference_samples = 3;
-constexpr std::uint32_t k_format_version = 3;  // 3: from 2 px, the error between 2x2 block means
+constexpr std::uint32_t k_format_version = 4;  // 3: from 2 px, the error between 2x2 block means; 4: shader work
 
 // Species `i` of `s` alone on flat ground, in a square view of `view_px`.
 scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px) {
@@ -60,8 +60,9 @@ struct view_sample {
     double drawn_pixels = 0.0;
 };
 
-// Looks at the plant level from `azimuth_deg` so that its sphere is `size_px` high.
-void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_t view_px) {
+// Looks at the plant from `azimuth_deg` so that its sphere is `size_px` high, the eye
+// `eye_height_m` above the ground (level with the plant's centre when k_rung_table_level_eye).
+void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_t view_px, double eye_height_m) {
     ecs::world& world = player.world();
     const world_transform& t = world.table<world_transform>().data()[0];
     const species_entry& species = world.resource<species_library>().species[0];
@@ -69,7 +70,10 @@ void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_
     // select_representation measures from the eye to the plant's base.
     const double d = 2.0 * double(species.bounding_radius * t.scale) / (double(size_px) * pixel);
     const double centre = double(species.center_height * t.scale);
-    const double eye_height = std::min(centre, 0.7 * d);
+    // From the scenario's eye height; closer than the eye is high, the eye stays off the
+    // vertical (at most 72 degrees down), where a camera keeps its distance.
+    const bool level = eye_height_m < 0.0;
+    const double eye_height = level ? std::min(centre, 0.7 * d) : std::min(eye_height_m, 0.95 * d);
     const double across = std::sqrt(std::max(d * d - eye_height * eye_height, 0.0));
     const double a = double(azimuth_deg) * M_PI / 180.0;
     camera_keyframe key;
@@ -118,7 +122,7 @@ view_sample compare(const image_rgba8& reference, const std::vector<std::uint32_
 
 species_rung_measurements measure_species(const scenario& one, const std::vector<representation>& rungs,
                                           const point_line_quality& points, render::gl_context& context,
-                                          bake_cache* cache) {
+                                          bake_cache* cache, double eye_height_m) {
     species_rung_measurements out;
     out.species = one.species[0].name;
     scenario big = one;
@@ -135,11 +139,35 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
     std::vector<reference_view> views;
     for (const float size : k_rung_table_sizes_px)
         for (const float azimuth : k_rung_table_directions) {
-            aim(reference, size, azimuth, one.height);  // the same camera: 3x the pixels
+            aim(reference, size, azimuth, one.height, eye_height_m);  // the same camera: 3x the pixels
             (void)reference.step();
             views.push_back({box_downsample(reference.capture(), k_reference_samples),
                              reference.capture_plant_ids(k_reference_samples)});
         }
+    // The same views without the plant: what the terrain and sky cost there, taken off each
+    // rung's shader work so its tables hold only the plant's.
+    struct view_work {
+        double vertices = 0.0, fragments = 0.0, shadow_vertices = 0.0, shadow_fragments = 0.0;
+    };
+    const auto work_of = [](const frame_record& r) {
+        return view_work{double(r.vertices), double(r.fragments), double(r.shadow_vertices),
+                         double(r.shadow_fragments)};
+    };
+    std::vector<view_work> empty;
+    {
+        player_options options;
+        options.policy = {lod_policy::kind::single, representation::none, representation::none, 0.0f};
+        options.scenario_lod = false;
+        options.measure_costs = false;
+        scenario_player player(one, 0, &context, cache, options);
+        for (const float size : k_rung_table_sizes_px)
+            for (const float azimuth : k_rung_table_directions) {
+                aim(player, size, azimuth, one.height, eye_height_m);
+                const frame_record record = player.step();
+                out.work_counted = record.work_counted;
+                empty.push_back(work_of(record));
+            }
+    }
     for (const representation r : rungs) {
         player_options options;
         options.policy = {lod_policy::kind::single, r, r, 0.0f};
@@ -154,7 +182,7 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
         for (std::size_t s = 0; s < k_rung_table_size_count; ++s) {
             const double n = double(k_rung_table_directions.size());
             for (const float azimuth : k_rung_table_directions) {
-                aim(player, k_rung_table_sizes_px[s], azimuth, one.height);
+                aim(player, k_rung_table_sizes_px[s], azimuth, one.height, eye_height_m);
                 const frame_record record = player.step();
                 const view_sample v =
                     compare(views[view].image, views[view].ids, player.capture(), player.capture_plant_ids());
@@ -166,6 +194,11 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
                 m.shadow_triangles[s] += float(double(record.shadow_triangles) / n);
                 m.points[s] += float(double(record.points) / n);
                 m.lines[s] += float(double(record.lines) / n);
+                const view_work w = work_of(record), e = empty[view - 1];
+                m.vertices[s] += float(std::max(0.0, w.vertices - e.vertices) / n);
+                m.fragments[s] += float(std::max(0.0, w.fragments - e.fragments) / n);
+                m.shadow_vertices[s] += float(std::max(0.0, w.shadow_vertices - e.shadow_vertices) / n);
+                m.shadow_fragments[s] += float(std::max(0.0, w.shadow_fragments - e.shadow_fragments) / n);
             }
         }
         out.rungs.push_back(m);
@@ -174,9 +207,9 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
 }
 
 std::uint64_t table_key(const scenario& one, const std::vector<representation>& rungs,
-                        const point_line_quality& points) {
+                        const point_line_quality& points, double eye_height_m) {
     std::ostringstream text;
-    text << scenario_to_json_text(one) << "|rungs";
+    text << scenario_to_json_text(one) << "|eye:" << eye_height_m << "|rungs";
     for (const representation r : rungs) text << ':' << int(r);
     text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
          << int(points.fog_weighted) << "|version:" << k_format_version;
@@ -186,16 +219,31 @@ std::uint64_t table_key(const scenario& one, const std::vector<representation>& 
 
 }  // namespace
 
+double typical_eye_height_m(const scenario& s, const std::function<double(double, double)>& terrain_height) {
+    std::vector<double> heights;
+    for (const scenario_camera_key& k : s.camera.keyframes) {
+        const glm::dvec3 p = k.key.position;
+        heights.push_back(k.above_terrain ? p.y : p.y - terrain_height(p.x, p.z));
+    }
+    if (heights.empty()) return k_rung_table_level_eye;
+    std::sort(heights.begin(), heights.end());
+    const std::size_t n = heights.size();
+    const double median = n % 2 ? heights[n / 2] : 0.5 * (heights[n / 2 - 1] + heights[n / 2]);
+    return std::max(0.5, std::round(2.0 * median) / 2.0);
+}
+
 std::vector<std::byte> encode_rung_measurements(const species_rung_measurements& m) {
     binary_writer out;
     out.pod(k_format_version);
     out.pod(std::uint32_t(k_rung_table_size_count));
     out.text(m.species);
+    out.pod(std::uint8_t(m.work_counted));
     out.pod(std::uint32_t(m.rungs.size()));
     for (const rung_measurement& r : m.rungs) {
         out.pod(std::uint8_t(r.rung));
         for (const auto* table : {&r.error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles,
-                                  &r.shadow_triangles, &r.points, &r.lines})
+                                  &r.shadow_triangles, &r.points, &r.lines, &r.vertices, &r.fragments,
+                                  &r.shadow_vertices, &r.shadow_fragments})
             out.pod(*table);
     }
     return std::move(out.bytes());
@@ -208,6 +256,7 @@ species_rung_measurements decode_rung_measurements(std::span<const std::byte> by
         throw std::runtime_error("rung table: another number of sizes");
     species_rung_measurements m;
     m.species = in.text();
+    m.work_counted = in.pod<std::uint8_t>() != 0;
     const auto count = in.pod<std::uint32_t>();
     if (count >= std::uint32_t(representation::count))
         throw std::runtime_error("rung table: " + std::to_string(count) + " rungs");
@@ -218,7 +267,8 @@ species_rung_measurements decode_rung_measurements(std::span<const std::byte> by
             throw std::runtime_error("rung table: rung " + std::to_string(rung) + " is no representation");
         r.rung = representation(rung);
         for (auto* table : {&r.error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles, &r.shadow_triangles,
-                            &r.points, &r.lines}) {
+                            &r.points, &r.lines, &r.vertices, &r.fragments, &r.shadow_vertices,
+                            &r.shadow_fragments}) {
             *table = in.pod<std::array<float, k_rung_table_size_count>>();
             for (const float v : *table)
                 if (!std::isfinite(v) || v < 0.0f) throw std::runtime_error("rung table: a value of " + std::to_string(v));
@@ -230,7 +280,8 @@ species_rung_measurements decode_rung_measurements(std::span<const std::byte> by
 }
 
 species_rung_tables solver_tables(const species_rung_measurements& m, const ladder& ladder,
-                                  const std::optional<primitive_cost_model>& model, const point_line_quality& q) {
+                                  const std::optional<primitive_cost_model>& model, const point_line_quality& q,
+                                  const std::optional<shader_work_costs>& work) {
     const primitive_costs paper;
     const double triangle_us = model ? model->paths[std::size_t(cost_path::triangles)].a_us : 1.0;
     const double pixel_us = model ? model->paths[std::size_t(cost_path::triangles)].b_us_per_px : 0.0;
@@ -262,13 +313,19 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
         rung_table t;
         t.rung = it->rung;
         for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
-            const std::size_t whole = std::min(i, last_whole);
+            const std::size_t whole = std::min(i, last_whole), sh = shadow_size[i];
             out.plant_pixels[i] = float(double(it->plant_pixels[whole]) * beyond(i));  // the same for every rung
             t.error[i] = float(double(it->error_per_pixel[i]) * double(out.plant_pixels[i]));
-            t.shadow_cost_us[i] = float(double(it->shadow_triangles[shadow_size[i]]) * triangle_us);
-            t.cost_us[i] = float(double(it->triangles[i]) * triangle_us +
-                                 double(it->points[i]) * point_us + double(it->lines[i]) * line_us +
-                                 double(it->drawn_pixels[whole]) * beyond(i) * pixel_us);
+            t.drawn_pixels[i] = float(double(it->drawn_pixels[whole]) * beyond(i));
+            if (work && m.work_counted) {  // what the rung makes the device do, at its cost per unit
+                t.shadow_cost_us[i] = float(work->cost_us(0.0, 0.0, it->shadow_vertices[sh], it->shadow_fragments[sh]));
+                t.cost_us[i] = float(work->cost_us(it->vertices[i], double(it->fragments[whole]) * beyond(i), 0.0, 0.0));
+            } else {
+                t.shadow_cost_us[i] = float(double(it->shadow_triangles[sh]) * triangle_us);
+                t.cost_us[i] = float(double(it->triangles[i]) * triangle_us + double(it->points[i]) * point_us +
+                                     double(it->lines[i]) * line_us +
+                                     double(it->drawn_pixels[whole]) * beyond(i) * pixel_us);
+            }
         }
         out.rungs.push_back(t);
     }
@@ -278,15 +335,16 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
 std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, const std::vector<representation>& rungs,
                                                            const point_line_quality& points,
                                                            render::gl_context& context, bake_cache* cache,
-                                                           const std::function<void(const std::string&)>& progress) {
+                                                           const std::function<void(const std::string&)>& progress,
+                                                           double eye_height_m) {
     std::vector<species_rung_measurements> out;
     for (std::size_t i = 0; i < s.species.size(); ++i) {
         const scenario one = species_alone(s, i, k_rung_table_view_px);
         out.push_back(read_or_bake(
-            cache, "rung_tables", table_key(one, rungs, points),
+            cache, "rung_tables", table_key(one, rungs, points, eye_height_m),
             [&] {
                 if (progress) progress(s.species[i].name);  // measuring, not read from the cache
-                return encode_rung_measurements(measure_species(one, rungs, points, context, cache));
+                return encode_rung_measurements(measure_species(one, rungs, points, context, cache, eye_height_m));
             },
             [](const std::vector<std::byte>& bytes) { return decode_rung_measurements(bytes); }));
     }

@@ -26,6 +26,7 @@
 #include "systems/cull_system.h"
 #include "systems/fit_shadow_cascades_system.h"
 #include "resources/frame_stats.h"
+#include "resources/seen_pixels.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/pass_timer.h"
 #include "systems/render/submit_system.h"
@@ -65,6 +66,22 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<build_draw_list_system>();
     schedule.add<submit_system>();
     schedule.build();
+}
+
+// What the auto ladder aims at: the player's options, else the scenario's lod section. None:
+// the ladders switch by projected size.
+struct ladder_aim {
+    double plant_budget_ms = 0.0;
+    double target_frame_ms = 0.0;
+    double max_error = 0.0;
+    bool any() const { return plant_budget_ms > 0.0 || target_frame_ms > 0.0 || max_error > 0.0; }
+};
+
+ladder_aim aim_of(const scenario& s, const player_options& o) {
+    const ladder_aim own{o.plant_budget_ms, o.target_frame_ms, o.max_error};
+    if (own.any()) return own;
+    if (o.scenario_lod) return {s.lod.plant_budget_ms, s.lod.target_frame_ms, s.lod.max_error};
+    return {};
 }
 
 render::renderer_settings renderer_settings_of(const scenario& s) {
@@ -167,7 +184,9 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         // window's) may have been made current since it was created.
         context->make_current();
         render::renderer_settings settings = renderer_settings_of(m_scenario);
-        settings.id_buffer = options.id_buffer;
+        // The auto ladder weighs each plant by what the last frame showed of it
+        // (resources/seen_pixels.h), counted in the instance-ID buffer.
+        settings.id_buffer = options.id_buffer || (policy.mode == lod_policy::kind::ladder && aim_of(m_scenario, options).any());
         settings.fade_dissolve =
             policy.mode == lod_policy::kind::billboard_clouds || policy.mode == lod_policy::kind::ladder;
         m_renderer = std::make_unique<render::renderer>(settings, m_assets);
@@ -179,12 +198,16 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
                                                    false, options.calibration)
                                      .costs_for(policy.points));
         m_world.set_resource(auto_ladder(policy, options, *context, cache));
+        seen_pixels seen;
+        seen.wanted = m_world.resource<rung_budget>().active();
+        m_world.set_resource(std::move(seen));
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();
     }
     m_world.set_resource(device);
     if (!m_world.has_resource<rung_budget>()) m_world.set_resource(rung_budget{});
+    if (!m_world.has_resource<seen_pixels>()) m_world.set_resource(seen_pixels{});
 
     m_info.scenario = m_scenario.name;
     m_info.source = m_scenario.source;
@@ -319,35 +342,34 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
 rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_options& options,
                                         render::gl_context& context, bake_cache* cache) {
     rung_budget budget;
-    const bool own = options.plant_budget_ms > 0.0 || options.target_frame_ms > 0.0 || options.max_error > 0.0;
-    const auto choose = [&](double plant_budget_ms, double target_frame_ms, double max_error) {
-        budget.max_error = max_error;
-        budget.target_frame_ms = target_frame_ms;
-        // Under a frame-time target alone the budget climbs from every plant on its cheapest rung
-        // (systems/adapt_plant_budget_system.h).
-        budget.plant_budget_us = plant_budget_ms * 1000.0;
-    };
-    if (own)
-        choose(options.plant_budget_ms, options.target_frame_ms, options.max_error);
-    else if (options.scenario_lod)
-        choose(m_scenario.lod.plant_budget_ms, m_scenario.lod.target_frame_ms, m_scenario.lod.max_error);
-    const bool chosen_by_tables = budget.plant_budget_us > 0.0 || budget.max_error > 0.0 || budget.target_frame_ms > 0.0;
-    if (!chosen_by_tables || policy.mode != lod_policy::kind::ladder) return {};
+    const ladder_aim aim = aim_of(m_scenario, options);
+    budget.max_error = aim.max_error;
+    budget.target_frame_ms = aim.target_frame_ms;
+    // Under a frame-time target alone the budget climbs from every plant on its cheapest rung
+    // (systems/adapt_plant_budget_system.h).
+    budget.plant_budget_us = aim.plant_budget_ms * 1000.0;
+    if (!aim.any() || policy.mode != lod_policy::kind::ladder) return {};
     std::vector<representation> rungs;
     for (const ladder& l : policy.ladders)
         for (std::size_t r = 0; r < l.count; ++r)
             if (std::find(rungs.begin(), rungs.end(), l.rungs[r]) == rungs.end()) rungs.push_back(l.rungs[r]);
+    const heightfield& terrain = m_assets.terrain;
+    const double eye_height_m = typical_eye_height_m(
+        m_scenario, [&](double x, double z) { return double(terrain.height_at(x, z)); });
     const auto measured = measure_rung_tables(m_scenario, rungs, policy.points, context, cache,
                                               [](const std::string& species) {
                                                   spdlog::info("measuring the rung tables of {} (once; kept in the bake cache)", species);
-                                              });
+                                              },
+                                              eye_height_m);
     context.make_current();  // the measuring players drew in it
     std::optional<primitive_cost_model> model;
     if (cache && options.measure_costs)
         model = device_cost_model(*m_renderer, context, *cache, policy.points.splat_factor, false, options.calibration)
                     .model;
+    std::optional<shader_work_costs> work;
+    if (cache && options.measure_costs) work = device_work_costs(*m_renderer, context, *cache, false, options.calibration).costs;
     for (std::size_t i = 0; i < measured.size(); ++i)
-        budget.tables.push_back(solver_tables(measured[i], policy.ladders[i], model, policy.points));
+        budget.tables.push_back(solver_tables(measured[i], policy.ladders[i], model, policy.points, work));
     return budget;
 }
 

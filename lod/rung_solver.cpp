@@ -43,13 +43,14 @@ float interpolate_table(const std::array<float, k_rung_table_size_count>& table,
     return at(table, position_of(size_px));
 }
 
-rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen, bool casts) {
+rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen, bool casts,
+                              float seen_share) {
     rung_candidates c;
     c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
     const table_position p = position_of(size_px);  // once for every rung
     for (std::size_t r = 0; r < c.count; ++r) {
         const rung_table& t = tables.rungs[r];
-        c.error[r] = seen ? at(t.error, p) : 0.0f;
+        c.error[r] = seen ? seen_share * at(t.error, p) : 0.0f;
         c.cost_us[r] = (seen ? at(t.cost_us, p) : 0.0f) + (casts ? at(t.shadow_cost_us, p) : 0.0f);
     }
     c.plant_pixels = at(tables.plant_pixels, p);

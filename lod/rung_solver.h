@@ -47,6 +47,9 @@ struct rung_table {
     std::array<float, k_rung_table_size_count> error{};
     std::array<float, k_rung_table_size_count> cost_us{};
     std::array<float, k_rung_table_size_count> shadow_cost_us{};
+    // The pixels the rung covers alone in the view at each size (resources/seen_pixels.h: what
+    // a frame's count of the plant's pixels is a share of).
+    std::array<float, k_rung_table_size_count> drawn_pixels{};
 };
 
 // A species' rungs in ladder order (at most k_max_rungs), and the pixels its full geometry
@@ -68,8 +71,10 @@ struct rung_candidates {
 };
 // A plant only casting (outside the view, inside the shadow range) costs its shadow and shows
 // no error of its own, so it takes its cheapest rung; one seen beyond the shadow range costs
-// its view only.
-rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen = true, bool casts = true);
+// its view only. `seen_share` (0..1) of a seen plant's pixels show in the frame
+// (resources/seen_pixels.h): its errors are weighed by it, as the image shows them.
+rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen = true, bool casts = true,
+                              float seen_share = 1.0f);
 
 // The rung index minimising error + λ·cost, ties to the cheaper rung; `previous` (an index, or
 // k_max_rungs for none) is kept within the `hysteresis` band above.

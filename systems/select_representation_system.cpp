@@ -39,6 +39,15 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, pixel) *
                cam.lod_scale;
     };
+    // resources/seen_pixels.h: the share of the plant the last frame showed, of the pixels its
+    // rung then covers alone at its size.
+    const seen_pixels& seen = ctx.resource<seen_pixels>();
+    const auto share_of = [&](std::size_t plant, const species_rung_tables& tables, const lod_state& lod,
+                              float size) {
+        const std::uint8_t drawn = rung_index(tables, lod.current);
+        if (drawn >= tables.rungs.size()) return 1.0f;
+        return seen_share(seen, plant, interpolate_table(tables.rungs[drawn].drawn_pixels, size));
+    };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
     budget.histograms.assign(chunks, lambda_histogram{});
@@ -47,11 +56,14 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     if (!by_error) {
         ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
             lambda_histogram& h = budget.histograms[chunk];
+            std::size_t plant = begin;  // the dense index each_chunk walks
             plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                               lod_state& lod, fade_alpha&) {
-                if (lod.visible || lod.in_shadow_range)
-                    h.add(candidates_at(budget.tables[std::size_t(p.species)], size_of(t, p), lod.visible,
-                                        lod.in_shadow_range));
+                const std::size_t i = plant++;
+                if (!lod.visible && !lod.in_shadow_range) return;
+                const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
+                const float size = size_of(t, p);
+                h.add(candidates_at(tables, size, lod.visible, lod.in_shadow_range, share_of(i, tables, lod, size)));
             });
         });
     }
@@ -64,8 +76,10 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
         double& cost = budget.costs[chunk];
+        std::size_t plant = begin;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
                                           lod_state& lod, fade_alpha& fade) {
+            const std::size_t i = plant++;
             lod.previous = lod.current;
             if (!lod.visible && !lod.in_shadow_range) {
                 lod.current = representation::none;
@@ -73,7 +87,9 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                 return;
             }
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
-            const rung_candidates c = candidates_at(tables, size_of(t, p), lod.visible, lod.in_shadow_range);
+            const float size = size_of(t, p);
+            const rung_candidates c =
+                candidates_at(tables, size, lod.visible, lod.in_shadow_range, share_of(i, tables, lod, size));
             const std::uint8_t previous = rung_index(tables, lod.current);
             // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =

@@ -6,8 +6,9 @@
 // lod/billboard_cloud_lod.h), or each species' ladder by projected size (DESIGN §1.5,
 // lod/ladder.h); for the last two it writes the band's partner and fade into fade_alpha. With
 // measured rung tables (resources/rung_budget.h) a ladder's rung is instead the one the budget
-// solver picks (lod/rung_solver.h), and a plant that changes rung dissolves its old one over a
-// few frames. Records the previous choice so measurements can count switches.
+// solver picks (lod/rung_solver.h), each plant's error weighed by the share of it the last
+// frame showed (resources/seen_pixels.h), and a plant that changes rung dissolves its old one
+// over a few frames. Records the previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -18,13 +19,14 @@
 #include "resources/lod_policy.h"
 #include "resources/rung_budget.h"
 #include "resources/scene_assets.h"
+#include "resources/seen_pixels.h"
 
 namespace sylva {
 
 struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";
     static constexpr ecs::phase k_phase = ecs::phase::select;
-    using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy>;
+    using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy, seen_pixels>;
     using writes = ecs::writes<lod_state, fade_alpha, rung_budget>;
     static void run(ecs::system_context<select_representation_system>& ctx);
 };

@@ -61,6 +61,14 @@ std::vector<std::uint32_t> render_target::read_ids() const {
     return ids;
 }
 
+void render_target::read_ids_bottom_up(std::vector<std::uint32_t>& out) const {
+    out.resize(has_id_buffer() ? std::size_t(m_width) * std::size_t(m_height) : 0);
+    if (out.empty()) return;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(m_ids.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(out.size() * sizeof(std::uint32_t)),
+                      out.data());
+}
+
 image_rgba8 render_target::read_color() const {
     std::vector<std::uint8_t> bottom_up(std::size_t(m_width) * std::size_t(m_height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

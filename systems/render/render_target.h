@@ -20,6 +20,10 @@ public:
     // The ID attachment, rows top to bottom: 0 where nothing wrote an ID, else what the surface
     // shader wrote (draw-list instance index + 1). Empty without an ID buffer.
     std::vector<std::uint32_t> read_ids() const;
+    // The same IDs in GL's row order (bottom row first) into `out`, reusing its storage: for
+    // counting, where the order does not matter and a frame must not allocate. Empty without
+    // an ID buffer.
+    void read_ids_bottom_up(std::vector<std::uint32_t>& out) const;
     bool has_id_buffer() const { return m_ids.id() != 0; }
     void blit_to_default(int window_width, int window_height) const;
     int width() const { return m_width; }

@@ -103,6 +103,7 @@ public:
     // buffer), else the index into the frame's draw_list::instances plus 1. The terrain is the
     // instance after the last plant instance.
     std::vector<std::uint32_t> read_ids() const { return m_target.read_ids(); }
+    void read_ids_bottom_up(std::vector<std::uint32_t>& out) const { m_target.read_ids_bottom_up(out); }
     void present(int window_width, int window_height) const;
     std::size_t programs_compiled() const { return m_programs.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }

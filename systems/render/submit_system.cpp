@@ -25,6 +25,12 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     const auto finished = std::chrono::steady_clock::now();
     stats.submit_cpu_ms = std::chrono::duration<double, std::milli>(issued - start).count();
     stats.finish_ms = std::chrono::duration<double, std::milli>(finished - issued).count();
+    seen_pixels& seen = ctx.resource_mut<seen_pixels>();
+    seen.measured = false;
+    if (seen.wanted) {
+        device.renderer->read_ids_bottom_up(seen.ids);
+        if (!seen.ids.empty()) count_seen_pixels(seen.ids, ctx.resource<draw_list>(), seen);
+    }
 }
 
 }  // namespace sylva

@@ -1,6 +1,7 @@
 #pragma once
 // The one GL submission system: gathers the frame's camera, sun, environment, cascades and draw
-// list and hands them to the renderer. A main-thread system: it runs on the thread that owns
+// list and hands them to the renderer; when the auto ladder wants it, counts what the frame
+// showed of each plant (resources/seen_pixels.h). A main-thread system: it runs on the thread that owns
 // the GL context, after every parallel system of the frame has finished.
 #include "components/camera.h"
 #include "components/environment.h"
@@ -11,6 +12,7 @@
 #include "lighting/shadow_cascades.h"
 #include "resources/lod_policy.h"
 #include "resources/playback.h"
+#include "resources/seen_pixels.h"
 #include "systems/render/renderer.h"
 
 namespace sylva {
@@ -26,7 +28,7 @@ struct submit_system {
     static constexpr ecs::phase k_phase = ecs::phase::submit;
     static constexpr bool k_main_thread = true;
     using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy>;
-    using writes = ecs::writes<render_device, frame_stats>;
+    using writes = ecs::writes<render_device, frame_stats, seen_pixels>;
     static void run(ecs::system_context<submit_system>& ctx);
 };
 

@@ -67,12 +67,29 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
             EXPECT_LT(cloud.error_per_pixel[i], crossed.error_per_pixel[i]) << "size " << k_rung_table_sizes_px[i];
         }
     }
+    // The shader work each rung adds, counted by the device (llvmpipe counts): a full tree
+    // runs more vertices than its cloud, the cloud more than two crossed quads; large on screen
+    // the tree's overlapping leaves shade more fragments than the quads' two layers.
+    ASSERT_TRUE(tree.work_counted);
+    const rung_measurement& reduced = of(tree, representation::mesh_reduced);
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+        SCOPED_TRACE("size " + std::to_string(k_rung_table_sizes_px[i]));
+        EXPECT_GT(full.vertices[i], reduced.vertices[i]);
+        EXPECT_GT(full.vertices[i], cloud.vertices[i]);
+        EXPECT_GT(cloud.vertices[i], crossed.vertices[i]);
+        if (k_rung_table_sizes_px[i] >= 64.0f) {
+            EXPECT_GT(full.fragments[i], crossed.fragments[i]);
+        }
+    }
     // The bytes the cache keeps come back equal; a cut entry is refused.
     const std::vector<std::byte> bytes = encode_rung_measurements(tree);
     const species_rung_measurements back = decode_rung_measurements(bytes);
     EXPECT_EQ(back.species, tree.species);
     ASSERT_EQ(back.rungs.size(), tree.rungs.size());
     EXPECT_EQ(back.rungs[2].error_per_pixel, tree.rungs[2].error_per_pixel);
+    EXPECT_EQ(back.work_counted, tree.work_counted);
+    EXPECT_EQ(back.rungs[0].fragments, tree.rungs[0].fragments);
+    EXPECT_EQ(back.rungs[4].shadow_fragments, tree.rungs[4].shadow_fragments);
     EXPECT_THROW(decode_rung_measurements(std::span(bytes).first(bytes.size() - 3)), std::runtime_error);
 }
 
