@@ -65,8 +65,8 @@ double pixels_of(const calibration_point& p) {
     return splat_pixels(p.quality);
 }
 
-// Median and the standard error of the median (1.2533 σ/√n, σ from the median absolute
-// deviation: robust to the odd frame a busy machine stretches).
+}  // namespace
+
 std::pair<double, double> median_and_error(std::vector<double> v) {
     if (v.empty()) return {0.0, 0.0};
     std::sort(v.begin(), v.end());
@@ -79,7 +79,18 @@ std::pair<double, double> median_and_error(std::vector<double> v) {
     return {median, 1.2533 * 1.4826 * mad / std::sqrt(double(n))};
 }
 
-}  // namespace
+calibration_view calibration_view_for(const renderer& r) {
+    calibration_view v;
+    v.cam.position = {0.0, 0.0, 0.0};
+    v.cam.forward = {0.0f, 0.0f, -1.0f};
+    v.cam.aspect = float(r.settings().width) / float(r.settings().height);
+    v.cam.viewport_height_px = float(r.settings().height);
+    derive_camera_matrices(v.cam);
+    v.pixel_m = float(image_plane_units(1.0, v.cam.fov_y, v.cam.viewport_height_px)) * k_calibration_distance_m;
+    v.half_height_m = 0.3f * std::tan(0.5f * v.cam.fov_y) * k_calibration_distance_m;
+    v.half_width_m = v.half_height_m * v.cam.aspect;
+    return v;
+}
 
 double wall_clock_ms(const calibration_frame&, const std::function<void()>& draw) {
     const auto start = std::chrono::steady_clock::now();
@@ -106,16 +117,9 @@ frame_timer device_frame_timer(const std::string& gl_renderer) {
 
 calibration_result calibrate_primitive_costs(renderer& r, const calibration_settings& settings) {
     const auto start = std::chrono::steady_clock::now();
-    camera cam;
-    cam.position = {0.0, 0.0, 0.0};
-    cam.forward = {0.0f, 0.0f, -1.0f};
-    cam.aspect = float(r.settings().width) / float(r.settings().height);
-    cam.viewport_height_px = float(r.settings().height);
-    derive_camera_matrices(cam);
-    const auto pixel_m =
-        float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_calibration_distance_m;
-    const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_calibration_distance_m;
-    const float half_width = half_height * cam.aspect;
+    calibration_view eye = calibration_view_for(r);
+    camera& cam = eye.cam;
+    const float pixel_m = eye.pixel_m, half_width = eye.half_width_m, half_height = eye.half_height_m;
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
     std::array<std::uint16_t, 3> meshes{};
     for (const primitive_kind kind :

@@ -26,6 +26,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lod/primitive_cost_model.h"
@@ -42,6 +43,21 @@ inline constexpr float k_calibration_distance_m = 20.0f;
 // per pixel there).
 mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m, float half_width_m,
                            float half_height_m, double triangle_leg_px = k_calibration_triangle_px);
+
+// The eye the calibrations draw for (at the origin, looking down -z, at the renderer's frame
+// size), the metres per pixel at k_calibration_distance_m and the half extents the primitives
+// are scattered over there.
+struct calibration_view {
+    camera cam;
+    float pixel_m = 0.0f;
+    float half_width_m = 0.0f;
+    float half_height_m = 0.0f;
+};
+calibration_view calibration_view_for(const renderer& r);
+
+// Median of the repetitions and the median's standard error (1.2533 σ/√n, σ from the median
+// absolute deviation: robust to the odd frame a busy machine stretches). {0, 0} when empty.
+std::pair<double, double> median_and_error(std::vector<double> v);
 
 // One frame the calibration times: `count` primitives on `path`, drawn at `quality`.
 struct calibration_frame {

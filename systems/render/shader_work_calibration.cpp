@@ -5,39 +5,20 @@
 #include <chrono>
 #include <cmath>
 
-#include "systems/update_camera_system.h"
 
 namespace sylva::render {
 namespace {
 
 constexpr double k_large_triangle_px = 24.0;
 
-// Median and its standard error (1.2533 σ/√n, σ from the median absolute deviation).
-std::pair<double, double> median_and_error(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    std::vector<double> deviation;
-    for (const double x : v) deviation.push_back(std::abs(x - median));
-    std::sort(deviation.begin(), deviation.end());
-    const double mad = n % 2 ? deviation[n / 2] : 0.5 * (deviation[n / 2 - 1] + deviation[n / 2]);
-    return {median, 1.2533 * 1.4826 * mad / std::sqrt(double(n))};
-}
-
 }  // namespace
 
 work_calibration_result calibrate_shader_work(renderer& r, const calibration_settings& settings) {
     const auto start = std::chrono::steady_clock::now();
     work_calibration_result result;
-    camera cam;
-    cam.position = {0.0, 0.0, 0.0};
-    cam.forward = {0.0f, 0.0f, -1.0f};
-    cam.aspect = float(r.settings().width) / float(r.settings().height);
-    cam.viewport_height_px = float(r.settings().height);
-    derive_camera_matrices(cam);
-    const auto pixel_m = float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_calibration_distance_m;
-    const float half_height = 0.3f * std::tan(0.5f * cam.fov_y) * k_calibration_distance_m;
-    const float half_width = half_height * cam.aspect;
+    calibration_view eye = calibration_view_for(r);
+    camera& cam = eye.cam;
+    const float pixel_m = eye.pixel_m, half_width = eye.half_width_m, half_height = eye.half_height_m;
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
     const std::array<std::uint16_t, 2> meshes{
         r.add_mesh(calibration_mesh(primitive_kind::triangles, capacity, pixel_m, half_width, half_height,
