@@ -107,7 +107,7 @@ void print_work(const device_work_calibration& w) {
     std::printf("shader work (the auto ladder's rung costs):\n");
     if (w.measurement) {
         static constexpr const char* k_shapes[] = {"small triangles, view", "large triangles, view",
-                                                   "large triangles, shadow"};
+                                                   "large triangles, shadow", "tiny triangles, view"};
         for (std::size_t i = 0; i < w.measurement->samples.size(); ++i) {
             const work_sample& s = w.measurement->samples[i];
             std::printf("  %-24s %9.1f ± %.1f us for %.0f vertices, %.0f fragments, %.0f shadow fragments\n",
@@ -214,7 +214,7 @@ command_runner add_calibrate_command(CLI::App& app) {
         "the paper's costs (Deussen 2002 §4.1: a triangle as three points). The cache key names "
         "the CPU model "
         "and threads, LP_NUM_THREADS, the GL renderer and version. It also measures what a vertex, a view "
-        "fragment and a shadow-map fragment cost (small and large triangles in the view, large ones into a "
+        "fragment and a shadow-map fragment cost (tiny, small and large triangles in the view, large ones into a "
         "shadow map, the invocations counted by the device): the auto ladder costs each rung from the shader "
         "work its tables counted.");
     return [o] { return calibrate(*o); };

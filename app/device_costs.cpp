@@ -149,7 +149,7 @@ device_work_calibration device_work_costs(render::renderer& r, const render::gl_
                                           bool force, const render::calibration_settings& settings) {
     // The splat factor does not change what shader work costs: the key takes the default one.
     const std::string device = describe_cost_device(context, r, calibration_settings_splat_factor);
-    const std::uint64_t key = hash_string(device, hash_string("shader_work_costs/1"));
+    const std::uint64_t key = hash_string(device, hash_string("shader_work_costs/2"));
     if (!force)
         if (const auto bytes = cache.load("shader_work_costs", key)) {
             try {

@@ -35,11 +35,15 @@ shader_work_costs fit_shader_work(const std::vector<work_sample>& samples) {
     for (const double v : scale)
         if (!(v > 0.0)) throw work_calibration_refused("the samples do not draw every kind of work");
     std::array<std::array<double, 4>, 3> m{};  // [A | b]
+    // Each sample's row divided by its time: the residuals are relative, so the shadow shape's
+    // hundreds of milliseconds do not drown the tiny triangles' tens.
     for (const work_sample& s : samples) {
-        const std::array<double, 3> x{s.vertices / scale[0], s.fragments / scale[1], s.shadow_fragments / scale[2]};
+        const double w = 1.0 / s.us;
+        const std::array<double, 3> x{w * s.vertices / scale[0], w * s.fragments / scale[1],
+                                      w * s.shadow_fragments / scale[2]};
         for (std::size_t i = 0; i < 3; ++i) {
             for (std::size_t j = 0; j < 3; ++j) m[i][j] += x[i] * x[j];
-            m[i][3] += x[i] * s.us;
+            m[i][3] += x[i] * (w * s.us);
         }
     }
     const double size = m[0][0] + m[1][1] + m[2][2];

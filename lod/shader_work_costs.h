@@ -15,8 +15,8 @@
 // ladder was predicted at 986 ms and took 293; one of crossed billboards at 46 and took 57.
 //
 // The three coefficients come from timing frames of calibration triangles whose invocations the
-// device counts (systems/render/shader_work_calibration.h): small and large triangles in the
-// view, large ones into a shadow map.
+// device counts (systems/render/shader_work_calibration.h): tiny, small and large triangles in
+// the view, large ones into a shadow map.
 #include <stdexcept>
 #include <vector>
 
@@ -48,7 +48,7 @@ struct work_calibration_refused : std::runtime_error {
 };
 
 // Least squares of t = c_v·V + c_f·F + c_s·S through the samples (at least three whose counts
-// are independent). Refuses (work_calibration_refused, naming the figures) when a sample's time
+// are independent), each residual relative to its sample's time. Refuses (work_calibration_refused, naming the figures) when a sample's time
 // is not 5 standard errors above zero, when the counts cannot separate the three coefficients,
 // or when a coefficient comes out negative (a timer that cannot be trusted; the caller then costs
 // rungs by their triangles).

@@ -4,12 +4,17 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 
 namespace sylva::render {
 namespace {
 
 constexpr double k_large_triangle_px = 24.0;
+// Legs of 0.4 px: most such triangles cover no sample and, like most leaf triangles of a plant
+// in a frame, cost their vertices and little raster set-up.
+constexpr double k_tiny_triangle_px = 0.4;
+constexpr std::size_t k_shapes = 4;
 
 }  // namespace
 
@@ -20,11 +25,13 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
     camera& cam = eye.cam;
     const float pixel_m = eye.pixel_m, half_width = eye.half_width_m, half_height = eye.half_height_m;
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
-    const std::array<std::uint16_t, 2> meshes{
+    const std::array<std::uint16_t, 3> meshes{
         r.add_mesh(calibration_mesh(primitive_kind::triangles, capacity, pixel_m, half_width, half_height,
                                     k_calibration_triangle_px)),
         r.add_mesh(calibration_mesh(primitive_kind::triangles, capacity, pixel_m, half_width, half_height,
-                                    k_large_triangle_px))};
+                                    k_large_triangle_px)),
+        r.add_mesh(calibration_mesh(primitive_kind::triangles, capacity, pixel_m, half_width, half_height,
+                                    k_tiny_triangle_px))};
 
     sun light;
     light.direction = glm::normalize(glm::vec3(0.3f, 0.8f, 0.4f));
@@ -33,7 +40,15 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
     // the view's shade the frame (and the view's fragments look the map up, as a scene's do).
     cascade_set cascades;
     cascades.count = 1;
-    cascades.light_view_projection[0] = cam.projection * cam.view;
+    // The map's texels as large as the view's pixels, so the shadow shape's triangles shade
+    // about as many texels as the view's large ones shade pixels whatever the map's resolution
+    // (the camera's own frustum on a 1024 map drew 24 px triangles over 70,000 texels each
+    // from a 64-pixel-high view). A map coarser than the view keeps the camera's frustum.
+    const float map_px = float(r.settings().shadow_resolution);
+    cascades.light_view_projection[0] =
+        glm::scale(glm::mat4(1.0f), glm::vec3(std::min(1.0f, float(r.settings().width) / map_px),
+                                              std::min(1.0f, float(r.settings().height) / map_px), 1.0f)) *
+        cam.projection * cam.view;
     cascades.split_far[0] = 1e4f;
     cascades.texel_world_size[0] = pixel_m;
     draw_list list;
@@ -50,8 +65,9 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
         std::uint16_t mesh;
         render_pass pass;
     };
-    const std::array<shape, 3> shapes{shape{meshes[0], render_pass::opaque}, shape{meshes[1], render_pass::opaque},
-                                      shape{meshes[1], render_pass::shadow_cascade_0}};
+    const std::array<shape, k_shapes> shapes{
+        shape{meshes[0], render_pass::opaque}, shape{meshes[1], render_pass::opaque},
+        shape{meshes[1], render_pass::shadow_cascade_0}, shape{meshes[2], render_pass::opaque}};
     const frame_timer timer = settings.timer ? settings.timer : frame_timer(process_cpu_ms);
     struct frame_work {
         double ms = 0.0;
@@ -81,7 +97,7 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
     (void)draw(shapes[2], 1);
     // N per shape as the primitive calibration chooses it: doubled until 2N costs
     // min_marginal_ms more than N.
-    std::array<std::uint32_t, 3> counts{};
+    std::array<std::uint32_t, k_shapes> counts{};
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         std::uint32_t n = std::min(settings.first_count, settings.max_count / 2);
         (void)draw(shapes[i], 2 * n);
@@ -98,8 +114,8 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
             if (p != std::size_t(gpu_pass::shadow)) total += double(pass[p]);
         return total;
     };
-    std::array<std::vector<double>, 3> marginal_ms;
-    std::array<work_sample, 3> added{};
+    std::array<std::vector<double>, k_shapes> marginal_ms;
+    std::array<work_sample, k_shapes> added{};
     for (int rep = 0; rep < settings.max_repetitions; ++rep) {
         bool any = false;
         for (std::size_t k = 0; k < shapes.size(); ++k) {

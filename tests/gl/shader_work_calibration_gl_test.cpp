@@ -3,6 +3,7 @@
 // sample from its counts, and it refuses a timer that sees no work.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 
 #include "gl_test_support.h"
@@ -37,38 +38,47 @@ struct shadowed_renderer {
     }();
 };
 
-// A made-up device: 7 ms a frame, and per triangle 1 µs small, 2 µs large, 4 µs into the shadow map.
-double made_up_ms(const render::calibration_frame& f) {
-    constexpr double k_us[] = {1.0, 2.0, 4.0};
-    return 7.0 + 1e-3 * double(f.count) * k_us[f.shape];
-}
-
-TEST(shader_work_calibration, counts_the_shapes_it_draws_and_fits_every_sample) {
+// A made-up device whose frames cost 7 ms and then exactly c_v = 0.2 µs per vertex, c_f =
+// 0.003 per view fragment and c_s = 0.002 per shadow fragment. The timer sees only the shape
+// and the count, so a first calibration learns each shape's invocations per triangle (the
+// device counts the same every time), and the second times the frames by them.
+TEST(shader_work_calibration, counts_the_shapes_it_draws_and_recovers_a_known_device) {
     SYLVA_REQUIRE_GL();
     shadowed_renderer s;
-    const render::work_calibration_result result =
+    const render::work_calibration_result counted =
         render::calibrate_shader_work(*s.r, quick([](const render::calibration_frame& f, const auto& draw) {
             draw();
-            return made_up_ms(f);
+            return 7.0 + 1e-3 * double(f.count) * (1.0 + double(f.shape));
         }));
-    ASSERT_TRUE(result.costs) << result.refusal;
-    ASSERT_EQ(result.samples.size(), 3u);
-    const work_sample &small = result.samples[0], &large = result.samples[1], &shadow = result.samples[2];
+    ASSERT_EQ(counted.samples.size(), 4u);
+    const work_sample &small = counted.samples[0], &large = counted.samples[1], &shadow = counted.samples[2],
+                      &tiny = counted.samples[3];
     // 2,000 more unindexed triangles: 3 vertices each, in every shape.
-    EXPECT_EQ(small.vertices, 6000.0);
-    EXPECT_EQ(large.vertices, 6000.0);
-    EXPECT_EQ(shadow.vertices, 6000.0);
-    // Legs of 4 and 24 px: 8 and 288 px of area; the large shade far more fragments.
+    for (const work_sample& w : counted.samples) EXPECT_EQ(w.vertices, 6000.0);
+    // Legs of 0.4, 4 and 24 px: the large shade far more fragments than the small, the tiny
+    // far fewer (most cover no sample).
     EXPECT_GT(large.fragments, 10.0 * small.fragments);
     EXPECT_GT(small.fragments, 2000.0 * 4.0);
+    EXPECT_LT(tiny.fragments, small.fragments / 4.0);
     EXPECT_EQ(shadow.fragments, 0.0) << "the shadow shape draws nothing in the view";
     EXPECT_GT(shadow.shadow_fragments, 0.0);
     EXPECT_EQ(small.shadow_fragments, 0.0);
-    // Three samples, three coefficients: the fit reproduces each sample's time (2, 4 and 8 ms).
-    for (const work_sample& w : result.samples)
-        EXPECT_NEAR(result.costs->cost_us(w.vertices, w.fragments, 0.0, w.shadow_fragments), w.us, 1e-6 * w.us);
-    EXPECT_NEAR(small.us, 2000.0, 1e-6);
-    EXPECT_NEAR(shadow.us, 8000.0, 1e-6);
+
+    const shader_work_costs device{0.2, 0.003, 0.002};
+    std::array<double, 4> per_triangle_us{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const work_sample& w = counted.samples[i];
+        per_triangle_us[i] = device.cost_us(w.vertices, w.fragments, 0.0, w.shadow_fragments) / 2000.0;
+    }
+    const render::work_calibration_result result = render::calibrate_shader_work(
+        *s.r, quick([&](const render::calibration_frame& f, const auto& draw) {
+            draw();
+            return 7.0 + 1e-3 * double(f.count) * per_triangle_us[f.shape];
+        }));
+    ASSERT_TRUE(result.costs) << result.refusal;
+    EXPECT_NEAR(result.costs->vertex_us, 0.2, 1e-6);
+    EXPECT_NEAR(result.costs->fragment_us, 0.003, 1e-9);
+    EXPECT_NEAR(result.costs->shadow_fragment_us, 0.002, 1e-9);
 }
 
 TEST(shader_work_calibration, refuses_a_timer_that_sees_no_work) {
