@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "app/scenario_player.h"
+#include "calibration_test_support.h"
 #include "gl_test_support.h"
 #include "models/cache/bake_cache.h"
 #include "models/random.h"
@@ -32,16 +33,7 @@ scene_assets tiny_assets() {
         nullptr);
 }
 
-render::calibration_settings quick(render::frame_timer timer) {
-    render::calibration_settings s;
-    s.first_count = 2000;
-    s.max_count = 8000;
-    s.min_marginal_ms = 1.0;
-    s.min_repetitions = 3;
-    s.max_repetitions = 3;
-    s.timer = std::move(timer);
-    return s;
-}
+using testing::quick_calibration;
 
 // What a frame of `f` costs in a made-up device: 7 ms of its own, plus per primitive
 // 0.5 + 0.02·pixels µs (soft splats), 1 + 0.01·pixels (triangles), 0.3 + 0.05·pixels (the rest).
@@ -69,7 +61,7 @@ TEST(primitive_cost_calibration, recovers_a_known_device_exactly_through_the_ren
     const scene_assets assets = tiny_assets();
     auto r = small_renderer(assets);
     const render::calibration_result result = render::calibrate_primitive_costs(
-        *r, quick([](const render::calibration_frame& f, const auto& draw) {
+        *r, quick_calibration([](const render::calibration_frame& f, const auto& draw) {
             draw();
             return made_up_ms(f);
         }));
@@ -92,14 +84,14 @@ TEST(primitive_cost_calibration, refuses_a_timer_that_reports_noise_or_nothing) 
     auto r = small_renderer(assets);
     rng random(42, 0);
     const render::calibration_result noise = render::calibrate_primitive_costs(
-        *r, quick([&](const render::calibration_frame&, const auto& draw) {
+        *r, quick_calibration([&](const render::calibration_frame&, const auto& draw) {
             draw();
             return double(random.uniform(0.0f, 50.0f));
         }));
     EXPECT_FALSE(noise.model);
     EXPECT_NE(noise.refusal, "");
     const render::calibration_result constant = render::calibrate_primitive_costs(
-        *r, quick([](const render::calibration_frame&, const auto& draw) {
+        *r, quick_calibration([](const render::calibration_frame&, const auto& draw) {
             draw();
             return 16.0;
         }));
@@ -110,7 +102,7 @@ TEST(primitive_cost_calibration, refuses_a_timer_that_reports_noise_or_nothing) 
     // in [0, 1), so every marginal time c(1 + 2u₂ − u₁) is positive, but its spread is as large
     // as its value: the signal-to-noise rule alone refuses it.
     const render::calibration_result swamped = render::calibrate_primitive_costs(
-        *r, quick([&](const render::calibration_frame& f, const auto& draw) {
+        *r, quick_calibration([&](const render::calibration_frame& f, const auto& draw) {
             draw();
             return 1e-3 * double(f.count) * (1.0 + double(random.uniform(0.0f, 1.0f)));
         }));
@@ -151,7 +143,7 @@ TEST(primitive_cost_calibration, leaves_no_trace_in_the_frames_after_it) {
     options.policy.mode = lod_policy::kind::points_lines;
     options.policy.points = {2.0f, 1.3f};
     options.measure_costs = true;
-    options.calibration = quick(render::process_cpu_ms);
+    options.calibration = quick_calibration(render::process_cpu_ms);
     scenario_player calibrated(s, 2, testing::shared_gl_context(), &cache, options);
     calibrated.step();
     const image_rgba8 after = calibrated.capture();

@@ -6,6 +6,7 @@
 #include <array>
 #include <filesystem>
 
+#include "calibration_test_support.h"
 #include "gl_test_support.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
@@ -14,16 +15,7 @@
 namespace sylva {
 namespace {
 
-render::calibration_settings quick(render::frame_timer timer) {
-    render::calibration_settings s;
-    s.first_count = 2000;
-    s.max_count = 8000;
-    s.min_marginal_ms = 1.0;
-    s.min_repetitions = 3;
-    s.max_repetitions = 3;
-    s.timer = std::move(timer);
-    return s;
-}
+using testing::quick_calibration;
 
 struct shadowed_renderer {
     scene_assets assets = build_scene_assets(
@@ -46,7 +38,7 @@ TEST(shader_work_calibration, counts_the_shapes_it_draws_and_recovers_a_known_de
     SYLVA_REQUIRE_GL();
     shadowed_renderer s;
     const render::work_calibration_result counted =
-        render::calibrate_shader_work(*s.r, quick([](const render::calibration_frame& f, const auto& draw) {
+        render::calibrate_shader_work(*s.r, quick_calibration([](const render::calibration_frame& f, const auto& draw) {
             draw();
             return 7.0 + 1e-3 * double(f.count) * (1.0 + double(f.shape));
         }));
@@ -71,7 +63,7 @@ TEST(shader_work_calibration, counts_the_shapes_it_draws_and_recovers_a_known_de
         per_triangle_us[i] = device.cost_us(w.vertices, w.fragments, 0.0, w.shadow_fragments) / 2000.0;
     }
     const render::work_calibration_result result = render::calibrate_shader_work(
-        *s.r, quick([&](const render::calibration_frame& f, const auto& draw) {
+        *s.r, quick_calibration([&](const render::calibration_frame& f, const auto& draw) {
             draw();
             return 7.0 + 1e-3 * double(f.count) * per_triangle_us[f.shape];
         }));
@@ -85,7 +77,7 @@ TEST(shader_work_calibration, refuses_a_timer_that_sees_no_work) {
     SYLVA_REQUIRE_GL();
     shadowed_renderer s;
     const render::work_calibration_result constant =
-        render::calibrate_shader_work(*s.r, quick([](const render::calibration_frame&, const auto& draw) {
+        render::calibrate_shader_work(*s.r, quick_calibration([](const render::calibration_frame&, const auto& draw) {
             draw();
             return 16.0;
         }));
