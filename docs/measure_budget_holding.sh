@@ -40,8 +40,9 @@ print("| target ms | median GPU ms | median / target | min–max GPU ms | median
 print("|---:|---:|---:|---:|---:|")
 for t, gpu, predicted, lo, hi in rows:
     print(f"| {t:g} | {gpu:.1f} | {gpu / t:.3f} | {lo:.0f}–{hi:.0f} | {predicted:.1f} |")
-print("\nThe predicted plant cost is the device calibration's (triangles, points, lines and pixels "
-      "at their measured costs); the controller uses only the ratio of measured frames to the target, "
-      "so the two need not agree (systems/adapt_plant_budget_system.h).")
+print("\nThe predicted plant cost is the shader work the rung tables counted for each plant's rung, "
+      "at the device calibration's cost per vertex and fragment (lod/shader_work_costs.h; process CPU "
+      "time); the controller uses only the ratio of measured frames to the target, so the two need "
+      "not agree (systems/adapt_plant_budget_system.h).")
 PY
 echo "measure_budget_holding: wrote docs/results/budget_holding.md" >&2
