@@ -21,6 +21,7 @@
 #include "systems/cull_system.h"
 #include "resources/draw_list.h"
 #include "resources/rung_budget.h"
+#include "resources/seen_pixels.h"
 #include "systems/fit_shadow_cascades_system.h"
 #include "systems/select_representation_system.h"
 #include "systems/update_camera_system.h"
@@ -116,6 +117,15 @@ struct landscape {
         }
         world.set_resource(std::move(policy));
         world.set_resource(std::move(budget));
+        // What a frame showed of each plant (resources/seen_pixels.h), as the submit system
+        // leaves it: every plant drawn, 50 pixels each, so each weighs its share.
+        seen_pixels seen;
+        if (solver) {
+            seen.measured = true;
+            seen.by_plant.assign(k_plants, 50u);
+            seen.in_view.assign(k_plants, 1u);
+        }
+        world.set_resource(std::move(seen));
         world.set_resource(primitive_costs{});
         world.set_resource(tile_point_sets{});
         world.set_resource(tile_point_draws{});

@@ -44,10 +44,15 @@ float interpolate_table(const std::array<float, k_rung_table_size_count>& table,
 }
 
 rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen, bool casts,
-                              float seen_share) {
+                              shown_last_frame shown) {
     rung_candidates c;
     c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
     const table_position p = position_of(size_px);  // once for every rung
+    float seen_share = 1.0f;
+    if (shown.pixels >= 0.0f && shown.rung < c.count) {
+        const float alone = at(tables.rungs[shown.rung].drawn_pixels, p);
+        if (alone >= 1.0f) seen_share = std::min(1.0f, shown.pixels / alone);
+    }
     for (std::size_t r = 0; r < c.count; ++r) {
         const rung_table& t = tables.rungs[r];
         c.error[r] = seen ? seen_share * at(t.error, p) : 0.0f;

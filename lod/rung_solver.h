@@ -69,12 +69,20 @@ struct rung_candidates {
     float plant_pixels = 0.0f;
     std::uint8_t count = 0;
 };
+// What the last frame showed of a plant (resources/seen_pixels.h): its pixels there and the rung
+// (an index into its tables) it was drawn with; pixels below 0 or no rung: not known, whole.
+struct shown_last_frame {
+    float pixels = -1.0f;
+    std::uint8_t rung = k_max_rungs;
+};
+
 // A plant only casting (outside the view, inside the shadow range) costs its shadow and shows
 // no error of its own, so it takes its cheapest rung; one seen beyond the shadow range costs
-// its view only. `seen_share` (0..1) of a seen plant's pixels show in the frame
-// (resources/seen_pixels.h): its errors are weighed by it, as the image shows them.
+// its view only. A seen plant's errors are weighed by the share of its pixels the last frame
+// showed, `shown` over what its rung then covers alone at this size (at most 1), as the image
+// shows them.
 rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen = true, bool casts = true,
-                              float seen_share = 1.0f);
+                              shown_last_frame shown = {});
 
 // The rung index minimising error + λ·cost, ties to the cheaper rung; `previous` (an index, or
 // k_max_rungs for none) is kept within the `hysteresis` band above.

@@ -33,13 +33,10 @@ struct seen_pixels {
     bool drawn(std::size_t plant) const { return plant < in_view.size() && in_view[plant] != 0; }
 };
 
-// The share of a plant's pixels the last frame showed: its pixels over `drawn_alone` (what its
-// rung covers alone at its size), at most 1; 1 when the last frame did not count or did not
-// draw the plant in the view, or when its rung covers no pixel alone.
-inline float seen_share(const seen_pixels& seen, std::size_t plant, float drawn_alone) {
-    if (!seen.measured || !seen.drawn(plant) || !(drawn_alone >= 1.0f)) return 1.0f;
-    const float share = float(seen.at(plant)) / drawn_alone;
-    return share < 1.0f ? share : 1.0f;
+// A plant's pixels in the last frame, or -1 when the last frame did not count or did not draw
+// it in the view (then it is judged whole; lod/rung_solver.h shown_last_frame).
+inline float shown_pixels(const seen_pixels& seen, std::size_t plant) {
+    return seen.measured && seen.drawn(plant) ? float(seen.at(plant)) : -1.0f;
 }
 
 // Counts each plant's pixels in `ids` (per pixel, the draw-list item index + 1 the renderer

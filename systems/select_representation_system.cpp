@@ -39,14 +39,10 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, pixel) *
                cam.lod_scale;
     };
-    // resources/seen_pixels.h: the share of the plant the last frame showed, of the pixels its
-    // rung then covers alone at its size.
+    // resources/seen_pixels.h: what the last frame showed of the plant, and with which rung.
     const seen_pixels& seen = ctx.resource<seen_pixels>();
-    const auto share_of = [&](std::size_t plant, const species_rung_tables& tables, const lod_state& lod,
-                              float size) {
-        const std::uint8_t drawn = rung_index(tables, lod.current);
-        if (drawn >= tables.rungs.size()) return 1.0f;
-        return seen_share(seen, plant, interpolate_table(tables.rungs[drawn].drawn_pixels, size));
+    const auto shown_of = [&](std::size_t plant, const species_rung_tables& tables, const lod_state& lod) {
+        return shown_last_frame{shown_pixels(seen, plant), rung_index(tables, lod.current)};
     };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
@@ -63,7 +59,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                 if (!lod.visible && !lod.in_shadow_range) return;
                 const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
                 const float size = size_of(t, p);
-                h.add(candidates_at(tables, size, lod.visible, lod.in_shadow_range, share_of(i, tables, lod, size)));
+                h.add(candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod)));
             });
         });
     }
@@ -89,7 +85,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
             const float size = size_of(t, p);
             const rung_candidates c =
-                candidates_at(tables, size, lod.visible, lod.in_shadow_range, share_of(i, tables, lod, size));
+                candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod));
             const std::uint8_t previous = rung_index(tables, lod.current);
             // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =

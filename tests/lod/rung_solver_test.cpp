@@ -174,23 +174,36 @@ TEST(rung_solver, a_plant_only_casting_pays_its_shadow_and_shows_no_error) {
 }
 
 // resources/seen_pixels.h: a plant three quarters hidden shows a quarter of each rung's error.
-// At λ = 0.01 error per µs, whole: mesh 1 + 0.01·500 = 6 against quad 9 + 0.01·4 = 9.04, the
-// mesh; a quarter seen: 0.25 + 5 = 5.25 against 2.25 + 0.04 = 2.29, the quad.
+// Drawn last frame on the quad, which covers 40 pixels alone at this size, it showed 10: a
+// quarter. At λ = 0.01 error per µs, whole: mesh 1 + 0.01·500 = 6 against quad 9 + 0.01·4 =
+// 9.04, the mesh; a quarter seen: 0.25 + 5 = 5.25 against 2.25 + 0.04 = 2.29, the quad.
 TEST(rung_solver, a_plant_mostly_hidden_weighs_its_errors_by_the_share_seen) {
     species_rung_tables s;
     rung_table mesh{representation::mesh_full, {}, {}, {}}, quad{representation::crossed_billboard, {}, {}, {}};
     mesh.error.fill(1.0f);
     mesh.cost_us.fill(500.0f);
+    mesh.drawn_pixels.fill(60.0f);
     quad.error.fill(9.0f);
     quad.cost_us.fill(4.0f);
+    quad.drawn_pixels.fill(40.0f);
     s.rungs = {mesh, quad};
     const rung_candidates whole = candidates_at(s, 64.0f, true, false);
     EXPECT_EQ(choose_at(whole, 0.01, k_none, 0.0f), 0);
-    const rung_candidates quarter = candidates_at(s, 64.0f, true, false, 0.25f);
+    const rung_candidates quarter = candidates_at(s, 64.0f, true, false, {10.0f, 1});
     EXPECT_FLOAT_EQ(quarter.error[0], 0.25f);
     EXPECT_FLOAT_EQ(quarter.error[1], 2.25f);
     EXPECT_EQ(quarter.cost_us[0], 500.0f) << "what it costs does not depend on what shows";
     EXPECT_EQ(choose_at(quarter, 0.01, k_none, 0.0f), 1);
+    // The same 10 pixels drawn with the mesh (60 alone) are a sixth.
+    EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {10.0f, 0}).error[1], 1.5f);
+    // Not known (not drawn last frame), more than alone (a fade), or a rung covering no pixel
+    // alone: whole.
+    EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {-1.0f, 1}).error[1], 9.0f);
+    EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {80.0f, 1}).error[1], 9.0f);
+    EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {10.0f, k_none}).error[1], 9.0f);
+    quad.drawn_pixels.fill(0.5f);
+    s.rungs = {mesh, quad};
+    EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {0.0f, 1}).error[1], 9.0f);
 }
 
 // --max-error: with 100 plant pixels a threshold of 0.05 per pixel allows an error of 5 in all.

@@ -34,21 +34,20 @@ TEST(seen_pixels, counts_each_plants_pixels_with_its_partner_and_without_tiles_o
     EXPECT_TRUE(seen.drawn(2));
     EXPECT_TRUE(seen.drawn(0));
     EXPECT_FALSE(seen.drawn(5));  // only in a shadow map
-    // Plant 2 covers 16 pixels alone at its size: a quarter showed. Plant 5 was not in the view:
-    // judged whole. A plant beyond the counts likewise.
-    EXPECT_FLOAT_EQ(seen_share(seen, 2, 16.0f), 0.25f);
-    EXPECT_FLOAT_EQ(seen_share(seen, 0, 0.5f), 1.0f);  // covers no whole pixel alone
-    EXPECT_FLOAT_EQ(seen_share(seen, 5, 16.0f), 1.0f);
-    EXPECT_FLOAT_EQ(seen_share(seen, 99, 16.0f), 1.0f);
-    EXPECT_FLOAT_EQ(seen_share(seen, 2, 2.0f), 1.0f);  // more shown than alone (a fade): at most 1
+    // What the solver is told: plant 2 showed 4 pixels; plant 5 was not in the view and a plant
+    // beyond the counts was not drawn: not known (judged whole).
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 2), 4.0f);
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 0), 1.0f);
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 5), -1.0f);
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 99), -1.0f);
     // A frame later plant 2 is hidden: its count starts again from 0.
     const std::vector<std::uint32_t> hidden{5, 5, 5, 5, 5, 5, 5, 5};
     count_seen_pixels(hidden, draws, seen);
     EXPECT_EQ(seen.at(2), 0u);
-    EXPECT_FLOAT_EQ(seen_share(seen, 2, 16.0f), 0.0f);
-    // Not measured (no ID buffer): everything judged whole.
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 2), 0.0f);
+    // Not measured (no ID buffer): nothing known.
     seen.measured = false;
-    EXPECT_FLOAT_EQ(seen_share(seen, 2, 16.0f), 1.0f);
+    EXPECT_FLOAT_EQ(shown_pixels(seen, 2), -1.0f);
 }
 
 }  // namespace
