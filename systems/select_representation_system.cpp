@@ -39,10 +39,14 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         return projected_size_px(library[std::size_t(p.species)].bounding_radius * t.scale, distance, pixel) *
                cam.lod_scale;
     };
-    // resources/seen_pixels.h: what the last frame showed of the plant, and with which rung.
+    // resources/seen_pixels.h: what the last frame showed of the plant, and with which rung. The
+    // counts are by dense plant index, which is each_chunk's position only over aligned tables
+    // (spawn_scenario aligns them); otherwise nothing is known and every plant is judged whole.
     const seen_pixels& seen = ctx.resource<seen_pixels>();
+    const bool dense = plants.aligned();
     const auto shown_of = [&](std::size_t plant, const species_rung_tables& tables, const lod_state& lod) {
-        return shown_last_frame{shown_pixels(seen, plant), rung_index(tables, lod.current)};
+        return dense ? shown_last_frame{shown_pixels(seen, plant), rung_index(tables, lod.current)}
+                     : shown_last_frame{};
     };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
