@@ -79,17 +79,65 @@ std::pair<double, double> median_and_error(std::vector<double> v) {
     return {median, 1.2533 * 1.4826 * mad / std::sqrt(double(n))};
 }
 
-calibration_view calibration_view_for(const renderer& r) {
-    calibration_view v;
-    v.cam.position = {0.0, 0.0, 0.0};
-    v.cam.forward = {0.0f, 0.0f, -1.0f};
-    v.cam.aspect = float(r.settings().width) / float(r.settings().height);
-    v.cam.viewport_height_px = float(r.settings().height);
-    derive_camera_matrices(v.cam);
-    v.pixel_m = float(image_plane_units(1.0, v.cam.fov_y, v.cam.viewport_height_px)) * k_calibration_distance_m;
-    v.half_height_m = 0.3f * std::tan(0.5f * v.cam.fov_y) * k_calibration_distance_m;
-    v.half_width_m = v.half_height_m * v.cam.aspect;
-    return v;
+calibration_scene::calibration_scene(const renderer& r) {
+    cam.position = {0.0, 0.0, 0.0};
+    cam.forward = {0.0f, 0.0f, -1.0f};
+    cam.aspect = float(r.settings().width) / float(r.settings().height);
+    cam.viewport_height_px = float(r.settings().height);
+    derive_camera_matrices(cam);
+    pixel_m = float(image_plane_units(1.0, cam.fov_y, cam.viewport_height_px)) * k_calibration_distance_m;
+    half_height_m = 0.3f * std::tan(0.5f * cam.fov_y) * k_calibration_distance_m;
+    half_width_m = half_height_m * cam.aspect;
+    light.direction = glm::normalize(glm::vec3(0.3f, 0.8f, 0.4f));
+    view.view_camera = &cam;
+    view.sun_light = &light;
+    view.sky = &sky;
+    view.cascades = &cascades;
+    view.draws = &list;
+    view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
+}
+
+marginal_timings time_marginals(const std::vector<std::uint32_t>& count_scales,
+                                const std::function<double(std::size_t, std::uint32_t)>& time,
+                                const calibration_settings& settings) {
+    const std::size_t points = count_scales.size();
+    marginal_timings out;
+    out.marginal_ms.resize(points);
+    for (std::size_t i = 0; i < points; ++i) {
+        const std::uint32_t first = std::min(settings.first_count * count_scales[i], settings.max_count / 2);
+        std::uint32_t n = first;
+        (void)time(i, 2 * n);
+        std::vector<double> d;
+        for (int k = 0; k < 3; ++k) d.push_back(time(i, 2 * n) - time(i, n));
+        std::sort(d.begin(), d.end());
+        const double marginal = d[1];
+        while (2 * n < settings.max_count && marginal * double(n) / double(first) < settings.min_marginal_ms)
+            n *= 2;
+        out.counts.push_back(std::min(n, settings.max_count / 2));
+    }
+    auto settled = [&](std::size_t i) {
+        const auto [ms, error] = median_and_error(out.marginal_ms[i]);
+        return error <= settings.target_relative_error * ms;
+    };
+    for (int rep = 0; rep < settings.max_repetitions; ++rep) {
+        bool any = false;
+        for (std::size_t k = 0; k < points; ++k) {
+            const std::size_t i = (k + std::size_t(rep)) % points;
+            if (rep >= settings.min_repetitions && settled(i)) continue;
+            any = true;
+            double t_once = 0.0, t_twice = 0.0;
+            if (rep % 2 == 0) {
+                t_once = time(i, out.counts[i]);
+                t_twice = time(i, 2 * out.counts[i]);
+            } else {
+                t_twice = time(i, 2 * out.counts[i]);
+                t_once = time(i, out.counts[i]);
+            }
+            out.marginal_ms[i].push_back(t_twice - t_once);
+        }
+        if (!any) break;
+    }
+    return out;
 }
 
 double wall_clock_ms(const calibration_frame&, const std::function<void()>& draw) {
@@ -117,97 +165,43 @@ frame_timer device_frame_timer(const std::string& gl_renderer) {
 
 calibration_result calibrate_primitive_costs(renderer& r, const calibration_settings& settings) {
     const auto start = std::chrono::steady_clock::now();
-    calibration_view eye = calibration_view_for(r);
-    camera& cam = eye.cam;
-    const float pixel_m = eye.pixel_m, half_width = eye.half_width_m, half_height = eye.half_height_m;
+    calibration_scene scene(r);
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
     std::array<std::uint16_t, 3> meshes{};
     for (const primitive_kind kind :
          {primitive_kind::triangles, primitive_kind::points, primitive_kind::lines})
-        meshes[std::size_t(kind)] =
-            r.add_mesh(calibration_mesh(kind, capacity, pixel_m, half_width, half_height));
-
-    sun light;
-    light.direction = glm::normalize(glm::vec3(0.3f, 0.8f, 0.4f));
-    environment sky;
-    cascade_set cascades;  // no shadow pass: the view's passes are timed
-    draw_list list;
-    frame_view view;
-    view.view_camera = &cam;
-    view.sun_light = &light;
-    view.sky = &sky;
-    view.cascades = &cascades;
-    view.draws = &list;
-    view.terrain_position = {0.0f, -1e7f, 0.0f};  // the terrain far out of view
+        meshes[std::size_t(kind)] = r.add_mesh(
+            calibration_mesh(kind, capacity, scene.pixel_m, scene.half_width_m, scene.half_height_m));
+    // No shadow pass: the view's passes are timed.
 
     const frame_timer timer = settings.timer ? settings.timer : frame_timer(process_cpu_ms);
     auto time_frame = [&](const calibration_frame& frame) {
         instance_gpu instance;
         instance.position = {0.0f, 0.0f, -k_calibration_distance_m};
         instance.fade = float(frame.count);  // every splat whole (draw_list.h instance_gpu::fade)
-        list.instances = {instance};
-        list.batches = {
+        scene.list.instances = {instance};
+        scene.list.batches = {
             {render_pass::opaque, meshes[std::size_t(kind_of(frame.path))], 0, 1, frame.count}};
-        view.set_samples(frame.quality);
+        scene.view.set_samples(frame.quality);
         return timer(frame, [&] {
-            r.render(view);
+            r.render(scene.view);
             (void)r.finish();
         });
     };
 
     const std::vector<calibration_point> plan = calibration_plan(settings.splat_factor);
+    std::vector<std::uint32_t> scales;
+    for (const calibration_point& p : plan) scales.push_back(p.count_scale);
+    const marginal_timings timings = time_marginals(
+        scales, [&](std::size_t i, std::uint32_t n) { return time_frame({plan[i].path, plan[i].quality, n}); },
+        settings);
     calibration_result result;
-    // N per plan point: a power of two times first_count at which 2N costs min_marginal_ms more
-    // than N, extrapolated from the marginal time at first_count (after a frame that compiles the
-    // point's programs and touches its buffers). The median of three differences decides, so
-    // one stretched frame does not mislead it.
-    auto marginal_ms = [&](const calibration_point& p, std::uint32_t n) {
-        std::vector<double> d;
-        for (int k = 0; k < 3; ++k)
-            d.push_back(time_frame({p.path, p.quality, 2 * n}) - time_frame({p.path, p.quality, n}));
-        std::sort(d.begin(), d.end());
-        return d[1];
-    };
-    for (const calibration_point& p : plan) {
-        const std::uint32_t first = std::min(settings.first_count * p.count_scale, settings.max_count / 2);
-        std::uint32_t n = first;
-        (void)time_frame({p.path, p.quality, 2 * n});
-        const double marginal = marginal_ms(p, n);
-        while (2 * n < settings.max_count && marginal * double(n) / double(first) < settings.min_marginal_ms)
-            n *= 2;
-        result.counts.push_back(std::min(n, settings.max_count / 2));
-    }
-    // Repetitions interleave the plan points that are not yet settled (standard error under
-    // target_relative_error of the cost), in a different order each time, N and 2N alternating
-    // which goes first: drift over the calibration weighs on every point alike.
-    std::vector<std::vector<double>> marginal_us(plan.size());
-    auto settled = [&](std::size_t i) {
-        const auto [us, error] = median_and_error(marginal_us[i]);
-        return error <= settings.target_relative_error * us;
-    };
-    for (int rep = 0; rep < settings.max_repetitions; ++rep) {
-        bool any = false;
-        for (std::size_t k = 0; k < plan.size(); ++k) {
-            const std::size_t i = (k + std::size_t(rep)) % plan.size();
-            if (rep >= settings.min_repetitions && settled(i)) continue;
-            any = true;
-            const calibration_frame once{plan[i].path, plan[i].quality, result.counts[i]};
-            const calibration_frame twice{plan[i].path, plan[i].quality, 2 * result.counts[i]};
-            double t_once = 0.0, t_twice = 0.0;
-            if (rep % 2 == 0) {
-                t_once = time_frame(once);
-                t_twice = time_frame(twice);
-            } else {
-                t_twice = time_frame(twice);
-                t_once = time_frame(once);
-            }
-            marginal_us[i].push_back(1000.0 * (t_twice - t_once) / double(result.counts[i]));
-        }
-        if (!any) break;
-    }
+    result.counts = timings.counts;
     for (std::size_t i = 0; i < plan.size(); ++i) {
-        const auto [us, error] = median_and_error(marginal_us[i]);
-        result.samples.push_back({plan[i].path, pixels_of(plan[i]), us, error});
+        // The marginal time of one primitive: the median over the repetitions of 2N less N, over N.
+        const auto [ms, error] = median_and_error(timings.marginal_ms[i]);
+        const double per = 1000.0 / double(timings.counts[i]);
+        result.samples.push_back({plan[i].path, pixels_of(plan[i]), ms * per, error * per});
     }
     try {
         try {

@@ -44,16 +44,26 @@ inline constexpr float k_calibration_distance_m = 20.0f;
 mesh_data calibration_mesh(primitive_kind kind, std::uint32_t count, float pixel_m, float half_width_m,
                            float half_height_m, double triangle_leg_px = k_calibration_triangle_px);
 
-// The eye the calibrations draw for (at the origin, looking down -z, at the renderer's frame
-// size), the metres per pixel at k_calibration_distance_m and the half extents the primitives
-// are scattered over there.
-struct calibration_view {
+// What a calibration frame draws with: the eye (at the origin, looking down -z, at the
+// renderer's frame size), the metres per pixel at k_calibration_distance_m and the half extents
+// the primitives are scattered over there, a sun, a sky, no cascades (a calibration that times
+// the shadow pass sets one), one draw list, and `view` wired to all of them with the terrain far
+// out of sight. Not copyable: `view` points into it.
+struct calibration_scene {
     camera cam;
     float pixel_m = 0.0f;
     float half_width_m = 0.0f;
     float half_height_m = 0.0f;
+    sun light;
+    environment sky;
+    cascade_set cascades;
+    draw_list list;
+    frame_view view;
+
+    explicit calibration_scene(const renderer& r);
+    calibration_scene(const calibration_scene&) = delete;
+    calibration_scene& operator=(const calibration_scene&) = delete;
 };
-calibration_view calibration_view_for(const renderer& r);
 
 // Median of the repetitions and the median's standard error (1.2533 σ/√n, σ from the median
 // absolute deviation: robust to the odd frame a busy machine stretches). {0, 0} when empty.
@@ -65,7 +75,8 @@ struct calibration_frame {
     point_line_quality quality;
     std::uint32_t count = 0;
     // The shader-work calibration's shape (shader_work_calibration.h: 0 small triangles in the
-    // view, 1 large ones, 2 large ones into a shadow map); 0 in the primitive calibration.
+    // view, 1 large ones, 2 large ones into a shadow map, 3 tiny ones in the view); 0 in the
+    // primitive calibration.
     std::uint32_t shape = 0;
 };
 
@@ -94,6 +105,22 @@ struct calibration_settings {
     double target_relative_error = 0.02;
     frame_timer timer;  // empty: process_cpu_ms (device_cost_model picks the device's)
 };
+
+// How both calibrations time their plan points. For point i, N is a power of two times
+// first_count · count_scales[i] at which 2N costs min_marginal_ms more than N, extrapolated from
+// the marginal time at the first N (after a frame that compiles the point's programs and touches
+// its buffers; the median of three differences decides, so one stretched frame does not mislead
+// it). Then repetitions interleave the points not yet settled (standard error under
+// target_relative_error of the marginal time), in a different order each time, N and 2N
+// alternating which goes first: drift over the calibration weighs on every point alike.
+// `time(i, n)` draws point i with n primitives and returns how long it took, in ms.
+struct marginal_timings {
+    std::vector<std::uint32_t> counts;            // N per point
+    std::vector<std::vector<double>> marginal_ms;  // per point, 2N less N, one per repetition
+};
+marginal_timings time_marginals(const std::vector<std::uint32_t>& count_scales,
+                                const std::function<double(std::size_t, std::uint32_t)>& time,
+                                const calibration_settings& settings);
 
 struct calibration_result {
     std::optional<primitive_cost_model> model;  // none when the fit refused the samples
