@@ -159,6 +159,12 @@ device_work_calibration device_work_costs(render::renderer& r, const render::gl_
             }
         }
     device_work_calibration c;
+    if (!r.settings().shadows) {
+        // Not the device's answer, this renderer's: nothing is measured and nothing cached, so
+        // a scenario with shadows on this device still calibrates.
+        c.refusal = "the renderer draws no shadow map to time the shadow shape in";
+        return c;
+    }
     c.measured_now = true;
     render::calibration_settings s = settings;
     if (!s.timer) s.timer = render::device_frame_timer(context.renderer());

@@ -47,7 +47,8 @@ device_calibration device_cost_model(render::renderer& r, const render::gl_conte
 // What shader work costs on this device (lod/shader_work_costs.h), from the cache or measured on
 // `r` now (and stored) when absent or when `force`; the auto ladder costs its rungs with it. A
 // refusal (no invocation counts, a timer it cannot trust) is cached too, with its reason, and
-// the rungs are then costed by their triangles. GL thread only.
+// the rungs are then costed by their triangles; a renderer without shadow maps measures nothing
+// and caches nothing (the refusal is its own, not the device's). GL thread only.
 struct device_work_calibration {
     std::optional<shader_work_costs> costs;
     std::string refusal;

@@ -23,6 +23,10 @@ constexpr std::array<double, 3> k_legs_px{k_calibration_triangle_px, k_large_tri
 work_calibration_result calibrate_shader_work(renderer& r, const calibration_settings& settings) {
     const auto start = std::chrono::steady_clock::now();
     work_calibration_result result;
+    if (!r.settings().shadows) {
+        result.refusal = "the renderer draws no shadow map to time the shadow shape in";
+        return result;
+    }
     calibration_scene scene(r);
     const std::uint32_t capacity = std::max(settings.max_count, 2 * settings.first_count);
     std::array<std::uint16_t, 3> meshes{};

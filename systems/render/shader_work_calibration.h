@@ -29,7 +29,8 @@ struct work_calibration_result {
 };
 
 // Adds its two meshes to the renderer's pool and renders into its target (overwriting its last
-// image). Refuses without pipeline statistics or without a shadow map. GL thread only.
+// image). Refuses without pipeline statistics or without shadow maps (renderer_settings::shadows).
+// GL thread only.
 work_calibration_result calibrate_shader_work(renderer& r, const calibration_settings& settings = {});
 
 }  // namespace sylva::render

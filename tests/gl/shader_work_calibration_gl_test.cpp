@@ -85,5 +85,25 @@ TEST(shader_work_calibration, refuses_a_timer_that_sees_no_work) {
     EXPECT_NE(constant.refusal.find("not above the timer's noise"), std::string::npos) << constant.refusal;
 }
 
+TEST(shader_work_calibration, refuses_a_renderer_without_shadow_maps_before_timing_anything) {
+    SYLVA_REQUIRE_GL();
+    const scene_assets assets = build_scene_assets(
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json"), nullptr);
+    render::renderer_settings settings;
+    settings.width = 320;
+    settings.height = 180;
+    settings.shadows = false;
+    render::renderer r(settings, assets);
+    int frames = 0;
+    const render::work_calibration_result result =
+        render::calibrate_shader_work(r, quick_calibration([&](const render::calibration_frame&, const auto& draw) {
+            draw();
+            return 16.0 + ++frames;
+        }));
+    EXPECT_FALSE(result.costs);
+    EXPECT_NE(result.refusal.find("no shadow map"), std::string::npos) << result.refusal;
+    EXPECT_EQ(frames, 0);
+}
+
 }  // namespace
 }  // namespace sylva
