@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <limits>
 #include <glm/geometric.hpp>
 #include <map>
 #include <tuple>
 
+#include "components/bounds.h"
 #include "components/plant_instance.h"
 #include "components/tile.h"
 #include "components/transform.h"
@@ -65,6 +68,7 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
     if (tiles.size() == 0 || assets.library.lod_parts.empty()) return out;
     const auto& transforms = world.table<world_transform>();
     const auto& instances = world.table<plant_instance>();
+    const auto& bounds_of = world.table<bounds>();
     const species_library& library = assets.library;
 
     const std::size_t n = tiles.size();
@@ -75,10 +79,31 @@ tile_point_sets build_tile_point_sets(const ecs::world& world, scene_assets& ass
     // builds every child's sets before its parent merges them.
     for (std::size_t i = n; i-- > 0;) {
         const tile& t = tiles.data()[i];
-        out.origin[i] = origin_of(t);
-        out.radius[i] = float(std::sqrt(0.5 * t.size * t.size + 0.25 * double(t.max_height - t.min_height) *
-                                                                      double(t.max_height - t.min_height)) +
-                              double(t.reach_m));
+        // The sphere around the tile's plants (their bounding spheres), not around its square: a
+        // few plants in a large, mostly empty tile are as far from the eye as they stand, and the
+        // tile's distance rules (aggregate_eco_tiles) measure what the set draws.
+        if (t.plant_count > 0 && bounds_of.size() >= t.first_plant + t.plant_count) {
+            glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+            for (std::uint32_t k = t.first_plant; k < t.first_plant + t.plant_count; ++k) {
+                const glm::dvec3 c = transforms.data()[k].position +
+                                     glm::dvec3(0.0, double(bounds_of.data()[k].center_height), 0.0);
+                lo = glm::min(lo, c);
+                hi = glm::max(hi, c);
+            }
+            out.origin[i] = 0.5 * (lo + hi);
+            double r = 0.0;
+            for (std::uint32_t k = t.first_plant; k < t.first_plant + t.plant_count; ++k) {
+                const glm::dvec3 c = transforms.data()[k].position +
+                                     glm::dvec3(0.0, double(bounds_of.data()[k].center_height), 0.0);
+                r = std::max(r, glm::length(c - out.origin[i]) + double(bounds_of.data()[k].radius));
+            }
+            out.radius[i] = float(r);
+        } else {
+            out.origin[i] = origin_of(t);
+            out.radius[i] = float(std::sqrt(0.5 * t.size * t.size + 0.25 * double(t.max_height - t.min_height) *
+                                                                          double(t.max_height - t.min_height)) +
+                                  double(t.reach_m));
+        }
         std::map<set_key, sample_set>& own = sets[i];
         if (t.is_leaf()) {
             // Every plant's parts: their areas first, then prefixes in proportion to them.

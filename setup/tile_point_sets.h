@@ -44,8 +44,9 @@ struct tile_point_part {
 struct tile_point_sets {
     std::vector<tile_point_part> parts;
     std::vector<std::uint32_t> first_part;  // per tile, parts [first_part[t], first_part[t + 1])
-    std::vector<glm::dvec3> origin;         // per tile, world
-    std::vector<float> radius;              // per tile: sphere around its plants, from origin
+    std::vector<glm::dvec3> origin;         // per tile, world: the centre of its plants' box
+    std::vector<float> radius;              // per tile: sphere around its plants' spheres, from origin
+                                            // (the centre of their box; a plantless tile: its square)
 };
 
 // Builds every tile's sets from the spawned plants and tiles, adding their meshes to `assets`
