@@ -72,7 +72,7 @@ void read_drawn_mixes(const ecs::world& world, std::vector<drawn_mix>& out) {
             out[k].share = total[k] > 0.0 ? float(drawn[k] / total[k]) : 0.0f;
             out[k].detail = splat_parts[k];
         }
-    // §6.2: the plants of a tile drawn as its sets (aggregate_eco_tiles marked them none).
+    // §6.2: the plants of a tile drawn as its sets (aggregate_eco_tiles put them on the eco_tile rung).
     const auto* sets = world.try_resource<tile_point_sets>();
     const auto* draws = world.try_resource<tile_point_draws>();
     if (!sets || !draws) return;
@@ -82,7 +82,11 @@ void read_drawn_mixes(const ecs::world& world, std::vector<drawn_mix>& out) {
         const tile& t = tiles.data()[sets->parts[p].tile];
         for (std::uint32_t k = t.first_plant; k < t.first_plant + t.plant_count && k < n; ++k) {
             drawn_mix& m = out[k];
+            // A plant in a tile's band keeps its points partner (the share the tile leaves it).
+            const drawn_mix own = m;
             m = {};
+            m.partner = own.partner;
+            m.share = own.partner != 0 ? own.share : 0.0f;
             m.primary = k_mix_eco_tile_set;
             m.group_first = t.first_plant;
             m.group_count = t.plant_count;

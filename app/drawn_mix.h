@@ -11,7 +11,9 @@
 //                                                                               all its parts';
 //                                                                               line parts drawn
 //                                                                               as splats
-//   in an eco tile's aggregated set (§6.2)         k_mix_eco_tile_set -         group = the tile
+//   in an eco tile's aggregated set (§6.2)         k_mix_eco_tile_set points in  group = the tile;
+//                                                                     the tile's  the share its
+//                                                                     band        own points draw
 //
 // So a hard switch changes the mix in one frame, a band changes it every frame of the band,
 // §5.3's blend every frame until each part has settled on triangles or points, and the
@@ -24,7 +26,8 @@
 
 namespace sylva {
 
-// The primary code of a plant drawn by its eco tile's aggregated point set (no lod_state value).
+// The primary code of a plant drawn by its eco tile's aggregated point set (lod_state's eco_tile;
+// apart from the representations so that a tile's plants share one group).
 inline constexpr std::uint8_t k_mix_eco_tile_set = 0xE0;
 
 // One mix per plant (dense index), in `out` (resized).

@@ -12,7 +12,8 @@ namespace sylva {
 
 std::string_view representation_name(representation r) {
     constexpr std::array<std::string_view, static_cast<std::size_t>(representation::count)> k_names = {
-        "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "billboard_cloud"};
+        "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "billboard_cloud",
+        "eco_tile"};
     return k_names[static_cast<std::size_t>(r)];
 }
 

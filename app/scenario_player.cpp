@@ -156,8 +156,10 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
     m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines(), policy.uses_billboard_clouds()});
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
-    // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines).
-    const bool tile_sets = policy.mode == lod_policy::kind::points_lines && policy.tile_sets;
+    // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines, or a
+    // ladder that reaches them).
+    const bool tile_sets = (policy.mode == lod_policy::kind::points_lines && policy.tile_sets) ||
+                           policy.any_ladder_reaches(representation::eco_tile);
     m_world.set_resource(tile_sets ? build_tile_point_sets(m_world, m_assets, m_scenario.seed) : tile_point_sets{});
     m_world.resource<species_library>().meshes = m_assets.library.meshes;  // with the tile sets' meshes
     m_world.set_resource(tile_point_draws{});
@@ -352,7 +354,11 @@ rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_
     std::vector<representation> rungs;
     for (const ladder& l : policy.ladders)
         for (std::size_t r = 0; r < l.count; ++r)
-            if (std::find(rungs.begin(), rungs.end(), l.rungs[r]) == rungs.end()) rungs.push_back(l.rungs[r]);
+            // The eco-tile rung is no rung of its own to the solver: a plant it puts on points
+            // goes on to its tile by size (select_representation_system.h).
+            if (l.rungs[r] != representation::eco_tile &&
+                std::find(rungs.begin(), rungs.end(), l.rungs[r]) == rungs.end())
+                rungs.push_back(l.rungs[r]);
     const heightfield& terrain = m_assets.terrain;
     const double eye_height_m = typical_eye_height_m(
         m_scenario, [&](double x, double z) { return double(terrain.height_at(x, z)); });

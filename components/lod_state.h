@@ -21,6 +21,10 @@ enum class representation : std::uint8_t {
     // representation for all three; frame_record counts the points and lines it draws).
     points,
     billboard_cloud,  // Behrendt 2005 §2
+    // Deussen 2002 §6.2: drawn by its eco tile's aggregated point and line sets
+    // (setup/tile_point_sets.h), not on its own. Chosen by a ladder's last rung; a plant whose
+    // tile cannot be drawn as its sets falls back to points (systems/aggregate_eco_tiles_system.h).
+    eco_tile,
     count
 };
 

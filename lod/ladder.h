@@ -37,12 +37,16 @@ inline constexpr float k_default_band = 0.15f;
 inline constexpr float k_max_band = 0.9f;
 
 // The rungs a ladder may name, as scenarios name them: every representation a plant can be drawn
-// with on its own ("points_lines" is representation::points).
-inline constexpr std::array<std::string_view, 6> k_rung_names{
-    "mesh_full", "mesh_reduced", "mesh_far", "billboard_cloud", "points_lines", "crossed_billboard"};
+// with ("points_lines" is representation::points; "eco_tile_points" is the plant drawn by its eco
+// tile's aggregated sets, Deussen 2002 §6.2, which can only follow points_lines as the last rung:
+// a tile that cannot be drawn as its sets draws its plants as points).
+inline constexpr std::array<std::string_view, 7> k_rung_names{
+    "mesh_full",    "mesh_reduced",      "mesh_far",       "billboard_cloud",
+    "points_lines", "crossed_billboard", "eco_tile_points"};
 inline constexpr std::array<representation, k_rung_names.size()> k_rungs{
     representation::mesh_full,       representation::mesh_reduced, representation::mesh_far,
-    representation::billboard_cloud, representation::points,       representation::crossed_billboard};
+    representation::billboard_cloud, representation::points,       representation::crossed_billboard,
+    representation::eco_tile};
 
 // "" when `r` is not a rung.
 inline std::string_view rung_name(representation r) {
@@ -98,6 +102,11 @@ inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
         if (i >= 2 && l.below_px[i] * (1.0f + l.band[i]) > l.below_px[i - 1] * (1.0f - l.band[i - 1]))
             return ladder_problem{i, "band", "its band (below_px x (1 +- band)) overlaps the band of the rung before"};
     }
+    for (std::size_t i = 0; i < l.count; ++i)
+        if (l.rungs[i] == representation::eco_tile && (i == 0 || i + 1 != l.count || l.rungs[i - 1] != representation::points))
+            return ladder_problem{i, "rung",
+                                  "eco_tile_points must be the last rung, right after points_lines (a tile that "
+                                  "cannot be drawn as its sets draws its plants as points)"};
     return std::nullopt;
 }
 
@@ -113,6 +122,19 @@ struct ladder_choice {
 
 // The choice at `size_px` (a NaN size takes the farthest rung, as a NaN distance does elsewhere).
 ladder_choice choose_rung(const ladder& l, float size_px);
+
+// How far a plant is into its ladder's last step, points_lines -> eco_tile_points, as the share
+// its eco tile's sets may draw of it (0 .. 1), from what choose_rung chose (lod_state and
+// fade_alpha after select_representation). Deussen 2002 §5.3's blend is complementary: the tile
+// draws this share of its sets' prefixes and the plant the rest of its own, both random
+// subsets, so the density stays that of one representation. Across the band, t from its large
+// edge: t = fade / 2 while points are primary, 1 − fade / 2 once the tile is.
+inline float eco_tile_share(representation primary, representation partner, float partner_fade) {
+    if (primary == representation::eco_tile)
+        return partner == representation::points ? 1.0f - 0.5f * partner_fade : 1.0f;
+    if (primary == representation::points && partner == representation::eco_tile) return 0.5f * partner_fade;
+    return 0.0f;
+}
 
 // The projected height in pixels of a sphere of `radius_m` at `distance_m` from the eye: its
 // diameter on the image plane (2·radius / distance) over a pixel's size there

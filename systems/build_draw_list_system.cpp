@@ -108,6 +108,12 @@ public:
             d.partnered = true;
             d.partner_prefixed = fade.partner == representation::points;
         }
+        // Drawn by its eco tile's sets (aggregate_eco_tiles): only the partner, its own prefixes
+        // for the share the tile does not draw; nothing casts (the tile lies beyond the shadows).
+        if (lod.current == representation::eco_tile) {
+            d.pass_mask = 0;
+            return d;
+        }
         if (lod.current != representation::points) {
             d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
             for (int c = 0; c < m_cascade_count; ++c)
@@ -267,6 +273,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     offsets.assign(chunks + cell_chunks + 1, 0);
     std::vector<std::uint32_t>& point_plants = list.chunk_point_plants;
     point_plants.assign(chunks, 0);
+    std::vector<std::uint32_t>& eco_plants = list.chunk_eco_plants;
+    eco_plants.assign(chunks, 0);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
@@ -280,6 +288,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             // Counted as the meshes are (by their items): the primary and a drawn partner.
             const bool points_partner = fade.partner == representation::points && fade.value > 0.0f;
             if ((lod.current == representation::points || points_partner) && lod.visible) ++point_plants[c];
+            if (lod.current == representation::eco_tile && lod.visible) ++eco_plants[c];
         });
         offsets[c + 1] = count;
     });
@@ -362,6 +371,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     build_batches(list, library);
     for (const std::uint32_t c : point_plants)
         list.instances_by_representation[std::size_t(representation::points)] += c;
+    for (const std::uint32_t c : eco_plants)
+        list.instances_by_representation[std::size_t(representation::eco_tile)] += c;
 }
 
 }  // namespace sylva

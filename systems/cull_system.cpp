@@ -58,7 +58,8 @@ struct cull_view {
     float max_species_distance;  // the largest max_distance_m of any species
     // Points and lines draw every plant up to the far plane: Eq. 1 makes a plant's cost fall
     // with the square of its distance and far eco tiles draw their aggregated sets (Deussen
-    // 2002 §6.2), so the species' draw distances (a mesh-level budget) do not apply.
+    // 2002 §6.2), so the species' draw distances (a mesh-level budget) do not apply. The same
+    // holds for ladders that end on the eco-tile rung.
     bool unlimited_distance;
 };
 
@@ -192,7 +193,8 @@ void cull_system::run(ecs::system_context<cull_system>& ctx) {
     cull_view view{&cam, extract_frustum_planes(cam.projection * cam.view),
                    &ctx.resource<species_library>().species,
                    ctx.resource<shadow_settings>().max_distance_m, 0.0f,
-                   ctx.resource<lod_policy>().mode == lod_policy::kind::points_lines};
+                   ctx.resource<lod_policy>().mode == lod_policy::kind::points_lines ||
+                       ctx.resource<lod_policy>().any_ladder_reaches(representation::eco_tile)};
     for (const auto& species : *view.library)
         view.max_species_distance = std::max(view.max_species_distance, species.max_distance_m);
     const plant_query plants =

@@ -44,9 +44,18 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     // (spawn_scenario aligns them); otherwise nothing is known and every plant is judged whole.
     const seen_pixels& seen = ctx.resource<seen_pixels>();
     const bool dense = plants.aligned();
+    // A plant its eco tile drew last frame showed its pixels as the tile's: judged whole.
     const auto shown_of = [&](std::size_t plant, const species_rung_tables& tables, const lod_state& lod) {
-        return dense ? shown_last_frame{shown_pixels(seen, plant), rung_index(tables, lod.current)}
-                     : shown_last_frame{};
+        return dense && lod.current != representation::eco_tile
+                   ? shown_last_frame{shown_pixels(seen, plant), rung_index(tables, lod.current)}
+                   : shown_last_frame{};
+    };
+    // The eco-tile rung is not the solver's (lod/ladder.h): a plant on points goes on to its tile
+    // by its size, as the ladder's last step says, and aggregate_eco_tiles decides whether the
+    // tile draws it. To the solver a plant its tile drew was on points.
+    const lod_policy& policy = ctx.resource<lod_policy>();
+    const auto solver_rung = [](representation r) {
+        return r == representation::eco_tile ? representation::points : r;
     };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
@@ -90,7 +99,8 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             const float size = size_of(t, p);
             const rung_candidates c =
                 candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod));
-            const std::uint8_t previous = rung_index(tables, lod.current);
+            const representation was = solver_rung(lod.current);
+            const std::uint8_t previous = rung_index(tables, was);
             // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =
                 by_error ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
@@ -99,13 +109,25 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                                      previous, budget.hysteresis);
             cost += double(c.cost_us[chosen]);
             const representation rung = tables.rungs[chosen].rung;
-            if (rung != lod.current && lod.current != representation::none) {
-                fade = {1.0f, lod.current};  // the old rung dissolves; the new one is whole
+            if (fade.partner == representation::eco_tile || (was == representation::points && fade.partner == representation::points))
+                fade = {};  // last frame's eco-tile band, not a dissolve
+            if (rung != was && was != representation::none) {
+                fade = {1.0f, was};  // the old rung dissolves; the new one is whole
             } else if (fade.partner != representation::none) {
                 fade.value -= fade_step;
                 if (!(fade.value > 0.0f) || fade.partner == rung) fade = {};
             }
             lod.current = rung;
+            if (rung == representation::points && fade.partner == representation::none) {
+                const ladder& l = policy.ladders[std::size_t(p.species)];
+                if (l.count > 0 && l.rungs[l.count - 1] == representation::eco_tile) {
+                    const ladder_choice step = choose_rung(l, size);
+                    if (eco_tile_share(step.primary, step.partner, step.partner_fade) > 0.0f) {
+                        lod.current = step.primary;
+                        fade = {step.partner_fade, step.partner};
+                    }
+                }
+            }
             if (!lod.visible) fade = {};  // only a seen plant draws a partner
         });
     });

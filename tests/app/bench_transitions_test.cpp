@@ -67,7 +67,9 @@ TEST(bench_transitions, eco_tiles_handing_over_to_their_sets_are_transitions_of_
     SYLVA_REQUIRE_GL();
     const bench_report r = bench_of("tile_handover.json", {"points_lines_d2"});
     const bench_error& e = named(r, "points_lines_d2").error;
-    ASSERT_TRUE(e.transitions_by_kind.contains("eco_tile_set")) << e.transitions;
+    ASSERT_TRUE(e.transitions_by_kind.contains("eco_tile_set"))
+        << e.transitions << " measured, " << e.transitions_too_small << " too small, " << e.transitions_cut_off
+        << " cut off by the path";
     EXPECT_GE(e.transitions_by_kind.at("eco_tile_set"), 1u);
     EXPECT_TRUE(std::isfinite(e.lighting_jump));
 }

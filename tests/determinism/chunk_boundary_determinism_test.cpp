@@ -269,6 +269,24 @@ TEST(chunk_boundary_determinism, ladder_with_every_handover) {
         EXPECT_GT(drawn_as(one, r), 0u) << "no plant on rung " << int(r);
 }
 
+// The same ladder ending on the eco tiles' sets (Deussen 2002 §6.2): tiles hand over from their
+// plants' points to their sets across the band, in part, as the tile walk decides.
+TEST(chunk_boundary_determinism, ladder_to_the_eco_tiles) {
+    SYLVA_REQUIRE_GL();
+    player_options options = with_every_handover();
+    for (ladder& l : options.policy.ladders) l.rungs[3] = representation::eco_tile;
+    expected_loops expected;
+    expected.update_point_prefix = 2;
+    expected.build_draw_list = 5;
+    const std::vector<frame_trace> one =
+        expect_same_for_1_2_and_4_threads({"ladder_eco_tiles", options}, expected).frames;
+    std::uint32_t aggregated = 0;
+    for (const frame_trace& t : one) aggregated += t.aggregated_tiles;
+    EXPECT_GT(aggregated, 0u) << "no eco tile was drawn as its point set";
+    for (const representation r : {representation::mesh_full, representation::points, representation::eco_tile})
+        EXPECT_GT(drawn_as(one, r), 0u) << "no plant on rung " << int(r);
+}
+
 // DESIGN §1.5 `auto`: the same ladder with every rung chosen by the budget solver from tables
 // measured on this scene's species (through the test's cache), a budget between all-cheapest
 // and all-best so that the solver has to mix rungs.
@@ -287,6 +305,22 @@ TEST(chunk_boundary_determinism, auto_ladder_under_a_budget) {
                                    representation::points, representation::crossed_billboard})
         rungs_used += drawn_as(one, r) > 0;
     EXPECT_GE(rungs_used, 2u) << "the budget should make the solver mix rungs";
+}
+
+// The budget solver with the eco-tile rung (lod/ladder.h): not a rung of the solver's own; a
+// plant it puts on points goes on to its tile by size, and the tile walk decides.
+TEST(chunk_boundary_determinism, auto_ladder_to_the_eco_tiles) {
+    SYLVA_REQUIRE_GL();
+    player_options options = with_every_handover();
+    for (ladder& l : options.policy.ladders) l.rungs[3] = representation::eco_tile;
+    options.plant_budget_ms = 20.0;
+    expected_loops expected;
+    expected.select_representation = 2;
+    expected.update_point_prefix = 2;
+    expected.build_draw_list = 5;
+    const std::vector<frame_trace> one =
+        expect_same_for_1_2_and_4_threads({"auto_ladder_eco", options}, expected).frames;
+    EXPECT_GT(drawn_as(one, representation::eco_tile), 0u) << "no plant was drawn by its tile";
 }
 
 }  // namespace

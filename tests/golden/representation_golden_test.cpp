@@ -176,7 +176,9 @@ TEST(representation_golden, eco_tile_point_sets) {
                                              points_and_lines(2.0f, splat_style::opaque));
     EXPECT_GT(frame.record.aggregated_tiles, 1u);
     EXPECT_EQ(frame.record.aggregated_plants, frame.plants);
-    EXPECT_EQ(drawn_total(frame.record), 0u);  // no plant on its own
+    // No plant on its own: every seen plant is on the eco-tile rung.
+    EXPECT_GT(drawn(frame.record, representation::eco_tile), 0u);
+    EXPECT_EQ(drawn_total(frame.record), drawn(frame.record, representation::eco_tile));
     EXPECT_GT(frame.record.points, 1000u);
     testing::expect_matches_golden(frame.image, "distant_stand_tile_sets.png");
 }

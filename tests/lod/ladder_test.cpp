@@ -117,6 +117,53 @@ TEST(ladder, problems_name_the_rung_and_field_at_fault) {
     EXPECT_EQ(find_ladder_problem(not_a_rung)->rung, 0u);
 }
 
+// billboard_cloud | 60 px ± 15 % | points_lines | 12 px ± 25 % | eco_tile_points
+ladder to_the_eco_tile() {
+    ladder l;
+    l.count = 3;
+    l.rungs = {representation::billboard_cloud, representation::points, representation::eco_tile};
+    l.below_px = {0.0f, 60.0f, 12.0f};
+    l.band = {0.0f, 0.15f, 0.25f};
+    return l;
+}
+
+TEST(ladder, the_eco_tile_rung_ends_a_ladder_right_after_points_and_lines) {
+    EXPECT_FALSE(find_ladder_problem(to_the_eco_tile()));
+    ladder after_clouds = to_the_eco_tile();
+    after_clouds.rungs[1] = representation::crossed_billboard;
+    EXPECT_EQ(find_ladder_problem(after_clouds)->rung, 2u);
+    EXPECT_EQ(find_ladder_problem(after_clouds)->field, "rung");
+    ladder not_last = to_the_eco_tile();
+    not_last.count = 4;
+    not_last.rungs[3] = representation::crossed_billboard;
+    not_last.below_px[3] = 4.0f;
+    not_last.band[3] = 0.1f;
+    EXPECT_EQ(find_ladder_problem(not_last)->rung, 2u);
+    ladder alone;
+    alone.count = 1;
+    alone.rungs[0] = representation::eco_tile;
+    EXPECT_EQ(find_ladder_problem(alone)->rung, 0u);
+    EXPECT_EQ(rung_of_name("eco_tile_points"), representation::eco_tile);
+}
+
+TEST(ladder, the_eco_tile_share_is_how_far_the_plant_is_into_its_last_band) {
+    const ladder l = to_the_eco_tile();
+    // Band 12 px ± 25 %: 15 .. 9 px, t = (15 − size) / 6; the tile may draw t of the plant.
+    const auto share = [&](float size) {
+        const ladder_choice c = choose_rung(l, size);
+        return eco_tile_share(c.primary, c.partner, c.partner_fade);
+    };
+    EXPECT_EQ(share(30.0f), 0.0f);   // points whole
+    EXPECT_EQ(share(15.5f), 0.0f);
+    EXPECT_NEAR(share(13.5f), 0.25f, 1e-6f);  // t = 1/4: points whole, the tile fading in at 1/2
+    EXPECT_NEAR(share(10.5f), 0.75f, 1e-6f);  // t = 3/4: the tile whole, points fading out at 1/2
+    EXPECT_EQ(share(8.0f), 1.0f);
+    EXPECT_EQ(share(std::nanf("")), 1.0f);
+    // Other rungs do not let their tile draw them.
+    EXPECT_EQ(share(80.0f), 0.0f);
+    EXPECT_EQ(eco_tile_share(representation::billboard_cloud, representation::points, 0.5f), 0.0f);
+}
+
 TEST(ladder, the_papers_ladder_runs_from_the_full_mesh_to_the_crossed_billboard) {
     const ladder l = papers_ladder();
     EXPECT_EQ(choose_rung(l, 1e4f).primary, representation::mesh_full);

@@ -92,7 +92,7 @@ TEST(tile_point_sets, leaves_take_their_plants_points_and_the_root_merges_its_ch
     EXPECT_EQ(at_plant_3, 600u);
 }
 
-TEST(tile_point_sets, a_tile_is_drawn_as_its_set_only_where_eq1_needs_no_more_samples_than_it_has) {
+TEST(tile_point_sets, a_tile_draws_the_share_of_eq1_its_set_holds_samples_for) {
     tile_point_sets sets;
     sets.first_part = {0, 1};
     tile_point_part part;
@@ -101,10 +101,12 @@ TEST(tile_point_sets, a_tile_is_drawn_as_its_set_only_where_eq1_needs_no_more_sa
     sets.parts = {part};
     std::vector<std::uint32_t> counts(1, 0);
     std::vector<std::uint8_t> splats(1, 0);
-    // p = ½·100 / r² / d'², d' = 0.004: r = 1000 → 3.125 points; r = 50 → 1250 > 1000.
-    EXPECT_TRUE(tile_prefixes(sets, 0, 1000.0, 0.004, 1.0, counts, splats));
+    // p = ½·100 / r² / d'², d' = 0.004: r = 1000 → 3.125 points; r = 50 → 1250 > 1000, so the
+    // set can draw 1000 / 1250 = 0.8 of the tile (its plants' own points the rest).
+    EXPECT_EQ(tile_prefixes(sets, 0, 1000.0, 0.004, 1.0, counts, splats), 1.0);
     EXPECT_EQ(counts[0], 3u);
-    EXPECT_FALSE(tile_prefixes(sets, 0, 50.0, 0.004, 1.0, counts, splats));
+    EXPECT_DOUBLE_EQ(tile_prefixes(sets, 0, 50.0, 0.004, 1.0, counts, splats), 0.8);
+    EXPECT_EQ(counts[0], 1000u);
 }
 
 TEST(tile_point_sets, a_line_set_draws_q_times_the_lines_its_tile_stands_for) {
@@ -121,16 +123,28 @@ TEST(tile_point_sets, a_line_set_draws_q_times_the_lines_its_tile_stands_for) {
     std::vector<std::uint32_t> counts(1, 0);
     std::vector<std::uint8_t> splats(1, 0);
     // q = A / (r·l·d') = 18 / (r · 500 · 0.004): r = 60 → 0.15 → 150 of the 1000 lines (the set
-    // has them); r = 30 → 0.3 → 300 lines, more than the set holds: not drawn as a tile.
-    EXPECT_TRUE(tile_prefixes(sets, 0, 60.0, 0.004, 1.0, counts, splats));
+    // has them); r = 30 → 0.3 → 300 lines, more than the set holds: it draws 200 / 300 of the tile.
+    EXPECT_EQ(tile_prefixes(sets, 0, 60.0, 0.004, 1.0, counts, splats), 1.0);
     EXPECT_EQ(counts[0], 150u);
     EXPECT_EQ(splats[0], 0);
-    EXPECT_FALSE(tile_prefixes(sets, 0, 30.0, 0.004, 1.0, counts, splats));
+    EXPECT_DOUBLE_EQ(tile_prefixes(sets, 0, 30.0, 0.004, 1.0, counts, splats), 2.0 / 3.0);
     // r = 90: a line's image is l / (2r·n_l) = 500 / 180,000 = 0.0028 < d', so the set draws
     // splats at its lines' ends, Eq. 1's p = c_p·½·18 / 90² / 0.004² = 69.4 → 69 (nearest).
-    EXPECT_TRUE(tile_prefixes(sets, 0, 90.0, 0.004, 1.0, counts, splats));
+    EXPECT_EQ(tile_prefixes(sets, 0, 90.0, 0.004, 1.0, counts, splats), 1.0);
     EXPECT_EQ(counts[0], 69u);
     EXPECT_EQ(splats[0], 1);
+}
+
+TEST(tile_point_sets, a_tile_hands_over_over_a_ramp_beyond_three_radii_and_the_shadows) {
+    // Radius 10 m: nothing nearer than 30 m, all from 30 · 1.25 = 37.5 m, linear between.
+    EXPECT_EQ(tile_distance_share(29.0, 10.0, 0.0), 0.0);
+    EXPECT_EQ(tile_distance_share(30.0, 10.0, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(tile_distance_share(33.75, 10.0, 0.0), 0.5);
+    EXPECT_EQ(tile_distance_share(37.5, 10.0, 0.0), 1.0);
+    EXPECT_EQ(tile_distance_share(500.0, 10.0, 0.0), 1.0);
+    // A tile reaching into the shadow distance (120 m) casts: its plants draw it.
+    EXPECT_EQ(tile_distance_share(125.0, 10.0, 120.0), 0.0);
+    EXPECT_EQ(tile_distance_share(131.0, 10.0, 120.0), 1.0);
 }
 
 }  // namespace
