@@ -1,0 +1,249 @@
+#include "models/bake/implicit_illumination.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <memory>
+#include <nanoflann.hpp>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <stdexcept>
+
+#include "ecs/parallel.h"
+#include "models/random.h"
+
+namespace sylva {
+
+namespace {
+
+// nanoflann's dataset adaptor over a point list.
+struct point_cloud {
+    const std::vector<glm::vec3>* points;
+    std::size_t kdtree_get_point_count() const { return points->size(); }
+    float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][int(dim)]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+        return false;
+    }
+};
+using point_tree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, point_cloud>, point_cloud, 3>;
+
+// Fixed chunks: the result never depends on how many threads ran them.
+constexpr std::size_t k_chunk = 1024;
+
+}  // namespace
+
+float ambient_coefficient(float d, float ka_min, float d_min, float exponent) {
+    // Luft 2007 Eq. 4.
+    if (!(d > 0.0f)) return 1.0f;
+    if (!(d < d_min)) return ka_min;
+    return ka_min + (1.0f - ka_min) * std::pow(1.0f - d / d_min, exponent);
+}
+
+struct implicit_field::tree {
+    point_cloud cloud;
+    point_tree index;
+    explicit tree(const std::vector<glm::vec3>* points)
+        : cloud{points}, index(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
+        index.buildIndex();
+    }
+};
+
+implicit_field::implicit_field(std::vector<glm::vec3> generators, float rho, float tau)
+    : m_generators(std::move(generators)), m_rho(rho), m_tau(tau) {
+    if (!(rho > 0.0f) || !std::isfinite(rho)) throw std::invalid_argument("implicit_field: ρ must be positive");
+    if (!(tau >= 0.0f)) throw std::invalid_argument("implicit_field: τ must be >= 0 (Luft 2007 Eq. 3)");
+    m_tree = std::make_unique<tree>(&m_generators);
+}
+implicit_field::~implicit_field() = default;
+implicit_field::implicit_field(implicit_field&& other) noexcept
+    : m_generators(std::move(other.m_generators)), m_rho(other.m_rho), m_tau(other.m_tau),
+      m_tree(std::move(other.m_tree)) {
+    if (m_tree) m_tree->cloud.points = &m_generators;  // the adaptor points at our vector now
+}
+implicit_field& implicit_field::operator=(implicit_field&& other) noexcept {
+    m_generators = std::move(other.m_generators);
+    m_rho = other.m_rho;
+    m_tau = other.m_tau;
+    m_tree = std::move(other.m_tree);
+    if (m_tree) m_tree->cloud.points = &m_generators;
+    return *this;
+}
+
+float implicit_field::value(const glm::vec3& q) const {
+    // Eq. 3 over the generators within ρ (Eq. 2 is zero beyond).
+    std::vector<std::pair<std::uint32_t, float>> near;
+    nanoflann::SearchParams params;
+    params.sorted = false;
+    m_tree->index.radiusSearch(&q.x, m_rho * m_rho, near, params);
+    // Summed in generator order: the same sum whatever order the tree returned them in.
+    std::sort(near.begin(), near.end());
+    float sum = 0.0f;
+    for (const auto& [i, d2] : near) sum += generator_density(d2, m_rho);
+    return sum - m_tau;
+}
+
+glm::vec3 implicit_field::outward_normal(const glm::vec3& q) const {
+    std::vector<std::pair<std::uint32_t, float>> near;
+    nanoflann::SearchParams params;
+    params.sorted = false;
+    m_tree->index.radiusSearch(&q.x, m_rho * m_rho, near, params);
+    std::sort(near.begin(), near.end());
+    glm::vec3 g(0.0f);  // −∇F = Σ 4(1 − s²)(q − p_i)/ρ²
+    for (const auto& [i, d2] : near) {
+        const float s2 = d2 / (m_rho * m_rho);
+        if (s2 < 1.0f) g += 4.0f * (1.0f - s2) * (q - m_generators[i]) / (m_rho * m_rho);
+    }
+    const float length = glm::length(g);
+    return length > 0.0f ? g / length : glm::vec3(0.0f);
+}
+
+iso_surface extract_iso_surface(const implicit_field& field, float cell_m) {
+    iso_surface out;
+    if (field.generators().empty()) return out;
+    if (!(cell_m > 0.0f)) throw std::invalid_argument("extract_iso_surface: the cell must be positive");
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : field.generators()) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // F is −τ beyond ρ of every generator: one cell more than ρ holds the whole surface.
+    lo -= glm::vec3(field.rho() + cell_m);
+    hi += glm::vec3(field.rho() + cell_m);
+    const glm::ivec3 n = glm::ivec3(glm::ceil((hi - lo) / cell_m)) + 1;
+    const std::size_t count = std::size_t(n.x) * std::size_t(n.y) * std::size_t(n.z);
+    if (count > 64u * 1024u * 1024u)
+        throw std::invalid_argument("extract_iso_surface: " + std::to_string(count) +
+                                    " grid samples; raise the cell size (implicit.cells_per_rho)");
+    // Sampled in parallel into a dense array (fixed chunks), then handed to OpenVDB, which
+    // meshes the level set: "inside" is below the isovalue, so the grid holds −F.
+    std::vector<float> samples(count);
+    const std::size_t chunks = (count + k_chunk - 1) / k_chunk;
+    ecs::parallel_for_each_index(chunks, [&](std::size_t chunk) {
+        const std::size_t end = std::min(count, (chunk + 1) * k_chunk);
+        for (std::size_t i = chunk * k_chunk; i < end; ++i) {
+            const int x = int(i % std::size_t(n.x));
+            const int y = int((i / std::size_t(n.x)) % std::size_t(n.y));
+            const int z = int(i / (std::size_t(n.x) * std::size_t(n.y)));
+            samples[i] = -field.value(lo + glm::vec3(x, y, z) * cell_m);
+        }
+    });
+    openvdb::initialize();
+    const float outside = field.tau();  // −F where no generator reaches
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(outside);
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(double(cell_m)));
+    auto access = grid->getAccessor();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (samples[i] == outside) continue;  // the background
+        const int x = int(i % std::size_t(n.x));
+        const int y = int((i / std::size_t(n.x)) % std::size_t(n.y));
+        const int z = int(i / (std::size_t(n.x) * std::size_t(n.y)));
+        access.setValue(openvdb::Coord(x, y, z), samples[i]);
+    }
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec4I> quads;
+    openvdb::tools::volumeToMesh(*grid, points, quads, 0.0);
+    out.positions.reserve(points.size());
+    for (const openvdb::Vec3s& p : points) out.positions.push_back(lo + glm::vec3(p.x(), p.y(), p.z()));
+    out.normals.resize(out.positions.size());
+    const std::size_t point_chunks = (out.positions.size() + k_chunk - 1) / k_chunk;
+    ecs::parallel_for_each_index(point_chunks, [&](std::size_t chunk) {
+        const std::size_t end = std::min(out.positions.size(), (chunk + 1) * k_chunk);
+        for (std::size_t i = chunk * k_chunk; i < end; ++i) out.normals[i] = field.outward_normal(out.positions[i]);
+    });
+    return out;
+}
+
+std::vector<glm::vec3> foliage_generators(const mesh_data& mesh, float fraction, std::uint64_t seed) {
+    // Luft 2007 §3.1: one generator per foliage primitive at its centre of mass, a random fraction.
+    std::vector<glm::vec3> all;
+    for (const submesh& s : mesh.submeshes) {
+        if (s.material != material_kind::leaf) continue;
+        for (std::uint32_t i = s.first_index; i + 2 < s.first_index + s.index_count; i += 3) {
+            const glm::vec3& a = mesh.vertices[mesh.indices[i]].position;
+            const glm::vec3& b = mesh.vertices[mesh.indices[i + 1]].position;
+            const glm::vec3& c = mesh.vertices[mesh.indices[i + 2]].position;
+            all.push_back((a + b + c) / 3.0f);
+        }
+    }
+    if (all.empty() || !(fraction < 1.0f)) return all;
+    rng r(seed, 0x4c554654);  // "LUFT"
+    std::vector<glm::vec3> chosen;
+    for (const glm::vec3& p : all)
+        if (r.uniform() < fraction) chosen.push_back(p);
+    if (chosen.empty()) chosen.push_back(all[all.size() / 2]);
+    return chosen;
+}
+
+implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
+    if (generators.empty()) return s;
+    if (!(s.rho_m > 0.0f)) {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const glm::vec3& p : generators) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        s.rho_m = std::max(0.2f * 0.5f * glm::length(hi - lo), 1e-3f);
+    }
+    if (!(s.tau > 0.0f) || !(s.d_min > 0.0f)) {
+        const implicit_field unthresholded(generators, s.rho_m, 0.0f);
+        std::vector<float> own(generators.size());
+        for (std::size_t i = 0; i < generators.size(); ++i) own[i] = unthresholded.value(generators[i]);
+        std::nth_element(own.begin(), own.begin() + std::ptrdiff_t(own.size() / 2), own.end());
+        const float m = own[own.size() / 2];
+        if (!(s.tau > 0.0f)) s.tau = 0.25f * m;
+        if (!(s.d_min > 0.0f)) s.d_min = std::max(m - s.tau, 1e-6f);
+    }
+    return s;
+}
+
+void apply_implicit_illumination(mesh_data& mesh, const implicit_field& field, const iso_surface& surface,
+                                 const implicit_settings& settings) {
+    std::unique_ptr<point_tree> nearest;
+    const point_cloud cloud{&surface.positions};
+    if (!surface.positions.empty()) {
+        nearest = std::make_unique<point_tree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+        nearest->buildIndex();
+    }
+    const std::size_t chunks = (mesh.vertices.size() + k_chunk - 1) / k_chunk;
+    ecs::parallel_for_each_index(chunks, [&](std::size_t chunk) {
+        const std::size_t end = std::min(mesh.vertices.size(), (chunk + 1) * k_chunk);
+        for (std::size_t i = chunk * k_chunk; i < end; ++i) {
+            vertex& v = mesh.vertices[i];
+            // §3.2: k_a from the density at the vertex (Eq. 4).
+            const float ka = ambient_coefficient(field.value(v.position), settings.ka_min, settings.d_min,
+                                                 settings.exponent);
+            // §3.3: the normal of the nearest iso-surface vertex, or a mix with the original.
+            glm::vec3 n = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0.0f, 1.0f, 0.0f);
+            if (nearest) {
+                std::uint32_t j = 0;
+                float d2 = 0.0f;
+                nearest->knnSearch(&v.position.x, 1, &j, &d2);
+                const glm::vec3 mixed = glm::mix(n, surface.normals[j], settings.blend);
+                if (glm::length(mixed) > 1e-6f) n = glm::normalize(mixed);
+            }
+            // §3.2 end: the normal's length carries k_a; never 0, which would lose its direction.
+            v.normal = n * std::max(ka, 1.0f / 256.0f);
+        }
+    });
+}
+
+implicit_report bake_implicit_illumination(plant_model& plant, const implicit_settings& settings) {
+    implicit_report report;
+    const std::vector<glm::vec3> generators =
+        foliage_generators(plant.lods[0], settings.generator_fraction, settings.seed);
+    report.used = implicit_defaults(generators, settings);
+    report.generators = generators.size();
+    if (generators.empty()) return report;  // no foliage: nothing to light by its shape
+    const implicit_field field(generators, report.used.rho_m, report.used.tau);
+    const iso_surface surface = extract_iso_surface(field, report.used.rho_m / report.used.cells_per_rho);
+    report.surface_vertices = surface.positions.size();
+    for (mesh_data& level : plant.lods) apply_implicit_illumination(level, field, surface, report.used);
+    double sum = 0.0;
+    for (const vertex& v : plant.lods[0].vertices) sum += double(glm::length(v.normal));
+    report.mean_ka = plant.lods[0].vertices.empty() ? 1.0f : float(sum / double(plant.lods[0].vertices.size()));
+    return report;
+}
+
+}  // namespace sylva

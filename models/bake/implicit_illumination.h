@@ -1,0 +1,113 @@
+#pragma once
+// Expressive foliage illumination from implicit surfaces (Luft, Balzer & Deussen 2007): a
+// preprocessing step that only rewrites a plant's vertex normals.
+//
+//   - Generator points at the centres of mass of the foliage triangles (§3.1), a seeded random
+//     fraction of them (§3.1: "randomly selecting just a fraction ... producing very similar
+//     results"), each with the same radius of influence ρ.
+//   - The density field F(q) = Σ D_i(q) − τ, D_i(q) = (1 − (|q − p_i| / ρ)²)² inside ρ
+//     (Eq. 2, Eq. 3).
+//   - Its iso-surface F = 0, extracted by OpenVDB's volume-to-mesh from F sampled on a grid
+//     (§2.3: "a Marching Cube algorithm [LC87] or one of its derivatives").
+//   - Per vertex of the plant (foliage, trunk and branches alike, §3.2 end): the ambient
+//     coefficient k_a from F at the vertex by Eq. 4, and the normal of the nearest iso-surface
+//     vertex (§3.3), optionally blended with the original.
+//   - Stored as the normal scaled by k_a (§3.2 end: "the normal vector of each vertex is scaled by
+//     the corresponding ambient reflection coefficient"), so the vertex format does not grow; a
+//     shader decodes k_a as the normal's length.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+#include "models/mesh.h"
+#include "models/plant_model.h"
+
+namespace sylva {
+
+// The paper's parameters. 0 for rho_m, tau or d_min: derived from the model (implicit_defaults).
+struct implicit_settings {
+    float generator_fraction = 0.25f;  // §3.1: the share of foliage triangles that are generators
+    std::uint64_t seed = 1;
+    float rho_m = 0.0f;        // ρ, every generator's radius of influence (Eq. 2)
+    float tau = 0.0f;          // τ, the threshold (Eq. 3)
+    float ka_min = 0.3f;       // k_a,min (Eq. 4)
+    float d_min = 0.0f;        // d_min (Eq. 4): the density of the foliage's core
+    float exponent = 1.0f;     // n (Eq. 4)
+    float blend = 1.0f;        // N' = normalize(mix(N, N_s, blend)); the paper uses 1 (§3.3)
+    float cells_per_rho = 4.0f;  // the grid F is sampled on for the iso-surface: ρ / this
+    bool operator==(const implicit_settings&) const = default;
+};
+
+// Eq. 2: one generator's density at squared distance `d2` for radius `rho`.
+inline float generator_density(float d2, float rho) {
+    const float s2 = d2 / (rho * rho);
+    return s2 < 1.0f ? (1.0f - s2) * (1.0f - s2) : 0.0f;
+}
+
+// Eq. 4: the ambient coefficient at density value d = F(v).
+float ambient_coefficient(float d, float ka_min, float d_min, float exponent);
+
+// The density field of a generator set (Eq. 3), with a k-d tree over the generators (nanoflann).
+class implicit_field {
+public:
+    implicit_field(std::vector<glm::vec3> generators, float rho, float tau);
+    ~implicit_field();
+    implicit_field(implicit_field&&) noexcept;
+    implicit_field& operator=(implicit_field&&) noexcept;
+
+    // F(q) = Σ D_i(q) − τ.
+    float value(const glm::vec3& q) const;
+    // The outward unit normal of the level set through q: −∇F / |∇F| (∇D_i = −4(1 − s²)(q − p_i)/ρ²);
+    // zero where no generator reaches.
+    glm::vec3 outward_normal(const glm::vec3& q) const;
+
+    const std::vector<glm::vec3>& generators() const { return m_generators; }
+    float rho() const { return m_rho; }
+    float tau() const { return m_tau; }
+
+private:
+    struct tree;
+    std::vector<glm::vec3> m_generators;
+    float m_rho = 1.0f;
+    float m_tau = 0.0f;
+    std::unique_ptr<tree> m_tree;
+};
+
+// The iso-surface F = 0 as vertices with outward normals (triangles are not needed: §3.3 takes
+// the nearest vertex's normal).
+struct iso_surface {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+};
+iso_surface extract_iso_surface(const implicit_field& field, float cell_m);
+
+// The foliage triangles' centres of mass (submeshes of material leaf), a seeded random
+// `fraction` of them (at least one when there is foliage).
+std::vector<glm::vec3> foliage_generators(const mesh_data& mesh, float fraction, std::uint64_t seed);
+
+// `settings` with ρ, τ and d_min filled in from the generators where they are 0:
+//   ρ = 0.2 × the radius of the generators' bounding sphere (§3.1: "values that provide
+//   adequate results can be automatically specified with regard to the size of the model");
+//   m = the median of Σ D_i at the generators themselves (the foliage's own density);
+//   τ = m / 4, so the surface lies where the density falls to a quarter of the foliage's;
+//   d_min = m − τ, so the ambient reaches k_a,min at the foliage's typical density.
+implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings settings);
+
+// What the bake did, for `sylva inspect` and the tests.
+struct implicit_report {
+    implicit_settings used;       // with the derived values
+    std::size_t generators = 0;
+    std::size_t surface_vertices = 0;
+    float mean_ka = 1.0f;         // over the full mesh's vertices
+};
+
+// Rewrites every vertex normal of `mesh` as normalize(mix(N, N_s, blend)) × k_a.
+void apply_implicit_illumination(mesh_data& mesh, const implicit_field& field, const iso_surface& surface,
+                                 const implicit_settings& settings);
+
+// The whole bake on a plant: generators from its full mesh's foliage, the field, the surface,
+// and every level's normals rewritten from the same field.
+implicit_report bake_implicit_illumination(plant_model& plant, const implicit_settings& settings);
+
+}  // namespace sylva

@@ -1,0 +1,134 @@
+// Luft, Balzer & Deussen 2007 (models/bake/implicit_illumination.h) at hand-computed values: the
+// density of Eq. 2 and Eq. 3, the ambient transfer function of Eq. 4, the iso-surface of one
+// generator (a sphere of radius ρ·sqrt(1 − sqrt(τ))), the realigned normal and k_a stored as its
+// length, the defaults from the model's size, and the whole bake on a generated tree.
+#include "models/bake/implicit_illumination.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "models/generate/plant_library.h"
+
+namespace sylva {
+namespace {
+
+TEST(implicit_illumination, one_generator_density_is_eq2) {
+    // D = (1 − (d/ρ)²)²: d = ρ/2 gives (3/4)² = 0.5625; d = 0 gives 1; d >= ρ gives 0.
+    EXPECT_FLOAT_EQ(generator_density(0.25f, 1.0f), 0.5625f);
+    EXPECT_FLOAT_EQ(generator_density(0.0f, 2.0f), 1.0f);
+    EXPECT_FLOAT_EQ(generator_density(4.0f, 2.0f), 0.0f);
+    EXPECT_FLOAT_EQ(generator_density(9.0f, 2.0f), 0.0f);
+}
+
+TEST(implicit_illumination, the_field_sums_its_generators_less_tau_eq3) {
+    // Generators at x = 0 and x = 1, ρ = 2, τ = 0.3. At x = 0.5 each is 0.5 away: s² = 1/16,
+    // D = (15/16)² = 0.87890625, F = 2 × 0.87890625 − 0.3 = 1.4578125.
+    const implicit_field field({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}}, 2.0f, 0.3f);
+    EXPECT_FLOAT_EQ(field.value({0.5f, 0.0f, 0.0f}), 1.4578125f);
+    // At x = 3: the first is beyond ρ, the second 2 away (exactly ρ): F = −τ.
+    EXPECT_FLOAT_EQ(field.value({3.0f, 0.0f, 0.0f}), -0.3f);
+    // The level set's outward normal on the axis beyond both generators points along +x.
+    const glm::vec3 n = field.outward_normal({2.5f, 0.0f, 0.0f});
+    EXPECT_NEAR(n.x, 1.0f, 1e-6f);
+    EXPECT_THROW(implicit_field({{0.0f, 0.0f, 0.0f}}, 0.0f, 0.1f), std::invalid_argument);
+    EXPECT_THROW(implicit_field({{0.0f, 0.0f, 0.0f}}, 1.0f, -0.1f), std::invalid_argument);
+}
+
+TEST(implicit_illumination, the_ambient_coefficient_is_eq4) {
+    // k_a,min = 0.2, d_min = 2, n = 2: d <= 0 → 1; d = 1 → 0.2 + 0.8·(1/2)² = 0.4; d >= 2 → 0.2.
+    EXPECT_FLOAT_EQ(ambient_coefficient(-1.0f, 0.2f, 2.0f, 2.0f), 1.0f);
+    EXPECT_FLOAT_EQ(ambient_coefficient(0.0f, 0.2f, 2.0f, 2.0f), 1.0f);
+    EXPECT_FLOAT_EQ(ambient_coefficient(1.0f, 0.2f, 2.0f, 2.0f), 0.4f);
+    EXPECT_FLOAT_EQ(ambient_coefficient(2.0f, 0.2f, 2.0f, 2.0f), 0.2f);
+    EXPECT_FLOAT_EQ(ambient_coefficient(3.0f, 0.2f, 2.0f, 2.0f), 0.2f);
+    // n = 1, d = 0.5: 0.2 + 0.8 · 0.75 = 0.8; n = 1/3 darkens more slowly (Figure 4).
+    EXPECT_FLOAT_EQ(ambient_coefficient(0.5f, 0.2f, 2.0f, 1.0f), 0.8f);
+    EXPECT_GT(ambient_coefficient(0.5f, 0.2f, 2.0f, 1.0f / 3.0f), 0.8f);
+}
+
+TEST(implicit_illumination, one_generator_gives_a_sphere_with_radial_normals) {
+    // ρ = 1, τ = 1/4: D = τ where 1 − s² = 1/2, a sphere of radius sqrt(1/2) = 0.7071.
+    const implicit_field field({{0.0f, 0.0f, 0.0f}}, 1.0f, 0.25f);
+    const float cell = 0.05f;
+    const iso_surface surface = extract_iso_surface(field, cell);
+    ASSERT_GT(surface.positions.size(), 500u);
+    ASSERT_EQ(surface.normals.size(), surface.positions.size());
+    for (std::size_t i = 0; i < surface.positions.size(); ++i) {
+        const glm::vec3 p = surface.positions[i];
+        EXPECT_NEAR(glm::length(p), std::sqrt(0.5f), 0.5f * cell) << "vertex " << i;
+        EXPECT_GT(glm::dot(surface.normals[i], glm::normalize(p)), 0.999f) << "vertex " << i;
+    }
+}
+
+TEST(implicit_illumination, a_vertex_takes_the_nearest_surface_normal_and_ka_as_its_length) {
+    const implicit_field field({{0.0f, 0.0f, 0.0f}}, 1.0f, 0.25f);
+    const iso_surface surface = extract_iso_surface(field, 0.05f);
+    implicit_settings s;
+    s.ka_min = 0.2f;
+    s.d_min = 1.0f;
+    s.exponent = 1.0f;
+    mesh_data mesh;
+    mesh.vertices = {{{0.3f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {}},   // inside
+                     {{0.0f, 0.0f, 2.0f}, {0.0f, 1.0f, 0.0f}, {}}};  // beyond ρ
+    mesh_data kept = mesh;
+    apply_implicit_illumination(mesh, field, surface, s);
+    // Inside: F = (1 − 0.09)² − 0.25 = 0.5781, k_a = 0.2 + 0.8·(1 − 0.5781) = 0.53752; the
+    // nearest surface vertex lies on +x, whose normal is +x.
+    const float f = (1.0f - 0.09f) * (1.0f - 0.09f) - 0.25f;
+    EXPECT_NEAR(glm::length(mesh.vertices[0].normal), 0.2f + 0.8f * (1.0f - f), 1e-5f);
+    EXPECT_GT(glm::normalize(mesh.vertices[0].normal).x, 0.99f);
+    // Beyond every generator: F = −τ < 0, k_a = 1, the normal of the nearest point (+z).
+    EXPECT_NEAR(glm::length(mesh.vertices[1].normal), 1.0f, 1e-6f);
+    EXPECT_GT(glm::normalize(mesh.vertices[1].normal).z, 0.99f);
+    // blend 0 keeps the original direction and still stores k_a.
+    s.blend = 0.0f;
+    apply_implicit_illumination(kept, field, surface, s);
+    EXPECT_NEAR(glm::normalize(kept.vertices[0].normal).y, 1.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(kept.vertices[0].normal), glm::length(mesh.vertices[0].normal), 1e-6f);
+}
+
+TEST(implicit_illumination, generators_are_foliage_centroids_and_defaults_follow_the_size) {
+    mesh_data mesh;
+    mesh.vertices = {{{0, 0, 0}, {0, 1, 0}, {}}, {{3, 0, 0}, {0, 1, 0}, {}}, {{0, 3, 0}, {0, 1, 0}, {}},
+                     {{10, 0, 0}, {0, 1, 0}, {}}, {{13, 0, 0}, {0, 1, 0}, {}}, {{10, 3, 0}, {0, 1, 0}, {}}};
+    mesh.indices = {0, 1, 2, 3, 4, 5, 0, 2, 1};
+    mesh.submeshes = {{0, 6, material_kind::leaf}, {6, 3, material_kind::bark}};
+    const std::vector<glm::vec3> g = foliage_generators(mesh, 1.0f, 7);
+    ASSERT_EQ(g.size(), 2u);  // the bark triangle is no generator
+    EXPECT_EQ(g[0], glm::vec3(1.0f, 1.0f, 0.0f));
+    EXPECT_EQ(g[1], glm::vec3(11.0f, 1.0f, 0.0f));
+    // Their box's diagonal is 10: ρ = 0.2 × 5 = 1. They are 10 apart, so each sees only itself:
+    // m = 1, τ = 1/4, d_min = 3/4. Given values are kept.
+    const implicit_settings d = implicit_defaults(g, {});
+    EXPECT_FLOAT_EQ(d.rho_m, 1.0f);
+    EXPECT_FLOAT_EQ(d.tau, 0.25f);
+    EXPECT_FLOAT_EQ(d.d_min, 0.75f);
+    implicit_settings given;
+    given.rho_m = 2.0f;
+    given.tau = 0.5f;
+    given.d_min = 0.1f;
+    EXPECT_EQ(implicit_defaults(g, given), given);
+}
+
+TEST(implicit_illumination, a_generated_tree_is_darker_inside_and_bakes_the_same_twice) {
+    plant_model tree = generate_plant_model("broadleaf", 5, 64);
+    plant_model again = tree;
+    const implicit_report r = bake_implicit_illumination(tree, implicit_settings{});
+    EXPECT_GT(r.generators, 100u);
+    EXPECT_GT(r.surface_vertices, 100u);
+    EXPECT_GT(r.mean_ka, r.used.ka_min);
+    EXPECT_LT(r.mean_ka, 0.95f);
+    for (const mesh_data& level : tree.lods)
+        for (const vertex& v : level.vertices) {
+            ASSERT_GE(glm::length(v.normal), r.used.ka_min - 1e-4f);
+            ASSERT_LE(glm::length(v.normal), 1.0f + 1e-4f);
+        }
+    bake_implicit_illumination(again, implicit_settings{});
+    for (std::size_t i = 0; i < tree.lods[0].vertices.size(); ++i)
+        ASSERT_EQ(tree.lods[0].vertices[i].normal, again.lods[0].vertices[i].normal) << "vertex " << i;
+}
+
+}  // namespace
+}  // namespace sylva
