@@ -46,7 +46,10 @@ std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64
     }
     const scenario s = load_scenario_file_or_bundled(o.input);
     seed = s.seed;
-    return s.species;
+    // As spawning resolves them, so play finds these entries (an "implicit" model is its own).
+    std::vector<species_settings> out;
+    for (const species_settings& species : s.species) out.push_back(resolved_species(s, species));
+    return out;
 }
 
 int bake(const bake_options& o) {

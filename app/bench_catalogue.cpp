@@ -174,6 +174,7 @@ std::size_t sh_species(const scenario& s) {
 
 std::string lighting_family(const scenario& s, const std::string& lighting) {
     if (lighting == "sh") return "sh";
+    if (lighting == "implicit") return "implicit";
     if (lighting == "normal_mapped" || lighting == "pre_lit") return "normal";
     const std::size_t sh = sh_species(s);
     if (sh == s.species.size() && sh > 0) return "sh";
@@ -184,13 +185,16 @@ std::string lighting_family(const scenario& s, const std::string& lighting) {
 std::string lighting_family_description(const std::string& family) {
     if (family == "sh") return "every species lit by SH transfer (Behrendt 2005 §4)";
     if (family == "normal") return "every species lit by its normals (normal-mapped; pre-lit clouds compare here too)";
+    if (family == "implicit")
+        return "every species lit by Luft 2007's implicit-surface normals and density ambient";
     return "every species lit as the scenario says (its species are lit in different ways)";
 }
 
 bench_configuration_spec reference_configuration(const scenario& s, const std::string& family) {
     bench_configuration_spec spec;
     spec.options.geometry = geometry_mode::full;
-    if (family != lighting_family(s, "")) spec.options.lighting = family == "sh" ? "sh" : "normal_mapped";
+    if (family != lighting_family(s, ""))
+        spec.options.lighting = family == "sh" || family == "implicit" ? family : "normal_mapped";
     spec.samples = k_bench_reference_samples;
     return spec;
 }

@@ -40,8 +40,10 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
             "normal_mapped "
             "(by its normals), pre_lit (billboard clouds from the page lit at bake time) or sh "
             "(precomputed radiance transfer with self-shadowing in every representation, Behrendt "
-            "2005 §4; the first run bakes the transfer into the cache)")
-        ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh"}));
+            "2005 §4; the first run bakes the transfer into the cache) or implicit (Luft 2007: "
+            "normals realigned to the foliage's implicit surface, ambient darkened by its density; "
+            "baked into the model once, species.implicit tunes it)")
+        ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh", "implicit"}));
     command
         .add_option("--sample-distance", options.sample_distance_px,
                     "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "

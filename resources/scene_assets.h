@@ -19,8 +19,10 @@ namespace sylva {
 // How a species' plants are lit (scenario `lighting`; Behrendt 2005 §2.3 and §4). The renderer
 // draws each variant with its own shader: normal-lit, the clouds' baked pre-lit page, or
 // precomputed radiance transfer in every representation.
-enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh };
-inline constexpr std::size_t k_lighting_variants = 3;
+// `implicit` (Luft 2007) is normal-lit from normals that carry the foliage's implicit surface and
+// its ambient coefficient as their length (models/bake/implicit_illumination.h).
+enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh, implicit };
+inline constexpr std::size_t k_lighting_variants = 4;
 
 // One species as the LOD systems see it. Sizes are for scale 1; instances multiply.
 struct species_entry {

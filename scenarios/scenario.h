@@ -48,7 +48,19 @@
 //                                                plane); must be >= far_distance_m
 //     octree_depth       integer    0            0 .. 3; Deussen 2002 §6.1 cells per plant
 //     lighting           string     "scenario"   "scenario" (lod.lighting), "normal_mapped",
-//                                                "pre_lit" or "sh" (see lod.lighting)
+//                                                "pre_lit", "sh" or "implicit" (see lod.lighting)
+//     implicit           object     {}           Luft 2007, with lighting "implicit": {
+//       generator_fraction number   0.25         0.001 .. 1; the foliage triangles that are
+//                                                generators (§3.1)
+//       rho_m            number     0            0 .. 1000; ρ (Eq. 2); 0: 0.2 x the foliage's radius
+//       tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
+//                                                foliage's own median density
+//       ka_min           number     0.3          0 .. 1; k_a,min (Eq. 4)
+//       d_min            number     0            0 .. 1000; d_min (Eq. 4); 0: the foliage's
+//                                                median density less τ
+//       exponent         number     1            0.05 .. 20; n (Eq. 4)
+//       blend            number     1            0 .. 1; 1: the iso-surface's normal, 0: the
+//                                                original (§3.3) }
 //     ladder             array      none         this species' ladder (lod.representation
 //                                                "ladder"), as lod.ladder; none: lod.ladder
 //   }
@@ -167,7 +179,10 @@
 //                                       bake time with the plant's own shadows; meshes and
 //                                       samples stay normal-lit) or "sh" (precomputed radiance
 //                                       transfer: every representation lit by the same baked
-//                                       SH transfer vectors, self-shadowing included); a
+//                                       SH transfer vectors, self-shadowing included) or
+//                                       "implicit" (Luft 2007: normals realigned to the
+//                                       foliage's implicit surface, the ambient darkened by its
+//                                       density, baked into the model; species.implicit); a
 //                                       species' own "lighting" overrides it
 //     sh_bands           integer 3       2 .. 3; SH bands of the transfer vectors (4 or 9
 //                                       coefficients) with lighting "sh"
@@ -236,6 +251,20 @@ struct ladder_step_settings {
     bool operator==(const ladder_step_settings&) const = default;
 };
 
+// Luft 2007 (models/bake/implicit_illumination.h): a species' implicit-surface illumination,
+// baked into its model when its lighting is "implicit". 0 for rho_m, tau and d_min: derived
+// from the model's foliage (its size and its own density).
+struct implicit_lighting_settings {
+    float generator_fraction = 0.25f;  // §3.1: the share of foliage triangles that are generators
+    float rho_m = 0.0f;                // ρ (Eq. 2)
+    float tau = 0.0f;                  // τ (Eq. 3)
+    float ka_min = 0.3f;               // k_a,min (Eq. 4)
+    float d_min = 0.0f;                // d_min (Eq. 4)
+    float exponent = 1.0f;             // n (Eq. 4)
+    float blend = 1.0f;                // 1: the iso-surface's normal; 0: the original (§3.3)
+    bool operator==(const implicit_lighting_settings&) const = default;
+};
+
 struct species_settings {
     std::string name;
     std::string generator = "broadleaf";
@@ -247,6 +276,7 @@ struct species_settings {
     float importance = 1.0f;
     std::uint32_t octree_depth = 0;
     std::string lighting = "scenario";  // one of k_species_lightings
+    implicit_lighting_settings implicit;     // with lighting "implicit" (or the scenario's)
     std::vector<ladder_step_settings> ladder;  // empty: the lod section's
     bool operator==(const species_settings&) const = default;
 };
@@ -344,12 +374,12 @@ struct eco_tile_settings {
 inline constexpr std::array<std::string_view, 4> k_lod_representations{"mesh_levels", "points_lines",
                                                                         "billboard_clouds", "ladder"};
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
-inline constexpr std::array<std::string_view, 3> k_lightings{"normal_mapped", "pre_lit", "sh"};
+inline constexpr std::array<std::string_view, 4> k_lightings{"normal_mapped", "pre_lit", "sh", "implicit"};
 // How `lod.splats` may draw point samples (lod/point_line_lod.h splat_style).
 inline constexpr std::array<std::string_view, 2> k_splat_styles{"soft", "opaque"};
 // A species' `lighting`: "scenario" takes the lod section's.
-inline constexpr std::array<std::string_view, 4> k_species_lightings{"scenario", "normal_mapped",
-                                                                     "pre_lit", "sh"};
+inline constexpr std::array<std::string_view, 5> k_species_lightings{"scenario", "normal_mapped",
+                                                                     "pre_lit", "sh", "implicit"};
 
 struct lod_settings {
     std::string representation = "mesh_levels";

@@ -131,6 +131,19 @@ const field_table<terrain_settings>& terrain_fields() {
     return table;
 }
 
+const field_table<implicit_lighting_settings>& implicit_fields() {
+    using t = implicit_lighting_settings;
+    static const auto table = field_table<t>()
+                                  .number("generator_fraction", &t::generator_fraction, {0.001, 1.0})
+                                  .number("rho_m", &t::rho_m, {0.0, 1000.0})
+                                  .number("tau", &t::tau, {0.0, 1000.0})
+                                  .number("ka_min", &t::ka_min, {0.0, 1.0})
+                                  .number("d_min", &t::d_min, {0.0, 1000.0})
+                                  .number("exponent", &t::exponent, {0.05, 20.0})
+                                  .number("blend", &t::blend, {0.0, 1.0});
+    return table;
+}
+
 const field_table<species_settings>& species_fields() {
     using t = species_settings;
     static const auto table =
@@ -146,6 +159,7 @@ const field_table<species_settings>& species_fields() {
             .number("importance", &t::importance, {0.01, 100.0})
             .integer("octree_depth", &t::octree_depth, {0, 3})
             .choice("lighting", &t::lighting, k_species_lightings)
+            .object("implicit", &t::implicit, implicit_fields())
             .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
                  [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
             .check([](const json_node& n, const t& s) {

@@ -116,6 +116,7 @@ lighting_variant lighting_of(const scenario& s, const species_settings& species)
     if (name == "pre_lit") return lighting_variant::pre_lit;
     if (name == "sh") return lighting_variant::sh;
     if (name == "normal_mapped") return lighting_variant::normal_mapped;
+    if (name == "implicit") return lighting_variant::implicit;
     throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
 }
 
@@ -148,7 +149,7 @@ auto read_named_file(const scenario& s, const std::string& pointer, const std::s
 
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
                  const scene_needs& needs) {
-    const species_settings& settings = s.species[index];
+    const species_settings settings = resolved_species(s, s.species[index]);
     const std::size_t first_mesh = assets.meshes.size();
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model =

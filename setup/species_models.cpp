@@ -1,6 +1,8 @@
 #include "setup/species_models.h"
 
+#include <array>
 #include <span>
+#include <spdlog/spdlog.h>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +12,7 @@
 #include "models/gltf/gltf_import.h"
 #include "models/generate/plant_library.h"
 #include "models/cache/plant_model_io.h"
+#include "models/bake/implicit_illumination.h"
 #include "models/bake/point_line_bake.h"
 #include "models/cache/point_line_io.h"
 #include "models/cache/radiance_transfer_io.h"
@@ -56,6 +59,12 @@ std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes,
 
 }  // namespace
 
+species_settings resolved_species(const scenario& s, const species_settings& species) {
+    species_settings out = species;
+    if (out.lighting == "scenario") out.lighting = s.lod.lighting;
+    return out;
+}
+
 std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index) {
     return hash_combine(scenario_seed, std::uint64_t(index), 0x5eed5eedULL);
 }
@@ -63,8 +72,28 @@ std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index) {
 std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed) {
     std::uint64_t key = hash_string("plant_model");
     key = hash_string(std::to_string(k_plant_model_format) + "/" + std::to_string(k_species_texture_size), key);
-    if (!species.model.empty()) return hash_file(species.model, hash_string("gltf", key));
-    return hash_string(species.generator + "/" + std::to_string(seed), key);
+    key = !species.model.empty() ? hash_file(species.model, hash_string("gltf", key))
+                                 : hash_string(species.generator + "/" + std::to_string(seed), key);
+    if (species.lighting != "implicit") return key;
+    // Luft 2007's normals are the model's own: every bake made from the model keys on them.
+    const implicit_lighting_settings& i = species.implicit;
+    const std::array<float, 8> fields{float(k_implicit_format), i.generator_fraction, i.rho_m, i.tau, i.ka_min,
+                                      i.d_min, i.exponent, i.blend};
+    return hash_bytes(std::as_bytes(std::span(fields)), hash_string("implicit", key));
+}
+
+implicit_settings implicit_settings_of(const species_settings& species, std::uint64_t seed) {
+    const implicit_lighting_settings& i = species.implicit;
+    implicit_settings out;
+    out.generator_fraction = i.generator_fraction;
+    out.seed = hash_combine(seed, 0x4c554654u);  // "LUFT"
+    out.rho_m = i.rho_m;
+    out.tau = i.tau;
+    out.ka_min = i.ka_min;
+    out.d_min = i.d_min;
+    out.exponent = i.exponent;
+    out.blend = i.blend;
+    return out;
 }
 
 // A model file the importer cannot use is bad input (io/input_file.h: input_error), whatever
@@ -84,6 +113,13 @@ plant_model load_species_model(const species_settings& species, std::uint64_t se
         plant_model model = species.model.empty()
                                 ? generate_plant_model(species.generator, seed, k_species_texture_size)
                                 : import_species_model(species.model);
+        if (species.lighting == "implicit") {
+            const implicit_report r = bake_implicit_illumination(model, implicit_settings_of(species, seed));
+            spdlog::info("{}: implicit illumination from {} generators, ρ {:.3g} m, τ {:.3g}, d_min {:.3g}: "
+                         "{} surface vertices, mean k_a {:.2f}",
+                         species.name, r.generators, r.used.rho_m, r.used.tau, r.used.d_min, r.surface_vertices,
+                         r.mean_ka);
+        }
         return serialize_plant_model(model);
     };
     return load_cached<plant_model>(cache, "plants", species_model_key(species, seed), bake,

@@ -7,6 +7,7 @@
 #include "models/cache/bake_cache.h"
 #include "models/bake/billboard_cloud.h"
 #include "models/bake/crossed_billboard.h"
+#include "models/bake/implicit_illumination.h"
 #include "models/plant_model.h"
 #include "models/bake/point_line_model.h"
 #include "models/bake/radiance_transfer.h"
@@ -25,7 +26,19 @@ std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index);
 // the texture size and the plant-model format version.
 std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed);
 
-// `cache` may be null (no caching). Throws with the file and part on a broken glTF.
+// Bumped when the implicit illumination bake (models/bake/implicit_illumination.h) changes.
+constexpr std::uint32_t k_implicit_format = 1;
+
+// `species` with its lighting resolved: "scenario" becomes the scenario's lod.lighting. Every
+// load_species_* below reads `lighting` ("implicit" bakes Luft 2007 into the model), so callers
+// pass resolved settings.
+species_settings resolved_species(const scenario& s, const species_settings& species);
+
+// The bake's settings for a species with lighting "implicit" (its seed derived from `seed`).
+implicit_settings implicit_settings_of(const species_settings& species, std::uint64_t seed);
+
+// `cache` may be null (no caching). Throws with the file and part on a broken glTF. With
+// lighting "implicit" the model's normals carry Luft 2007's illumination.
 plant_model load_species_model(const species_settings& species, std::uint64_t seed, bake_cache* cache);
 
 // The cache key of a species' crossed billboard: its model's key, the billboard format version,

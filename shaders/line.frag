@@ -36,6 +36,10 @@ void main() {
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, true), 1.0);
 #elif defined(SH_TRANSFER)
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, false), 1.0);
+#elif defined(IMPLICIT_LIGHTING) && defined(MATERIAL_LEAF)
+    out_color = vec4(shade_implicit(base, v_normal, v_position, true), 1.0);
+#elif defined(IMPLICIT_LIGHTING)
+    out_color = vec4(shade_implicit(base, v_normal, v_position, false), 1.0);
 #elif defined(MATERIAL_LEAF)
     out_color = vec4(shade_surface(base, n, v_position, true), 1.0);
 #else

@@ -89,6 +89,10 @@ void main() {
 #else
     v_color = shade_transfer(base, sh_sky, sh_sun.x, sh_sun.y, world, sh_exit, false);
 #endif
+#elif defined(IMPLICIT_LIGHTING) && defined(MATERIAL_LEAF)
+    v_color = shade_implicit(base, normal, world, true);
+#elif defined(IMPLICIT_LIGHTING)
+    v_color = shade_implicit(base, normal, world, false);
 #else
     vec3 n = normalize(normal);
     if (dot(n, world) > 0.0) n = -n;

@@ -44,17 +44,31 @@ float sun_visibility(vec3 position, vec3 normal, float view_depth) {
 // seen), camera-relative `position`. Sun with cascaded shadows plus SH sky light; `foliage`
 // adds sunlight transmitted through the blade when it is lit from behind. Then fog and tone
 // mapping.
-vec3 shade_surface(vec3 base, vec3 n, vec3 position, bool foliage) {
+// `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
+vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float ambient) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
     float visibility = sun_visibility(position, n, view_depth);
     float n_dot_l = dot(n, l);
     vec3 sun = u_sun_radiance.rgb * visibility;
-    vec3 sky = sh_irradiance(n);
+    vec3 sky = ambient * sh_irradiance(n);
     vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
     vec3 color = apply_fog(radiance, length(position));
     return tone_map(color);
+}
+
+vec3 shade_surface(vec3 base, vec3 n, vec3 position, bool foliage) {
+    return shade_surface_ambient(base, n, position, foliage, 1.0);
+}
+
+// Luft 2007 §3.2 end: the baked normal's length is the ambient coefficient k_a, and its direction
+// the normal realigned to the foliage's implicit surface (§3.3), which lights the crown by its
+// shape: it is not turned toward the side seen, as a thin card's own normal is.
+vec3 shade_implicit(vec3 base, vec3 encoded_normal, vec3 position, bool foliage) {
+    float ka = length(encoded_normal);
+    vec3 n = ka > 0.0 ? encoded_normal / ka : vec3(0.0, 1.0, 0.0);
+    return shade_surface_ambient(base, n, position, foliage, min(ka, 1.0));
 }
 
 // A colour already lit at bake time (a light factor of 1 where it faced the bake's light

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "models/image/texture_sampling.h"
 
@@ -104,7 +105,11 @@ vertex point_at(const triangle_corners& t, glm::vec2 b) {
     const glm::vec3 n = b0 * t.v[0].normal + b.x * t.v[1].normal + b.y * t.v[2].normal;
     const float length = glm::length(n);
     if (length > 1e-6f) {
-        out.normal = n / length;
+        // A unit direction times the corners' own lengths interpolated: 1 for plain normals, and
+        // Luft 2007's k_a where the model carries it (models/bake/implicit_illumination.h).
+        const glm::vec3 lengths{glm::length(t.v[0].normal), glm::length(t.v[1].normal), glm::length(t.v[2].normal)};
+        const bool unit = glm::all(glm::lessThan(glm::abs(lengths - 1.0f), glm::vec3(1e-4f)));
+        out.normal = unit ? n / length : n / length * (b0 * lengths.x + b.x * lengths.y + b.y * lengths.z);
     } else {
         const glm::vec3 g =
             glm::cross(t.v[1].position - t.v[0].position, t.v[2].position - t.v[0].position);

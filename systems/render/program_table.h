@@ -6,8 +6,8 @@
 //
 // Surface programs are indexed by four axes:
 //
-//   pass_kind (4) x material_kind (5) x surface_primitive (4) x lighting_variant (3)
-//   slot = ((pass * 5 + material) * 4 + primitive) * 3 + lighting       (240 slots)
+//   pass_kind (4) x material_kind (5) x surface_primitive (4) x lighting_variant (4)
+//   slot = ((pass * 5 + material) * 4 + primitive) * 4 + lighting       (320 slots)
 //
 // Depth-only passes (shadow, splat_visibility) light nothing: their lighting axis folds to
 // normal_mapped. Slots whose sources are equal share one GL program. The pass picks the entry

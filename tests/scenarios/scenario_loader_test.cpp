@@ -388,7 +388,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "tiles_per_side"},
         {"/species/0/heigth_m",
          "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
-         "importance, octree_depth, lighting, ladder"},
+         "importance, octree_depth, lighting, implicit, ladder"},
         {"/populations/0/spacing",
          "species, count, min_spacing_m, scale_min, scale_max, area, max_slope_deg, "
          "min_altitude_m, max_altitude_m, placement, density_map, density"},
@@ -877,6 +877,23 @@ TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
 }
 
+TEST(scenario_loader, implicit_lighting_parameters_load_and_round_trip) {
+    json j = minimal();
+    j["species"][0]["lighting"] = "implicit";
+    j["species"][0]["implicit"] = {{"rho_m", 0.8}, {"tau", 2.5}, {"ka_min", 0.2}, {"exponent", 3},
+                                   {"blend", 0.5}, {"generator_fraction", 0.1}};
+    const scenario s = load(j);
+    EXPECT_EQ(s.species[0].lighting, "implicit");
+    EXPECT_FLOAT_EQ(s.species[0].implicit.rho_m, 0.8f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.tau, 2.5f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.ka_min, 0.2f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.exponent, 3.0f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.blend, 0.5f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.generator_fraction, 0.1f);
+    EXPECT_FLOAT_EQ(s.species[0].implicit.d_min, 0.0f);  // derived from the model
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+}
+
 TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/representation", "voxels"),
                  {"/lod/representation", "unknown value; expected one of: mesh_levels, points_lines, billboard_clouds, ladder",
@@ -884,14 +901,19 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
                  {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});
     expect_error(set(minimal(), "/lod/lighting", "shiny"),
-                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh",
+                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh, implicit",
                   "\"shiny\""});
     expect_error(set(minimal(), "/lod/sh_bands", 4),
                  {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
     expect_error(
         set(minimal(), "/species/0/lighting", "sh3"),
         {"/species/0/lighting",
-         "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh", "\"sh3\""});
+         "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh, implicit", "\"sh3\""});
+    expect_error(set(set(minimal(), "/species/0/lighting", "implicit"), "/species/0/implicit", json{{"ka_min", 1.5}}),
+                 {"/species/0/implicit/ka_min", "out of range; expected a number from 0 to 1", "1.5"});
+    expect_error(set(minimal(), "/species/0/implicit", json{{"rho", 1}}),
+                 {"/species/0/implicit/rho", "unknown field; expected one of: generator_fraction, rho_m, tau, ka_min, "
+                  "d_min, exponent, blend", "1"});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),
                  {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
     expect_error(set(minimal(), "/lod/splat_factor", 0.5),
