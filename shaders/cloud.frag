@@ -43,6 +43,11 @@ void main() {
     // plant's own shadows (models/bake/billboard_cloud.h light_factor); only the scene's light
     // level, fog and tone mapping are applied here.
     out_color = vec4(shade_pre_lit(base, v_position), 1.0);
+#elif defined(IMPLICIT_LIGHTING)
+    // Luft 2007: the normal page holds the realigned normals times k_a (billboard_bake.cpp).
+    float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
+    vec3 m = mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0);
+    out_color = vec4(shade_implicit(base, m, v_position, true), 1.0);
 #else
     // Normal-mapped (Behrendt 2005 §2.3): the bake stored each side's normals toward its own
     // viewer, and back faces are culled, so the rotated normal is the one seen.

@@ -104,6 +104,9 @@ void main() {
 #elif defined(SH_TRANSFER)
     // Bark is one-sided and back-face culled: always the side its normal faces.
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, false), 1.0);
+#elif defined(IMPLICIT_LIGHTING) && defined(MATERIAL_BILLBOARD)
+    // The normal page's normals carry k_a as their length (models/bake/billboard_bake.cpp).
+    out_color = vec4(shade_surface_ambient(base, n, v_position, true, min(length(m), 1.0)), 1.0);
 #elif defined(IMPLICIT_LIGHTING) && defined(MATERIAL_LEAF)
     out_color = vec4(shade_implicit(base, v_normal, v_position, true), 1.0);
 #elif defined(IMPLICIT_LIGHTING)

@@ -305,7 +305,13 @@ std::uint8_t to_byte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.
 struct shaded_sample {
     glm::vec3 colour{0.0f};  // 0..255
     glm::vec3 normal{0.0f};  // unit, model space
+    // Luft 2007's k_a where the model's normals carry it as their length
+    // (models/bake/implicit_illumination.h); 1 for plain unit normals.
+    float ambient = 1.0f;
 };
+
+// True when a vertex normal is a plain unit normal, not one carrying Luft 2007's k_a.
+bool unit_normal(const vertex& v) { return std::abs(glm::length(v.normal) - 1.0f) < 1e-4f; }
 
 shaded_sample shade(const billboard_source& source, const sample& s) {
     const std::uint32_t triangle = s.triangle & k_triangle_mask;
@@ -319,11 +325,16 @@ shaded_sample shade(const billboard_source& source, const sample& s) {
     glm::vec3 n = a.normal * w0 + b.normal * s.lambda1 + c.normal * s.lambda2;
     const float length = glm::length(n);
     n = length > 0.0f ? n / length : glm::vec3(0.0f);
+    const bool implicit = !unit_normal(a) || !unit_normal(b) || !unit_normal(c);
     // Only alpha-tested (double-sided) surfaces are ever seen from the back: turn the normal
-    // toward the viewer as the leaf shader does for !gl_FrontFacing.
-    if (s.triangle & k_back_facing_bit) n = -n;
+    // toward the viewer as the leaf shader does for !gl_FrontFacing. Luft 2007's realigned
+    // normals light the crown by its shape and are not turned (shaders/shading.glsl shade_implicit).
+    if ((s.triangle & k_back_facing_bit) && !implicit) n = -n;
     const bool leaf = (s.triangle & k_alpha_tested_bit) != 0;
-    return {bilinear_colour(leaf ? *source.leaf_texture : *source.bark_texture, uv, leaf), n};
+    const float ambient = implicit ? glm::length(a.normal) * w0 + glm::length(b.normal) * s.lambda1 +
+                                         glm::length(c.normal) * s.lambda2
+                                   : 1.0f;
+    return {bilinear_colour(leaf ? *source.leaf_texture : *source.bark_texture, uv, leaf), n, ambient};
 }
 
 glm::vec3 encode_normal(glm::vec3 n) { return (n * 0.5f + 0.5f) * 255.0f; }
@@ -361,6 +372,7 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
         for (std::uint32_t tx = 0; tx < settings.width; ++tx) {
             glm::vec3 colour{0.0f};
             glm::vec3 normal{0.0f};
+            float ambient = 0.0f;
             float nearest = -std::numeric_limits<float>::infinity();
             std::uint32_t covered = 0;
             const std::size_t texel_index = std::size_t(ty) * settings.width + tx;
@@ -374,6 +386,7 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
                     const shaded_sample shaded = shade(source, smp);
                     colour += shaded.colour;
                     normal += shaded.normal;
+                    ambient += shaded.ambient;
                     if (transfer) add_transfer(source, smp, transfer);
                     nearest = std::max(nearest, smp.depth);
                     ++covered;
@@ -386,6 +399,9 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
                     transfer[i] /= float(covered);
             const float n_length = glm::length(normal);
             normal = n_length > 0.0f ? normal / n_length : raster.plane_normal();
+            // The normal page carries k_a as the normal's length too (1: a plain model's, exactly).
+            ambient /= float(covered);
+            if (ambient != 1.0f) normal *= ambient;
             const std::uint32_t total = s * s;
             const auto alpha = std::uint8_t((covered * 255 + total / 2) / total);
             write_rgb(out.albedo.at(tx, ty), colour / float(covered));

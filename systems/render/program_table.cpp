@@ -157,8 +157,8 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     }
     if (lighting == lighting_variant::sh && material != material_kind::ground)
         source.defines.push_back("SH_TRANSFER");
-    // Luft 2007: the normal's length is k_a; billboards' atlases hold directions only.
-    if (lighting == lighting_variant::implicit && (material == material_kind::bark || material == material_kind::leaf))
+    // Luft 2007: the normal's length (a billboard's normal page's too) is k_a.
+    if (lighting == lighting_variant::implicit && material != material_kind::ground)
         source.defines.push_back("IMPLICIT_LIGHTING");
     // Partners of a transition are drawn in the view only, and only as whole meshes.
     if (!shadow && m_options.fade_dissolve && primitive == surface_primitive::triangles &&
