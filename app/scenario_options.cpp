@@ -45,6 +45,11 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
             "baked into the model once, species.implicit tunes it)")
         ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh", "implicit"}));
     command
+        .add_option("--style", options.style,
+                    "photo, or toon: shading quantised into bands (Luft 2007 §4's non-photorealistic use; with "
+                    "--lighting implicit the bands follow the crown's shape; overrides render.style)")
+        ->check(CLI::IsMember({"photo", "toon"}));
+    command
         .add_option("--sample-distance", options.sample_distance_px,
                     "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "
                     "lod.sample_distance_px; larger is faster and coarser)")
@@ -96,6 +101,7 @@ scenario load_with_overrides(const scenario_options& options) {
         s.lod.lighting = *options.lighting;
         for (species_settings& species : s.species) species.lighting = "scenario";
     }
+    if (options.style) s.render.style = *options.style;
     if (options.sample_distance_px) s.lod.sample_distance_px = *options.sample_distance_px;
     if (options.splats) s.lod.splats = *options.splats;
     if (options.primitive_budget) {

@@ -18,6 +18,7 @@ struct scenario_options {
     // Overrides of the scenario's `lod` section (scenarios/scenario.h).
     std::optional<std::string> representation;
     std::optional<std::string> lighting;
+    std::optional<std::string> style;
     std::optional<float> sample_distance_px;
     std::optional<std::string> splats;
     std::optional<double> primitive_budget;

@@ -92,6 +92,7 @@ render::renderer_settings renderer_settings_of(const scenario& s) {
     r.cascades = int(s.shadows.cascades);
     r.shadows = s.render.shadows;
     r.exposure = s.render.exposure;
+    r.toon = s.render.style == "toon";
     return r;
 }
 

@@ -358,9 +358,14 @@ struct shadow_settings {
     bool operator==(const shadow_settings&) const = default;
 };
 
+// How plants and ground are shaded (render.style): "photo", or "toon" (Luft 2007 §4's
+// non-photorealistic use: shading quantised into bands, Decaudin 1996).
+inline constexpr std::array<std::string_view, 2> k_styles{"photo", "toon"};
+
 struct render_settings {
     bool shadows = true;
     float exposure = 1.0f;
+    std::string style = "photo";  // one of k_styles
     bool operator==(const render_settings&) const = default;
 };
 

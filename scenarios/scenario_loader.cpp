@@ -329,7 +329,8 @@ const field_table<render_settings>& render_fields() {
     using t = render_settings;
     static const auto table = field_table<t>()
                                   .boolean("shadows", &t::shadows)
-                                  .number("exposure", &t::exposure, {0.001, 1000.0});
+                                  .number("exposure", &t::exposure, {0.001, 1000.0})
+                                  .choice("style", &t::style, k_styles);
     return table;
 }
 

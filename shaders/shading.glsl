@@ -44,14 +44,31 @@ float sun_visibility(vec3 position, vec3 normal, float view_depth) {
 // seen), camera-relative `position`. Sun with cascaded shadows plus SH sky light; `foliage`
 // adds sunlight transmitted through the blade when it is lit from behind. Then fog and tone
 // mapping.
+// STYLE_TOON (Luft 2007 §4, cartoon shading after Decaudin 1996): a light term in [0, 1]
+// quantised to three bands, 0, 1/2 and 1, with a soft edge a tenth of a band wide.
+float toon_band(float x) {
+    float bands = 2.0;
+    float f = x * bands;
+    float edge = fract(f);
+    return (floor(f) + smoothstep(0.45, 0.55, edge)) / bands;
+}
+
 // `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
 vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float ambient) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
     float visibility = sun_visibility(position, n, view_depth);
     float n_dot_l = dot(n, l);
-    vec3 sun = u_sun_radiance.rgb * visibility;
+#ifdef STYLE_TOON
+    // The sun's term and k_a in bands; the sky's colour from above, the same for every normal.
+    n_dot_l = toon_band(max(n_dot_l, 0.0) * visibility);
+    visibility = 1.0;
+    ambient = 0.25 + 0.75 * toon_band(ambient);
+    vec3 sky = ambient * sh_irradiance(vec3(0.0, 1.0, 0.0));
+#else
     vec3 sky = ambient * sh_irradiance(n);
+#endif
+    vec3 sun = u_sun_radiance.rgb * visibility;
     vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
     vec3 color = apply_fog(radiance, length(position));
@@ -91,6 +108,11 @@ vec3 shade_transfer(vec3 base, vec3 sky_seen, float sun_seen, float sun_other, v
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
     float visibility = exit < 0.0 ? 1.0 : sun_visibility(position + l * exit, l, view_depth);
+#ifdef STYLE_TOON
+    sun_seen = toon_band(clamp(sun_seen, 0.0, 1.0) * visibility);
+    sun_other = 0.0;
+    visibility = 1.0;
+#endif
     vec3 sun = u_sun_radiance.rgb * visibility;
     vec3 radiance = base / 3.14159265 * (max(sky_seen, vec3(0.0)) + sun * max(sun_seen, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(sun_other, 0.0));

@@ -139,6 +139,7 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
         return source;
     }
     if (pass == pass_kind::soft_splats) source.defines.push_back("SOFT_SPLATS");
+    if (!shadow && m_options.toon) source.defines.push_back("STYLE_TOON");
     if (primitive == surface_primitive::lines || primitive == surface_primitive::line_quads) {
         source.defines.push_back("PRIMITIVE_LINES");
         // d'-wide quads; GL's own one-pixel lines where d' is about a pixel, and in the shadow

@@ -64,6 +64,7 @@ struct program_options {
     bool shadows = true;
     bool id_buffer = false;      // renderer_settings::id_buffer
     bool fade_dissolve = false;  // renderer_settings::fade_dissolve
+    bool toon = false;           // renderer_settings::toon
 };
 
 class program_table {

@@ -54,6 +54,8 @@ struct renderer_settings {
     // screen-door dissolve by their instance's fade. Only scenes whose LOD policy fades ask for
     // it: a discard in the bark shader costs early depth rejection on a software rasteriser.
     bool fade_dissolve = false;
+    // Luft 2007 §4: toon shading, the sun's and the sky's light quantised into bands.
+    bool toon = false;
 };
 
 // What one frame draws, gathered by the submit system from the ECS.

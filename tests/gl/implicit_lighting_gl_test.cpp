@@ -5,6 +5,7 @@
 // meshes, as points and lines, as a billboard cloud and as a crossed billboard: every rung.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,9 +20,11 @@ namespace {
 struct crown_look {
     double mean_luma = 0.0;       // over the plant's pixels, 0 .. 255
     double neighbour_change = 0.0;  // mean |Δ luma| between horizontally adjacent plant pixels
+    double luma_entropy = 0.0;    // bits, of the plant's pixels' luma rounded to integers
 };
 
-crown_look look_of(const std::string& lighting, const std::string& representation) {
+crown_look look_of(const std::string& lighting, const std::string& representation,
+                   const std::string& style = "photo") {
     scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
     s.width = 320;
     s.height = 180;
@@ -33,6 +36,7 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
         s.lod.representation = representation;
     }
     s.lod.lighting = lighting;
+    s.render.style = style;
     // A tenth of the leaves as generators keeps the bake short (§3.1: "very similar results").
     for (species_settings& species : s.species) species.implicit.generator_fraction = 0.1f;
     player_options options;
@@ -47,11 +51,13 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
     };
     crown_look out;
     std::size_t pixels = 0, pairs = 0;
+    std::array<std::size_t, 256> histogram{};
     for (std::size_t y = 0; y < image.height; ++y)
         for (std::size_t x = 0; x < image.width; ++x) {
             const std::size_t i = y * image.width + x;
             if (ids[i] == 0) continue;
             out.mean_luma += luma(i);
+            ++histogram[std::size_t(std::lround(luma(i)))];
             ++pixels;
             if (x + 1 < image.width && ids[i + 1] != 0) {
                 out.neighbour_change += std::abs(luma(i + 1) - luma(i));
@@ -61,6 +67,11 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
     EXPECT_GT(pixels, 2000u) << "the tree should fill part of the frame";
     out.mean_luma /= double(std::max<std::size_t>(pixels, 1));
     out.neighbour_change /= double(std::max<std::size_t>(pairs, 1));
+    for (const std::size_t n : histogram)
+        if (n > 0) {
+            const double p = double(n) / double(pixels);
+            out.luma_entropy -= p * std::log2(p);
+        }
     return out;
 }
 
@@ -79,6 +90,20 @@ TEST(implicit_lighting_gl, the_crown_is_smoother_and_darker_on_every_rung) {
         // The density ambient (§3.2) darkens it (measured by 7.6, 7.0, 7.4 and 12.1 of 255; as
         // meshes and points 1.8 and 0.3 with the shaders' decode of k_a broken on purpose).
         EXPECT_LT(implicit.mean_luma, normal.mean_luma - 4.0);
+    }
+}
+
+// Luft 2007 §4: toon shading (render.style "toon") quantises the light into bands, with the
+// original normals and with the realigned ones: the crown's luma spreads over fewer values.
+TEST(implicit_lighting_gl, toon_style_puts_the_crown_in_bands) {
+    SYLVA_REQUIRE_GL();
+    for (const char* lighting : {"normal_mapped", "implicit"}) {
+        SCOPED_TRACE(lighting);
+        const crown_look photo = look_of(lighting, "mesh_levels");
+        const crown_look toon = look_of(lighting, "mesh_levels", "toon");
+        std::printf("%s: luma entropy %.2f -> %.2f bits, neighbour change %.2f -> %.2f\n", lighting,
+                    photo.luma_entropy, toon.luma_entropy, photo.neighbour_change, toon.neighbour_change);
+        EXPECT_LT(toon.luma_entropy, photo.luma_entropy - 0.5);
     }
 }
 

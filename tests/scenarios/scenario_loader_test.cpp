@@ -400,7 +400,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
         {"/sun/keyframes/0/time", "t, elevation_deg, azimuth_deg"},
         {"/environment/rotation_deg", "map, map_rotation_deg"},
         {"/shadows/bias", "cascades, resolution, max_distance_m, split_lambda"},
-        {"/render/msaa", "shadows, exposure"},
+        {"/render/msaa", "shadows, exposure, style"},
         {"/lod/d",
          "representation, sample_distance_px, splat_factor, splats, fog_weighted_samples, "
          "primitive_budget, "
@@ -433,6 +433,7 @@ TEST(scenario_loader, wrong_types_are_named) {
         {"/frames", "expected an integer from 1 to 1000000", "\"abc\""},
         {"/fps", "expected a number", "\"abc\""},
         {"/render/shadows", "expected true or false", "\"abc\""},
+        {"/render/style", "unknown value; expected one of: photo, toon", "\"abc\""},
         {"/species/0/generator",
          "unknown value; expected one of: broadleaf, broadleaf_hd, conifer, shrub, grass, "
          "flower, fern",
