@@ -13,6 +13,7 @@
 #include "app/scenario_player.h"
 #include "components/transform.h"
 #include "gl_test_support.h"
+#include "ladder_walk.h"
 #include "lod/ladder.h"
 #include "lod/point_line_lod.h"
 #include "resources/playback.h"
@@ -23,8 +24,6 @@ namespace {
 
 constexpr std::uint32_t k_width = 480;
 constexpr std::uint32_t k_height = 270;
-constexpr float k_fov_deg = 50.0f;
-constexpr double k_eye_height_m = 7.0;
 constexpr float k_switch_px = 10.0f;  // eco_tile_points below 10 px, band ± 25 %
 constexpr float k_band = 0.25f;
 
@@ -37,65 +36,25 @@ scenario patch_on_a_ladder() {
     return s;
 }
 
-struct sample {
-    double distance_m = 0.0;
-    std::size_t pixels = 0;
-    frame_record record;
-    double normalised() const { return double(pixels) * distance_m * distance_m; }
-};
+using testing::drawn;
+using testing::walk_sample;
 
 class patch_to_its_tiles : public ::testing::Test {
 protected:
-    patch_to_its_tiles() : m_player(patch_on_a_ladder(), 2, testing::shared_gl_context(), nullptr, id_buffer()) {}
-
-    static player_options id_buffer() {
-        player_options options;
-        options.id_buffer = true;
-        return options;
-    }
-
-    // The ground distance from the patch's centre at which a typical shrub (the first) projects
-    // to `size_px`.
-    double distance_for(float size_px) {
-        const species_entry& shrub = m_player.world().resource<species_library>().species[0];
-        const float scale = m_player.world().table<world_transform>().data()[0].scale;
-        const double pixel = image_plane_units(1.0, double(k_fov_deg) * M_PI / 180.0, double(k_height));
-        const double eye_to_base = 2.0 * double(shrub.bounding_radius * scale) / (double(size_px) * pixel);
-        return std::sqrt(eye_to_base * eye_to_base - k_eye_height_m * k_eye_height_m);
-    }
-
-    sample at(double distance_m) {
-        ecs::world& world = m_player.world();
-        glm::dvec3 centre(0.0);
-        const auto& transforms = world.table<world_transform>();
-        for (std::size_t i = 0; i < transforms.size(); ++i) centre += transforms.data()[i].position;
-        centre /= double(transforms.size());
-        camera_keyframe key;
-        key.position = centre + glm::dvec3(0.0, k_eye_height_m, distance_m);
-        key.target = centre + glm::dvec3(0.0, k_eye_height_m, 0.0);
-        key.fov_deg = k_fov_deg;
-        world.resource<camera_track>().keys = {key};
-        m_player.set_frame(0);
-        sample s;
-        s.distance_m = distance_m;
-        s.record = m_player.step();
-        const std::vector<std::uint32_t> ids = m_player.capture_plant_ids();
-        s.pixels = std::size_t(std::count_if(ids.begin(), ids.end(), [](std::uint32_t id) { return id != 0; }));
-        return s;
-    }
-
-    scenario_player m_player;
+    patch_to_its_tiles() : m_walk(patch_on_a_ladder()) {}
+    // The first shrub's size, the walk's distance from the patch's centre.
+    double distance_for(float size_px) { return m_walk.distance_for(size_px); }
+    walk_sample at(double distance_m) { return m_walk.at(distance_m); }
+    testing::ladder_walk m_walk;
 };
-
-std::uint32_t drawn(const sample& s, representation r) { return s.record.instances[std::size_t(r)]; }
 
 TEST_F(patch_to_its_tiles, the_handover_to_the_tile_sets_does_not_thin_the_patch_out) {
     SYLVA_REQUIRE_GL();
     const float s = k_switch_px, h = k_band;
     // Edges well outside the first shrub's band: the patch is 24 m deep and its shrubs' sizes
     // differ, so every shrub is out of its band only some way beyond.
-    const sample before = at(distance_for(s * (1.0f + h) * 1.6f));
-    const sample after = at(distance_for(s * (1.0f - h) * 0.6f));
+    const walk_sample before = at(distance_for(s * (1.0f + h) * 1.6f));
+    const walk_sample after = at(distance_for(s * (1.0f - h) * 0.6f));
     EXPECT_GT(drawn(before, representation::points), 0u);
     EXPECT_EQ(drawn(before, representation::eco_tile), 0u);
     EXPECT_EQ(before.record.aggregated_tiles, 0u);
@@ -109,7 +68,7 @@ TEST_F(patch_to_its_tiles, the_handover_to_the_tile_sets_does_not_thin_the_patch
     std::size_t both = 0;
     for (int k = 1; k < 10; ++k) {
         const float size = s * (1.0f + h - 2.0f * h * float(k) / 10.0f);
-        const sample in = at(distance_for(size));
+        const walk_sample in = at(distance_for(size));
         std::printf(" %.0f", in.normalised());
         EXPECT_GE(in.normalised(), floor) << "at " << size << " px (" << in.distance_m << " m)";
         // The shrubs of one leaf tile differ in size: the tile draws its share once all of them

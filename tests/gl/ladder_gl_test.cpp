@@ -13,6 +13,7 @@
 #include "app/scenario_player.h"
 #include "components/transform.h"
 #include "gl_test_support.h"
+#include "ladder_walk.h"
 #include "lod/ladder.h"
 #include "lod/point_line_lod.h"
 #include "measure/temporal_metrics.h"
@@ -24,8 +25,6 @@ namespace {
 
 constexpr std::uint32_t k_width = 480;
 constexpr std::uint32_t k_height = 270;
-constexpr float k_fov_deg = 50.0f;
-constexpr double k_eye_height_m = 7.0;
 
 struct step {
     const char* rung;
@@ -47,54 +46,16 @@ scenario tree_on_a_ladder() {
     return s;
 }
 
-struct sample {
-    double distance_m = 0.0;
-    std::size_t pixels = 0;
-    frame_record record;
-    double normalised() const { return double(pixels) * distance_m * distance_m; }
-};
+using testing::drawn;
+using testing::walk_sample;
 
 class walk_down_the_ladder : public ::testing::Test {
 protected:
-    walk_down_the_ladder() : m_player(tree_on_a_ladder(), 2, testing::shared_gl_context(), nullptr, id_buffer()) {}
-
-    static player_options id_buffer() {
-        player_options options;
-        options.id_buffer = true;
-        return options;
-    }
-
-    // The camera's distance along the ground at which the tree's bounding sphere projects to
-    // `size_px` (select_representation measures from the eye to the plant's base).
-    double distance_for(float size_px) {
-        const species_entry& tree = m_player.world().resource<species_library>().species[0];
-        const float scale = m_player.world().table<world_transform>().data()[0].scale;
-        const double pixel = image_plane_units(1.0, double(k_fov_deg) * M_PI / 180.0, double(k_height));
-        const double eye_to_base = 2.0 * double(tree.bounding_radius * scale) / (double(size_px) * pixel);
-        return std::sqrt(eye_to_base * eye_to_base - k_eye_height_m * k_eye_height_m);
-    }
-
-    sample at(double distance_m) {
-        ecs::world& world = m_player.world();
-        const glm::dvec3 base = world.table<world_transform>().data()[0].position;
-        camera_keyframe key;
-        key.position = base + glm::dvec3(0.0, k_eye_height_m, distance_m);
-        key.target = base + glm::dvec3(0.0, k_eye_height_m, 0.0);
-        key.fov_deg = k_fov_deg;
-        world.resource<camera_track>().keys = {key};
-        m_player.set_frame(0);
-        sample s;
-        s.distance_m = distance_m;
-        s.record = m_player.step();
-        const std::vector<std::uint32_t> ids = m_player.capture_plant_ids();
-        s.pixels = std::size_t(std::count_if(ids.begin(), ids.end(), [](std::uint32_t id) { return id != 0; }));
-        return s;
-    }
-
-    scenario_player m_player;
+    walk_down_the_ladder() : m_walk(tree_on_a_ladder()) {}
+    double distance_for(float size_px) { return m_walk.distance_for(size_px); }
+    walk_sample at(double distance_m) { return m_walk.at(distance_m); }
+    testing::ladder_walk m_walk;
 };
-
-std::uint32_t drawn(const sample& s, representation r) { return s.record.instances[std::size_t(r)]; }
 
 TEST_F(walk_down_the_ladder, no_handover_thins_the_plant_out) {
     SYLVA_REQUIRE_GL();
@@ -104,8 +65,8 @@ TEST_F(walk_down_the_ladder, no_handover_thins_the_plant_out) {
         SCOPED_TRACE(std::string(k_steps[i - 1].rung) + " -> " + k_steps[i].rung);
         const float s = k_steps[i].below_px, h = k_default_band;
         // Just outside the band on each side: one rung whole.
-        const sample before = at(distance_for(s * (1.0f + h) * 1.02f));
-        const sample after = at(distance_for(s * (1.0f - h) * 0.98f));
+        const walk_sample before = at(distance_for(s * (1.0f + h) * 1.02f));
+        const walk_sample after = at(distance_for(s * (1.0f - h) * 0.98f));
         EXPECT_GT(drawn(before, nearer), 0u);
         EXPECT_EQ(drawn(before, farther), 0u);
         EXPECT_GT(drawn(after, farther), 0u);
@@ -116,7 +77,7 @@ TEST_F(walk_down_the_ladder, no_handover_thins_the_plant_out) {
                     before.normalised(), after.normalised());
         for (int k = 1; k < 10; ++k) {
             const float size = s * (1.0f + h - 2.0f * h * float(k) / 10.0f);
-            const sample in = at(distance_for(size));
+            const walk_sample in = at(distance_for(size));
             std::printf(" %.0f", in.normalised());
             EXPECT_GE(in.normalised(), floor) << "at " << size << " px (" << in.distance_m << " m)";
             // Inside the band both rungs are drawn: the one fading is the partner.
