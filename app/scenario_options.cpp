@@ -46,9 +46,10 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
         ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh", "implicit"}));
     command
         .add_option("--style", options.style,
-                    "photo, or toon: shading quantised into bands (Luft 2007 §4's non-photorealistic use; with "
-                    "--lighting implicit the bands follow the crown's shape; overrides render.style)")
-        ->check(CLI::IsMember({"photo", "toon"}));
+                    "photo; toon: shading quantised into bands; lines: ink lines where the normal or depth "
+                    "buffer jumps (Luft 2007 §4's non-photorealistic uses; with --lighting implicit both "
+                    "follow the crown's shape; overrides render.style)")
+        ->check(CLI::IsMember({"photo", "toon", "lines"}));
     command
         .add_option("--sample-distance", options.sample_distance_px,
                     "Deussen 2002 d' in pixels: the screen distance between point/line samples (overrides "

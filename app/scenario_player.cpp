@@ -93,6 +93,7 @@ render::renderer_settings renderer_settings_of(const scenario& s) {
     r.shadows = s.render.shadows;
     r.exposure = s.render.exposure;
     r.toon = s.render.style == "toon";
+    r.lines = s.render.style == "lines";
     return r;
 }
 

@@ -358,9 +358,10 @@ struct shadow_settings {
     bool operator==(const shadow_settings&) const = default;
 };
 
-// How plants and ground are shaded (render.style): "photo", or "toon" (Luft 2007 §4's
-// non-photorealistic use: shading quantised into bands, Decaudin 1996).
-inline constexpr std::array<std::string_view, 2> k_styles{"photo", "toon"};
+// How plants and ground are shaded (render.style): "photo", "toon" (Luft 2007 §4's
+// non-photorealistic use: shading quantised into bands, Decaudin 1996) or "lines" (ink lines
+// where the normal or depth buffer jumps, Saito & Takahashi 1990; Luft 2007 Figure 7).
+inline constexpr std::array<std::string_view, 3> k_styles{"photo", "toon", "lines"};
 
 struct render_settings {
     bool shadows = true;

@@ -55,6 +55,13 @@ void main() {
     vec3 n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0));
     out_color = vec4(shade_surface(base, n, v_position, true), 1.0);
 #endif
+#ifdef WRITE_NORMAL
+    {
+        float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
+        vec3 page = mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0);
+        out_normal = vec4(normalize(page) * 0.5 + 0.5, 1.0);
+    }
+#endif
 #ifdef WRITE_ID
     out_id = v_instance + 1u;
 #endif

@@ -116,6 +116,13 @@ void main() {
 #else
     out_color = vec4(shade_surface(base, n, v_position, false), 1.0);
 #endif
+#ifdef WRITE_NORMAL
+#if defined(IMPLICIT_LIGHTING) && !defined(MATERIAL_BILLBOARD)
+    out_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);  // realigned, not turned
+#else
+    out_normal = vec4(n * 0.5 + 0.5, 1.0);
+#endif
+#endif
 #ifdef WRITE_ID
     out_id = v_instance + 1u;
 #endif

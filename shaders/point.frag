@@ -4,6 +4,10 @@
 // blended into the splat layer (systems/render/splat_layer.h) with their nearest depth.
 flat in vec3 v_color;
 layout(location = 0) out vec4 out_color;
+#ifdef WRITE_NORMAL
+flat in vec3 v_lit_normal;  // the normal the splat was lit with (point.vert)
+layout(location = 2) out vec4 out_normal;
+#endif
 #ifdef SOFT_SPLATS
 // The splat layer's nearest depth (systems/render/splat_layer.h), MIN-blended.
 layout(location = 1) out float out_layer_depth;
@@ -23,6 +27,9 @@ void main() {
     out_layer_depth = gl_FragCoord.z;
 #else
     out_color = vec4(v_color, 1.0);
+#ifdef WRITE_NORMAL
+    out_normal = vec4(v_lit_normal * 0.5 + 0.5, 1.0);
+#endif
 #ifdef WRITE_ID
     out_id = v_instance + 1u;
 #endif

@@ -36,6 +36,9 @@ uniform int u_visibility_stride;  // lod/point_line_lod.h k_soft_splat_visibilit
 #include "shading.glsl"
 layout(binding = 0) uniform sampler2DArray u_albedo;
 flat out vec3 v_color;
+#ifdef WRITE_NORMAL
+flat out vec3 v_lit_normal;  // for the line style's normal buffer (point.frag)
+#endif
 #ifdef SH_TRANSFER
 #include "transfer.glsl"
 #include "vertex_transfer.glsl"
@@ -84,6 +87,9 @@ void main() {
     bool front_seen = dot(normal, world) <= 0.0;
     vec3 sh_sky = front_seen ? sh_transfer_sky(front) : sh_transfer_sky(back);
     vec2 sh_sun = front_seen ? vec2(sun_front, sun_back) : vec2(sun_back, sun_front);
+#ifdef WRITE_NORMAL
+    v_lit_normal = normalize(front_seen ? normal : -normal);
+#endif
 #if defined(MATERIAL_LEAF)
     v_color = shade_transfer(base, sh_sky, sh_sun.x, sh_sun.y, world, sh_exit, true);
 #else
@@ -91,11 +97,20 @@ void main() {
 #endif
 #elif defined(IMPLICIT_LIGHTING) && defined(MATERIAL_LEAF)
     v_color = shade_implicit(base, normal, world, true);
+#ifdef WRITE_NORMAL
+    v_lit_normal = normalize(normal);
+#endif
 #elif defined(IMPLICIT_LIGHTING)
     v_color = shade_implicit(base, normal, world, false);
+#ifdef WRITE_NORMAL
+    v_lit_normal = normalize(normal);
+#endif
 #else
     vec3 n = normalize(normal);
     if (dot(n, world) > 0.0) n = -n;
+#ifdef WRITE_NORMAL
+    v_lit_normal = n;
+#endif
 #if defined(MATERIAL_LEAF)
     v_color = shade_surface(base, n, world, true);
 #else

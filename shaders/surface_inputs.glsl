@@ -14,3 +14,8 @@ layout(location = 1) out uint out_id;  // ID buffer: instance index + 1 (0 = not
 
 layout(binding = 0) uniform sampler2DArray u_albedo;
 layout(location = 0) out vec4 out_color;
+#ifdef WRITE_NORMAL
+// The normal buffer the line style's edge pass reads (shaders/edges.frag): the normal the surface
+// was lit with, * 0.5 + 0.5, and 1 in alpha where a surface was drawn.
+layout(location = 2) out vec4 out_normal;
+#endif

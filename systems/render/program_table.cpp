@@ -66,6 +66,8 @@ surface_program locate(GLuint id) {
 program_table::program_table(const program_options& options) : m_options(options) {
     m_screen[std::size_t(screen_program::sky)] =
         m_shaders.program({"sky.vert", "sky.frag", {}, {}});
+    if (options.normals)
+        m_screen[std::size_t(screen_program::edges)] = m_shaders.program({"sky.vert", "edges.frag", {}, {}});
 }
 
 std::size_t program_table::slot_of(pass_kind pass, material_kind material,
@@ -140,6 +142,7 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     }
     if (pass == pass_kind::soft_splats) source.defines.push_back("SOFT_SPLATS");
     if (!shadow && m_options.toon) source.defines.push_back("STYLE_TOON");
+    if (pass == pass_kind::view && m_options.normals) source.defines.push_back("WRITE_NORMAL");
     if (primitive == surface_primitive::lines || primitive == surface_primitive::line_quads) {
         source.defines.push_back("PRIMITIVE_LINES");
         // d'-wide quads; GL's own one-pixel lines where d' is about a pixel, and in the shadow

@@ -34,7 +34,7 @@ enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splat
 // primitive_kind, with lines split by how they are widened: GL's own lines, or d'-wide quads
 // from line.geom (chosen per frame from d', so both are built).
 enum class surface_primitive : std::uint8_t { triangles, points, lines, line_quads, count };
-enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_ids, count };
+enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_ids, edges, count };
 
 constexpr surface_primitive surface_primitive_of(primitive_kind p, bool line_quads = false) {
     if (p == primitive_kind::lines)
@@ -65,6 +65,7 @@ struct program_options {
     bool id_buffer = false;      // renderer_settings::id_buffer
     bool fade_dissolve = false;  // renderer_settings::fade_dissolve
     bool toon = false;           // renderer_settings::toon
+    bool normals = false;        // renderer_settings::lines: the view writes its normal buffer
 };
 
 class program_table {

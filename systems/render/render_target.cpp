@@ -20,7 +20,7 @@ image_rgba8 image_from_bottom_up(int width, int height, const std::vector<std::u
 
 }  // namespace
 
-render_target::render_target(int width, int height, bool id_buffer)
+render_target::render_target(int width, int height, bool id_buffer, bool normal_buffer)
     : m_width(width), m_height(height), m_color(make_texture(GL_TEXTURE_2D)),
       m_depth(make_texture(GL_TEXTURE_2D)), m_framebuffer(make_framebuffer()) {
     glTextureStorage2D(m_color.id(), 1, GL_RGBA8, width, height);
@@ -31,6 +31,11 @@ render_target::render_target(int width, int height, bool id_buffer)
         m_ids = make_texture(GL_TEXTURE_2D);
         glTextureStorage2D(m_ids.id(), 1, GL_R32UI, width, height);
         glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT1, m_ids.id(), 0);
+    }
+    if (normal_buffer) {
+        m_normals = make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(m_normals.id(), 1, GL_RGBA8, width, height);
+        glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT2, m_normals.id(), 0);
     }
     draw_ids(false);
     if (glCheckNamedFramebufferStatus(m_framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -43,8 +48,15 @@ void render_target::bind() const {
 }
 
 void render_target::draw_ids(bool enabled) const {
-    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GLenum(enabled && has_id_buffer() ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
-    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 2, buffers);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GLenum(enabled && has_id_buffer() ? GL_COLOR_ATTACHMENT1 : GL_NONE),
+                               GL_NONE};
+    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 3, buffers);
+}
+
+void render_target::draw_surfaces() const {
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GLenum(has_id_buffer() ? GL_COLOR_ATTACHMENT1 : GL_NONE),
+                               GLenum(has_normal_buffer() ? GL_COLOR_ATTACHMENT2 : GL_NONE)};
+    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 3, buffers);
 }
 
 std::vector<std::uint32_t> render_target::read_ids() const {

@@ -12,10 +12,17 @@ namespace sylva::render {
 
 class render_target {
 public:
-    render_target(int width, int height, bool id_buffer = false);
+    // `normal_buffer`: an RGBA8 attachment the view's surfaces write their normals to (the line
+    // style's edge pass reads it with the depth).
+    render_target(int width, int height, bool id_buffer = false, bool normal_buffer = false);
     void bind() const;
     // Which attachments the next draws write: colour only, or colour and IDs (when present).
     void draw_ids(bool enabled) const;
+    // The opaque surfaces: colour, IDs and normals, those present.
+    void draw_surfaces() const;
+    bool has_normal_buffer() const { return m_normals.id() != 0; }
+    GLuint normal_texture() const { return m_normals.id(); }
+    GLuint depth_texture() const { return m_depth.id(); }
     image_rgba8 read_color() const;  // rows top to bottom
     // The ID attachment, rows top to bottom: 0 where nothing wrote an ID, else what the surface
     // shader wrote (draw-list instance index + 1). Empty without an ID buffer.
@@ -35,6 +42,7 @@ private:
     gl_texture m_color;
     gl_texture m_depth;
     gl_texture m_ids;
+    gl_texture m_normals;
     gl_framebuffer m_framebuffer;
 };
 

@@ -42,9 +42,9 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
 
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
     : m_settings(settings),
-      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon}),
+      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines}),
       m_ring(std::size_t(4) << 20),
-      m_target(settings.width, settings.height, settings.id_buffer),
+      m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
       m_textures(assets),
       m_sky(assets),
       m_commands(terrain_tiles_of(assets)),

@@ -26,6 +26,7 @@
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
 #include "systems/render/passes/cloud_draw.h"
+#include "systems/render/passes/edge_pass.h"
 #include "systems/render/passes/mesh_draw.h"
 #include "systems/render/passes/pass_context.h"
 #include "systems/render/passes/sample_draw.h"
@@ -56,6 +57,8 @@ struct renderer_settings {
     bool fade_dissolve = false;
     // Luft 2007 §4: toon shading, the sun's and the sky's light quantised into bands.
     bool toon = false;
+    // Luft 2007 §4 (Figure 7): a normal buffer beside the colour, and the edge pass's ink lines.
+    bool lines = false;
 };
 
 // What one frame draws, gathered by the submit system from the ECS.
@@ -141,8 +144,9 @@ private:
     opaque_pass m_opaque_pass{m_surface_draws};
     sky_pass m_sky_pass{m_sky};
     soft_splat_pass m_soft_splat_pass{m_surface_draws};
-    std::array<frame_pass*, 4> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass,
-                                        &m_soft_splat_pass};
+    edge_pass m_edge_pass;
+    std::array<frame_pass*, 5> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass, &m_soft_splat_pass,
+                                        &m_edge_pass};
     pass_context m_context;
 
     std::size_t m_uniform_offset = 0;

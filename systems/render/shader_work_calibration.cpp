@@ -81,7 +81,7 @@ work_calibration_result calibrate_shader_work(renderer& r, const calibration_set
     }
     (void)draw(2, 1);
     const marginal_timings timings = time_marginals(std::vector<std::uint32_t>(k_shapes, 1u), draw, settings);
-    const auto view_sum = [](const std::array<std::uint64_t, 4>& pass) {
+    const auto view_sum = [](const decltype(frame_stats::pass_vertices)& pass) {
         double total = 0.0;
         for (std::size_t p = 0; p < pass.size(); ++p)
             if (p != std::size_t(gpu_pass::shadow)) total += double(pass[p]);

@@ -21,6 +21,7 @@ struct crown_look {
     double mean_luma = 0.0;       // over the plant's pixels, 0 .. 255
     double neighbour_change = 0.0;  // mean |Δ luma| between horizontally adjacent plant pixels
     double luma_entropy = 0.0;    // bits, of the plant's pixels' luma rounded to integers
+    double dark_share = 0.0;      // of the plant's pixels, those darker than 24 of 255 (ink)
 };
 
 crown_look look_of(const std::string& lighting, const std::string& representation,
@@ -58,6 +59,7 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
             if (ids[i] == 0) continue;
             out.mean_luma += luma(i);
             ++histogram[std::size_t(std::lround(luma(i)))];
+            out.dark_share += luma(i) < 24.0 ? 1.0 : 0.0;
             ++pixels;
             if (x + 1 < image.width && ids[i + 1] != 0) {
                 out.neighbour_change += std::abs(luma(i + 1) - luma(i));
@@ -66,6 +68,7 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
         }
     EXPECT_GT(pixels, 2000u) << "the tree should fill part of the frame";
     out.mean_luma /= double(std::max<std::size_t>(pixels, 1));
+    out.dark_share /= double(std::max<std::size_t>(pixels, 1));
     out.neighbour_change /= double(std::max<std::size_t>(pairs, 1));
     for (const std::size_t n : histogram)
         if (n > 0) {
@@ -105,6 +108,23 @@ TEST(implicit_lighting_gl, toon_style_puts_the_crown_in_bands) {
                     photo.luma_entropy, toon.luma_entropy, photo.neighbour_change, toon.neighbour_change);
         EXPECT_LT(toon.luma_entropy, photo.luma_entropy - 0.5);
     }
+}
+
+// Luft 2007 Figure 7: lines where the normal or depth buffer jumps (render.style "lines") clutter
+// a crown lit by its leaves' own normals and leave little more than its outline when the normals
+// are realigned to the implicit surface.
+TEST(implicit_lighting_gl, line_style_draws_the_crown_not_every_leaf) {
+    SYLVA_REQUIRE_GL();
+    double inked[2] = {0.0, 0.0};
+    int i = 0;
+    for (const char* lighting : {"normal_mapped", "implicit"}) {
+        const crown_look photo = look_of(lighting, "mesh_levels");
+        const crown_look lines = look_of(lighting, "mesh_levels", "lines");
+        inked[i++] = lines.dark_share - photo.dark_share;
+        std::printf("%s: crown pixels inked by the lines %.3f\n", lighting, lines.dark_share - photo.dark_share);
+    }
+    EXPECT_GT(inked[1], 0.01) << "the realigned crown keeps its outline";
+    EXPECT_GT(inked[0], 2.0 * inked[1]) << "the leaves' own normals should clutter the crown with lines";
 }
 
 }  // namespace

@@ -433,7 +433,7 @@ TEST(scenario_loader, wrong_types_are_named) {
         {"/frames", "expected an integer from 1 to 1000000", "\"abc\""},
         {"/fps", "expected a number", "\"abc\""},
         {"/render/shadows", "expected true or false", "\"abc\""},
-        {"/render/style", "unknown value; expected one of: photo, toon", "\"abc\""},
+        {"/render/style", "unknown value; expected one of: photo, toon, lines", "\"abc\""},
         {"/species/0/generator",
          "unknown value; expected one of: broadleaf, broadleaf_hd, conifer, shrub, grass, "
          "flower, fern",

@@ -27,10 +27,12 @@ void opaque_pass::draw(pass_context& context) {
     target.bind();
     glDepthMask(GL_TRUE);
     glClear(GL_DEPTH_BUFFER_BIT);
-    if (target.has_id_buffer()) {
-        target.draw_ids(true);
+    if (target.has_id_buffer() || target.has_normal_buffer()) {
+        target.draw_surfaces();
         const GLuint none = 0;
-        glClearBufferuiv(GL_COLOR, 1, &none);
+        if (target.has_id_buffer()) glClearBufferuiv(GL_COLOR, 1, &none);
+        const GLfloat no_surface[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        if (target.has_normal_buffer()) glClearBufferfv(GL_COLOR, 2, no_surface);
     }
     if (context.shadows) glBindTextureUnit(1, context.shadows->texture());
     if (!context.textures->species_block.id()) throw std::logic_error("renderer: no species block");
