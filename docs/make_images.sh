@@ -9,6 +9,8 @@
 #   representation_<name>.png       the same frame per representation and with SH lighting
 #                                   (320x180 each): mesh_levels, points_lines, billboard_clouds, sh
 #   representations.png             those four side by side, labelled
+#   implicit_lighting.png           single_tree lit by its leaves' normals and by Luft 2007's
+#                                   implicit surface, photo and lines styles, labelled (2x2)
 #
 # Environment: FRAME (the frame of the default camera path to show, default 8, i.e. t = 8/24 s:
 # the camera looks over the meadow at a solitary oak with the wood behind; `play` always starts
@@ -72,5 +74,26 @@ for rep in mesh_levels points_lines billboard_clouds sh; do
 done
 oiiotool "${tiles[@]}" --mosaic:pad=4 4x1 -o "$work/representations.png"
 shrink "$work/representations.png" "$out/representations.png"
+
+# Luft 2007 Figures 1 and 7: the tree's own normals against the implicit surface's.
+tree_tiles=()
+for variant in normal_photo implicit_photo normal_lines implicit_lines; do
+  lighting="${variant%_*}" style="${variant#*_}"
+  [ "$lighting" = normal ] && lighting=normal_mapped
+  echo "[make_images] $variant: sylva play single_tree --frames 1 --lighting $lighting --style $style" >&2
+  "$sylva" play single_tree --headless --frames 1 --width 320 --height 180 --lighting "$lighting" \
+    --style "$style" --out "$work/$variant" >"$work/$variant.log" 2>&1 || { cat "$work/$variant.log" >&2; exit 1; }
+  case "$variant" in
+    normal_photo) label="leaf normals" ;;
+    implicit_photo) label="implicit surface (Luft 2007)" ;;
+    normal_lines) label="leaf normals, lines" ;;
+    implicit_lines) label="implicit surface, lines" ;;
+  esac
+  oiiotool "$work/$variant/frame_0000.png" --text:x=8:y=20:size=14:color=0.05,0.12,0.05:font="$font" "$label" \
+    -o "$work/tile_$variant.png"
+  tree_tiles+=("$work/tile_$variant.png")
+done
+oiiotool "${tree_tiles[@]}" --mosaic:pad=4 2x2 -o "$work/implicit_lighting.png"
+shrink "$work/implicit_lighting.png" "$out/implicit_lighting.png"
 
 du -cb "$out"/*.png | tail -1 | awk '{printf "[make_images] %d KB in docs/images\n", $1 / 1024}' >&2

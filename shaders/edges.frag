@@ -1,6 +1,6 @@
 // The line style (render.style "lines"; Luft 2007 §4 and Figure 7): lines where the normal buffer
-// or the depth buffer jumps between neighbouring pixels (after Saito & Takahashi 1990's
-// G-buffers), drawn in ink over the finished frame. With the original normals of a crown the
+// turns or the depth buffer's second difference jumps between neighbouring pixels (after Saito &
+// Takahashi 1990's G-buffers), drawn in ink over the finished frame. With the original normals of a crown the
 // normal buffer jumps leaf by leaf and the lines clutter; with normals realigned to the foliage's
 // implicit surface (--lighting implicit) only its outline and folds remain.
 #include "common.glsl"
@@ -18,22 +18,26 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(u_normals, 0);
     vec4 c = texelFetch(u_normals, p, 0);
-    float d = view_distance(texelFetch(u_depth, p, 0).r);
+    // 1 / distance is linear in screen space across a plane, so its second difference is zero on
+    // any plane however grazing (the ground to the horizon) and large at creases and where one
+    // surface passes in front of another.
+    float w = 1.0 / view_distance(texelFetch(u_depth, p, 0).r);
     float normal_edge = 0.0;
     float depth_edge = 0.0;
-    const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-    for (int i = 0; i < 4; ++i) {
-        ivec2 q = clamp(p + offsets[i], ivec2(0), size - 1);
-        vec4 nb = texelFetch(u_normals, q, 0);
-        float dn = view_distance(texelFetch(u_depth, q, 0).r);
-        // A surface beside the background, or beside a surface much farther: a silhouette.
-        if ((c.a > 0.5) != (nb.a > 0.5)) depth_edge = 1.0;
-        else if (c.a > 0.5) depth_edge = max(depth_edge, smoothstep(0.04, 0.12, abs(dn - d) / min(d, dn)));
-        // Both surfaces: the angle between their normals (1 - cos).
-        if (c.a > 0.5 && nb.a > 0.5) {
-            vec3 a = c.xyz * 2.0 - 1.0, b = nb.xyz * 2.0 - 1.0;
-            normal_edge = max(normal_edge, smoothstep(0.15, 0.45, 1.0 - dot(normalize(a), normalize(b))));
-        }
+    const ivec2 axes[2] = ivec2[2](ivec2(1, 0), ivec2(0, 1));
+    for (int i = 0; i < 2; ++i) {
+        ivec2 qa = clamp(p + axes[i], ivec2(0), size - 1), qb = clamp(p - axes[i], ivec2(0), size - 1);
+        vec4 na = texelFetch(u_normals, qa, 0), nb = texelFetch(u_normals, qb, 0);
+        // A surface beside the background: a silhouette.
+        if (c.a > 0.5 && (na.a < 0.5 || nb.a < 0.5)) depth_edge = 1.0;
+        if (c.a < 0.5 || na.a < 0.5 || nb.a < 0.5) continue;
+        float wa = 1.0 / view_distance(texelFetch(u_depth, qa, 0).r);
+        float wb = 1.0 / view_distance(texelFetch(u_depth, qb, 0).r);
+        depth_edge = max(depth_edge, smoothstep(0.08, 0.2, abs(wa + wb - 2.0 * w) / w));
+        // The angle between neighbouring normals (1 - cos).
+        vec3 n = normalize(c.xyz * 2.0 - 1.0);
+        float turn = max(1.0 - dot(n, normalize(na.xyz * 2.0 - 1.0)), 1.0 - dot(n, normalize(nb.xyz * 2.0 - 1.0)));
+        normal_edge = max(normal_edge, smoothstep(0.15, 0.45, turn));
     }
     float line = max(normal_edge, depth_edge);
     if (line <= 0.0) discard;
