@@ -174,7 +174,7 @@ std::size_t sh_species(const scenario& s) {
 
 std::string lighting_family(const scenario& s, const std::string& lighting) {
     if (lighting == "sh") return "sh";
-    if (lighting == "implicit") return "implicit";
+    if (lighting == "implicit" || lighting == "sh_implicit") return lighting;
     if (lighting == "normal_mapped" || lighting == "pre_lit") return "normal";
     const std::size_t sh = sh_species(s);
     if (sh == s.species.size() && sh > 0) return "sh";
@@ -187,6 +187,8 @@ std::string lighting_family_description(const std::string& family) {
     if (family == "normal") return "every species lit by its normals (normal-mapped; pre-lit clouds compare here too)";
     if (family == "implicit")
         return "every species lit by Luft 2007's implicit-surface normals and density ambient";
+    if (family == "sh_implicit")
+        return "every species lit by SH transfer baked from Luft 2007's implicit-surface normals";
     return "every species lit as the scenario says (its species are lit in different ways)";
 }
 
@@ -194,7 +196,8 @@ bench_configuration_spec reference_configuration(const scenario& s, const std::s
     bench_configuration_spec spec;
     spec.options.geometry = geometry_mode::full;
     if (family != lighting_family(s, ""))
-        spec.options.lighting = family == "sh" || family == "implicit" ? family : "normal_mapped";
+        spec.options.lighting =
+            family == "sh" || family == "implicit" || family == "sh_implicit" ? family : "normal_mapped";
     spec.samples = k_bench_reference_samples;
     return spec;
 }

@@ -38,12 +38,13 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
             "--lighting", options.lighting,
             "How every species is lit (overrides lod.lighting and each species' own): "
             "normal_mapped "
-            "(by its normals), pre_lit (billboard clouds from the page lit at bake time) or sh "
+            "(by its normals), pre_lit (billboard clouds from the page lit at bake time), sh "
             "(precomputed radiance transfer with self-shadowing in every representation, Behrendt "
-            "2005 §4; the first run bakes the transfer into the cache) or implicit (Luft 2007: "
+            "2005 §4; the first run bakes the transfer into the cache), implicit (Luft 2007: "
             "normals realigned to the foliage's implicit surface, ambient darkened by its density; "
-            "baked into the model once, species.implicit tunes it)")
-        ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh", "implicit"}));
+            "baked into the model once, species.implicit tunes it) or sh_implicit (SH transfer baked from the "
+            "realigned normals, the sky's light darkened by the density)")
+        ->check(CLI::IsMember({"normal_mapped", "pre_lit", "sh", "implicit", "sh_implicit"}));
     command
         .add_option("--style", options.style,
                     "photo; toon: shading quantised into bands; lines: ink lines where the normal or depth "

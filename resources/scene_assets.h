@@ -20,9 +20,17 @@ namespace sylva {
 // draws each variant with its own shader: normal-lit, the clouds' baked pre-lit page, or
 // precomputed radiance transfer in every representation.
 // `implicit` (Luft 2007) is normal-lit from normals that carry the foliage's implicit surface and
-// its ambient coefficient as their length (models/bake/implicit_illumination.h).
-enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh, implicit };
-inline constexpr std::size_t k_lighting_variants = 4;
+// its ambient coefficient as their length (models/bake/implicit_illumination.h); `sh_implicit`
+// is lit by SH transfer baked from those normals, with k_a on the sky's light.
+enum class lighting_variant : std::uint8_t { normal_mapped, pre_lit, sh, implicit, sh_implicit };
+inline constexpr std::size_t k_lighting_variants = 5;
+
+// Lit by precomputed radiance transfer (Behrendt 2005 §4): the transfer is baked and streamed.
+constexpr bool uses_transfer(lighting_variant l) { return l == lighting_variant::sh || l == lighting_variant::sh_implicit; }
+// The model's normals carry Luft 2007's realigned directions and k_a.
+constexpr bool uses_implicit_normals(lighting_variant l) {
+    return l == lighting_variant::implicit || l == lighting_variant::sh_implicit;
+}
 
 // One species as the LOD systems see it. Sizes are for scale 1; instances multiply.
 struct species_entry {

@@ -48,7 +48,8 @@
 //                                                plane); must be >= far_distance_m
 //     octree_depth       integer    0            0 .. 3; Deussen 2002 §6.1 cells per plant
 //     lighting           string     "scenario"   "scenario" (lod.lighting), "normal_mapped",
-//                                                "pre_lit", "sh" or "implicit" (see lod.lighting)
+//                                                "pre_lit", "sh", "implicit" or "sh_implicit"
+//                                                (see lod.lighting)
 //     implicit           object     {}           Luft 2007, with lighting "implicit": {
 //       generator_fraction number   0.25         0.001 .. 1; the foliage triangles that are
 //                                                generators (§3.1)
@@ -182,7 +183,9 @@
 //                                       SH transfer vectors, self-shadowing included) or
 //                                       "implicit" (Luft 2007: normals realigned to the
 //                                       foliage's implicit surface, the ambient darkened by its
-//                                       density, baked into the model; species.implicit); a
+//                                       density, baked into the model; species.implicit) or
+//                                       "sh_implicit" (SH transfer baked from those normals, the
+//                                       sky's light times k_a); a
 //                                       species' own "lighting" overrides it
 //     sh_bands           integer 3       2 .. 3; SH bands of the transfer vectors (4 or 9
 //                                       coefficients) with lighting "sh"
@@ -380,12 +383,13 @@ struct eco_tile_settings {
 inline constexpr std::array<std::string_view, 4> k_lod_representations{"mesh_levels", "points_lines",
                                                                         "billboard_clouds", "ladder"};
 // The lighting variants `lod.lighting` may name (Behrendt 2005 §2.3 and §4).
-inline constexpr std::array<std::string_view, 4> k_lightings{"normal_mapped", "pre_lit", "sh", "implicit"};
+inline constexpr std::array<std::string_view, 5> k_lightings{"normal_mapped", "pre_lit", "sh", "implicit",
+                                                             "sh_implicit"};
 // How `lod.splats` may draw point samples (lod/point_line_lod.h splat_style).
 inline constexpr std::array<std::string_view, 2> k_splat_styles{"soft", "opaque"};
 // A species' `lighting`: "scenario" takes the lod section's.
-inline constexpr std::array<std::string_view, 5> k_species_lightings{"scenario", "normal_mapped",
-                                                                     "pre_lit", "sh", "implicit"};
+inline constexpr std::array<std::string_view, 6> k_species_lightings{"scenario", "normal_mapped", "pre_lit",
+                                                                     "sh",       "implicit",      "sh_implicit"};
 
 struct lod_settings {
     std::string representation = "mesh_levels";

@@ -117,6 +117,7 @@ lighting_variant lighting_of(const scenario& s, const species_settings& species)
     if (name == "sh") return lighting_variant::sh;
     if (name == "normal_mapped") return lighting_variant::normal_mapped;
     if (name == "implicit") return lighting_variant::implicit;
+    if (name == "sh_implicit") return lighting_variant::sh_implicit;
     throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
 }
 
@@ -160,7 +161,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
     // bake's receivers are unscaled too: transfer does not change with a uniform scale).
     const lighting_variant lighting = lighting_of(s, settings);
-    const bool by_transfer = lighting == lighting_variant::sh;
+    const bool by_transfer = uses_transfer(lighting);
     transfer_settings transfer_config;
     transfer_config.bands = s.lod.sh_bands;
     transfer_config.seed = seed;

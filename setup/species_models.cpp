@@ -59,6 +59,10 @@ std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes,
 
 }  // namespace
 
+bool bakes_implicit(const species_settings& species) {
+    return species.lighting == "implicit" || species.lighting == "sh_implicit";
+}
+
 species_settings resolved_species(const scenario& s, const species_settings& species) {
     species_settings out = species;
     if (out.lighting == "scenario") out.lighting = s.lod.lighting;
@@ -74,7 +78,7 @@ std::uint64_t species_model_key(const species_settings& species, std::uint64_t s
     key = hash_string(std::to_string(k_plant_model_format) + "/" + std::to_string(k_species_texture_size), key);
     key = !species.model.empty() ? hash_file(species.model, hash_string("gltf", key))
                                  : hash_string(species.generator + "/" + std::to_string(seed), key);
-    if (species.lighting != "implicit") return key;
+    if (!bakes_implicit(species)) return key;
     // Luft 2007's normals are the model's own: every bake made from the model keys on them.
     const implicit_lighting_settings& i = species.implicit;
     const std::array<float, 8> fields{float(k_implicit_format), i.generator_fraction, i.rho_m, i.tau, i.ka_min,
@@ -113,7 +117,7 @@ plant_model load_species_model(const species_settings& species, std::uint64_t se
         plant_model model = species.model.empty()
                                 ? generate_plant_model(species.generator, seed, k_species_texture_size)
                                 : import_species_model(species.model);
-        if (species.lighting == "implicit") {
+        if (bakes_implicit(species)) {
             const implicit_report r = bake_implicit_illumination(model, implicit_settings_of(species, seed));
             spdlog::info("{}: implicit illumination from {} generators, ρ {:.3g} m, τ {:.3g}, d_min {:.3g}: "
                          "{} surface vertices, mean k_a {:.2f}",

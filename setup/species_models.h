@@ -34,6 +34,10 @@ constexpr std::uint32_t k_implicit_format = 1;
 // pass resolved settings.
 species_settings resolved_species(const scenario& s, const species_settings& species);
 
+// True when the species' (resolved) lighting bakes Luft 2007 into its model: "implicit", and
+// "sh_implicit" (SH transfer baked from the realigned normals).
+bool bakes_implicit(const species_settings& species);
+
 // The bake's settings for a species with lighting "implicit" (its seed derived from `seed`).
 implicit_settings implicit_settings_of(const species_settings& species, std::uint64_t seed);
 

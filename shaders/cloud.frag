@@ -35,6 +35,9 @@ void main() {
     if (albedo.a < cloud_alpha_threshold(v_fade)) discard;
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
 #if defined(SH_TRANSFER)
+#ifdef IMPLICIT_LIGHTING
+    sh_ambient = min(length(normal_texel.xyz * 2.0 - 1.0), 1.0);
+#endif
     float seen[9], other[9];
     read_transfer_pages(seen, other);
     out_color = vec4(shade_transfer_pages(base, seen, other), 1.0);

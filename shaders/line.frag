@@ -32,6 +32,9 @@ void main() {
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
     vec3 n = normalize(v_normal);
     if (dot(n, v_position) > 0.0) n = -n;  // the side of the surface that faces the eye
+#if defined(SH_TRANSFER) && defined(IMPLICIT_LIGHTING)
+    sh_ambient = min(length(v_normal), 1.0);
+#endif
 #if defined(SH_TRANSFER) && defined(MATERIAL_LEAF)
     out_color = vec4(shade_transfer(base, v_sh_sky, v_sh_sun.x, v_sh_sun.y, v_position, v_sh_exit, true), 1.0);
 #elif defined(SH_TRANSFER)

@@ -74,6 +74,11 @@ void main() {
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m);
     if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;
 #endif
+#if defined(SH_TRANSFER) && defined(IMPLICIT_LIGHTING) && defined(MATERIAL_BILLBOARD)
+    sh_ambient = min(length(m), 1.0);
+#elif defined(SH_TRANSFER) && defined(IMPLICIT_LIGHTING)
+    sh_ambient = min(length(v_normal), 1.0);
+#endif
 #if defined(SH_TRANSFER) && defined(MATERIAL_BILLBOARD)
     float seen[9], other[9];
     read_transfer_pages(seen, other);

@@ -78,6 +78,9 @@ void main() {
     vec4 albedo = textureLod(u_albedo, vec3(in_uv, layer), 1.0);
     vec3 base = albedo.rgb * (1.0 + 0.18 * in_instance_scale_tint_fade_layer.y);
 #if defined(SH_TRANSFER)
+#ifdef IMPLICIT_LIGHTING
+    sh_ambient = min(length(normal), 1.0);
+#endif
     vec4 sphere = plant_sphere(in_instance_position_yaw.xyz, pose.scale, layer);
     float sh_exit = sphere_exit_distance(world, sphere);
     float front[9], back[9];

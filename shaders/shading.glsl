@@ -97,6 +97,10 @@ vec3 shade_pre_lit(vec3 lit, vec3 position) {
     return tone_map(color);
 }
 
+// Luft 2007's k_a under SH transfer (lighting "sh_implicit"): the caller sets it from the normal's
+// length before shading; it scales the sky's light (the transfer's own self-shadowing stays).
+float sh_ambient = 1.0;
+
 // Precomputed radiance transfer (transfer.glsl; Behrendt 2005 §4): `sky_seen` = T_seen . L_sky,
 // `sun_seen` = T_seen . Y(l) and `sun_other` = T_other . Y(l), so the plant's self-shadowing is in
 // the coefficients. Shadows of other objects come from the shadow map, looked up where the sun's
@@ -114,7 +118,7 @@ vec3 shade_transfer(vec3 base, vec3 sky_seen, float sun_seen, float sun_other, v
     visibility = 1.0;
 #endif
     vec3 sun = u_sun_radiance.rgb * visibility;
-    vec3 radiance = base / 3.14159265 * (max(sky_seen, vec3(0.0)) + sun * max(sun_seen, 0.0));
+    vec3 radiance = base / 3.14159265 * (sh_ambient * max(sky_seen, vec3(0.0)) + sun * max(sun_seen, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(sun_other, 0.0));
     vec3 color = apply_fog(radiance, length(position));
     return tone_map(color);

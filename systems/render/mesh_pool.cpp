@@ -84,7 +84,7 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
     if (!mesh.transfer.empty() && mesh.transfer.size() != mesh.vertices.size())
         throw std::logic_error("mesh_pool: a mesh's transfer must have one record per vertex");
     // Billboards read their transfer from pages; every other SH-lit mesh streams it.
-    if (lighting == lighting_variant::sh && mesh.transfer.empty() && !mesh.vertices.empty() &&
+    if (uses_transfer(lighting) && mesh.transfer.empty() && !mesh.vertices.empty() &&
         !mesh.submeshes.empty() && mesh.submeshes[0].material != material_kind::billboard_cloud &&
         mesh.submeshes[0].material != material_kind::billboard)
         throw std::logic_error("mesh_pool: an SH-lit mesh needs its transfer");

@@ -159,10 +159,9 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
         if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
     }
-    if (lighting == lighting_variant::sh && material != material_kind::ground)
-        source.defines.push_back("SH_TRANSFER");
+    if (uses_transfer(lighting) && material != material_kind::ground) source.defines.push_back("SH_TRANSFER");
     // Luft 2007: the normal's length (a billboard's normal page's too) is k_a.
-    if (lighting == lighting_variant::implicit && material != material_kind::ground)
+    if (uses_implicit_normals(lighting) && material != material_kind::ground)
         source.defines.push_back("IMPLICIT_LIGHTING");
     // Partners of a transition are drawn in the view only, and only as whole meshes.
     if (!shadow && m_options.fade_dissolve && primitive == surface_primitive::triangles &&

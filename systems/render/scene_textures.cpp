@@ -17,7 +17,7 @@ gl_buffer make_species_block(const scene_assets& assets) {
     constexpr std::size_t k_spheres = scene_textures::k_max_species_spheres;
     std::array<glm::vec4, k_spheres> spheres{};
     for (const species_entry& e : assets.library.species) {
-        if (e.lighting != lighting_variant::sh) continue;
+        if (!uses_transfer(e.lighting)) continue;
         if (e.texture_layer >= float(k_spheres))
             throw std::runtime_error("renderer: species '" + e.name +
                                      "' is lit by SH transfer, which supports the first " +
@@ -28,7 +28,7 @@ gl_buffer make_species_block(const scene_assets& assets) {
     // Billboards read their transfer from pages: a scene that lights them by transfer must have
     // them.
     for (std::size_t i = 0; i < assets.meshes.size() && i < assets.library.meshes.size(); ++i) {
-        if (assets.library.meshes[i].lighting != lighting_variant::sh ||
+        if (!uses_transfer(assets.library.meshes[i].lighting) ||
             assets.meshes[i].submeshes.empty())
             continue;
         const material_kind m = assets.meshes[i].submeshes[0].material;

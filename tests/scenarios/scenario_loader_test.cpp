@@ -902,14 +902,15 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(minimal(), "/lod/cloud_distance_m", 0),
                  {"/lod/cloud_distance_m", "out of range; expected a number from 0.1 to 100000", "0"});
     expect_error(set(minimal(), "/lod/lighting", "shiny"),
-                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh, implicit",
+                 {"/lod/lighting", "unknown value; expected one of: normal_mapped, pre_lit, sh, implicit, sh_implicit",
                   "\"shiny\""});
     expect_error(set(minimal(), "/lod/sh_bands", 4),
                  {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
     expect_error(
         set(minimal(), "/species/0/lighting", "sh3"),
         {"/species/0/lighting",
-         "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh, implicit", "\"sh3\""});
+         "unknown value; expected one of: scenario, normal_mapped, pre_lit, sh, implicit, sh_implicit",
+         "\"sh3\""});
     expect_error(set(set(minimal(), "/species/0/lighting", "implicit"), "/species/0/implicit", json{{"ka_min", 1.5}}),
                  {"/species/0/implicit/ka_min", "out of range; expected a number from 0 to 1", "1.5"});
     expect_error(set(minimal(), "/species/0/implicit", json{{"rho", 1}}),

@@ -25,7 +25,7 @@ void cloud_draw::draw(pass_context& context, const draw_target& target) const {
                                  ? textures.cloud_pre_lit.id()
                                  : textures.cloud_albedo.id());
         glBindTextureUnit(2, textures.cloud_normal.id());
-        if (!shadow && l == lighting_variant::sh)
+        if (!shadow && uses_transfer(l))
             glBindTextureUnit(3, textures.cloud_transfer.id());
         context.draw_group(range, program.id, true);
     }

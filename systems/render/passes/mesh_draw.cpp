@@ -63,7 +63,7 @@ void mesh_draw::draw_view(pass_context& context, const draw_target& target) {
         draw(material_kind::billboard, l, false, [&] {
             glBindTextureUnit(0, textures.billboard_albedo.id());
             glBindTextureUnit(2, textures.billboard_normal.id());
-            if (l == lighting_variant::sh) glBindTextureUnit(3, textures.billboard_transfer.id());
+            if (uses_transfer(l)) glBindTextureUnit(3, textures.billboard_transfer.id());
         });
     }
 }

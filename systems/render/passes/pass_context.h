@@ -45,7 +45,8 @@ struct pass_context {
 
 // Every lighting variant, in the order the passes draw their groups.
 inline constexpr std::array<lighting_variant, k_lighting_variants> k_all_lightings{
-    lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh, lighting_variant::implicit};
+    lighting_variant::normal_mapped, lighting_variant::pre_lit, lighting_variant::sh, lighting_variant::implicit,
+    lighting_variant::sh_implicit};
 
 // Where a surface_draw draws this time.
 struct draw_target {
