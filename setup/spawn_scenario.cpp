@@ -110,17 +110,6 @@ void match_cloud_atlas_sizes(std::vector<image_rgba8>& pages) {
     }
 }
 
-// The species' own `lighting`, or the scenario's (scenarios/scenario.h).
-lighting_variant lighting_of(const scenario& s, const species_settings& species) {
-    const std::string& name = species.lighting == "scenario" ? s.lod.lighting : species.lighting;
-    if (name == "pre_lit") return lighting_variant::pre_lit;
-    if (name == "sh") return lighting_variant::sh;
-    if (name == "normal_mapped") return lighting_variant::normal_mapped;
-    if (name == "implicit") return lighting_variant::implicit;
-    if (name == "sh_implicit") return lighting_variant::sh_implicit;
-    throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name + "'");
-}
-
 // The radius of a sphere about the species' centre (fit_bounds) around every vertex of every
 // representation it may draw: shaders/transfer.glsl looks shadows up outside it.
 float transfer_radius(const species_entry& entry, std::initializer_list<const mesh_data*> meshes) {
@@ -160,7 +149,7 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
     // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
     // bake's receivers are unscaled too: transfer does not change with a uniform scale).
-    const lighting_variant lighting = lighting_of(s, settings);
+    const lighting_variant lighting = lighting_variant_of(settings);
     const bool by_transfer = uses_transfer(lighting);
     transfer_settings transfer_config;
     transfer_config.bands = s.lod.sh_bands;

@@ -59,8 +59,15 @@ std::vector<radiance_transfer> read_transfers(std::span<const std::byte> bytes,
 
 }  // namespace
 
-bool bakes_implicit(const species_settings& species) {
-    return species.lighting == "implicit" || species.lighting == "sh_implicit";
+lighting_variant lighting_variant_of(const species_settings& species) {
+    const std::string& name = species.lighting;
+    if (name == "pre_lit") return lighting_variant::pre_lit;
+    if (name == "sh") return lighting_variant::sh;
+    if (name == "normal_mapped") return lighting_variant::normal_mapped;
+    if (name == "implicit") return lighting_variant::implicit;
+    if (name == "sh_implicit") return lighting_variant::sh_implicit;
+    throw std::invalid_argument("species '" + species.name + "': unknown lighting '" + name +
+                                "' (resolve \"scenario\" with resolved_species first)");
 }
 
 species_settings resolved_species(const scenario& s, const species_settings& species) {

@@ -11,6 +11,7 @@
 #include "models/plant_model.h"
 #include "models/bake/point_line_model.h"
 #include "models/bake/radiance_transfer.h"
+#include "resources/scene_assets.h"
 #include "scenarios/scenario.h"
 
 namespace sylva {
@@ -34,9 +35,14 @@ constexpr std::uint32_t k_implicit_format = 1;
 // pass resolved settings.
 species_settings resolved_species(const scenario& s, const species_settings& species);
 
-// True when the species' (resolved) lighting bakes Luft 2007 into its model: "implicit", and
-// "sh_implicit" (SH transfer baked from the realigned normals).
-bool bakes_implicit(const species_settings& species);
+// The lighting variant a resolved species is drawn with (its `lighting` name).
+lighting_variant lighting_variant_of(const species_settings& species);
+
+// True when the species' lighting bakes Luft 2007 into its model: "implicit", and "sh_implicit"
+// (SH transfer baked from the realigned normals). Unresolved ("scenario"): no.
+inline bool bakes_implicit(const species_settings& species) {
+    return species.lighting != "scenario" && uses_implicit_normals(lighting_variant_of(species));
+}
 
 // The bake's settings for a species with lighting "implicit" (its seed derived from `seed`).
 implicit_settings implicit_settings_of(const species_settings& species, std::uint64_t seed);

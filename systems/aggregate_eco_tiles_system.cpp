@@ -54,12 +54,10 @@ double tile_distance_share(double distance_m, double radius_m, double shadow_dis
 
 namespace {
 
-// What a plant lets its tile draw of it (0 .. 1): the ladder's last-step share, or all of a plant
-// drawn as points under the point/line policy. A culled plant does not hold its tile back (the
-// tile's set draws it with the rest where the tile is seen).
-float share_of(const lod_state& lod, const fade_alpha& fade, bool points_policy) {
+// What a plant lets its tile draw of it under a ladder (0 .. 1): its last-step share. A culled
+// plant does not hold its tile back (the tile's set draws it with the rest where it is seen).
+float share_of(const lod_state& lod, const fade_alpha& fade) {
     if (lod.current == representation::none) return 1.0f;
-    if (points_policy) return lod.current == representation::points ? 1.0f : 0.0f;
     return eco_tile_share(lod.current, fade.partner, fade.value);
 }
 
@@ -121,16 +119,17 @@ void aggregate_eco_tiles_system::run(ecs::system_context<aggregate_eco_tiles_sys
     const auto& visibility = ctx.read<tile_visibility>();
 
     // 1. What each tile's plants let it draw: the least share of any of them (leaves in parallel,
-    //    then up the tree: in preorder a tile's children come after it).
+    //    then up the tree: in preorder a tile's children come after it). Under the point/line
+    //    policy every drawn plant is points and lets it all: no pass over the plants.
     std::vector<float>& allowed = draws.allowed;
     allowed.assign(tiles.size(), 1.0f);
-    ctx.parallel_for(tiles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+    if (!points_policy) ctx.parallel_for(tiles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             const tile& t = tiles.data()[i];
             if (!t.is_leaf()) continue;
             float least = 1.0f;
             for (std::uint32_t k = t.first_plant; k < t.first_plant + t.plant_count && k < plants; ++k)
-                least = std::min(least, share_of(lod[k], fade[k], points_policy));
+                least = std::min(least, share_of(lod[k], fade[k]));
             allowed[i] = least;
         }
     });

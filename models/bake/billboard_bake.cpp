@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "models/bake/implicit_illumination.h"
 #include "models/image/texture_sampling.h"
 
 namespace sylva {
@@ -310,8 +311,6 @@ struct shaded_sample {
     float ambient = 1.0f;
 };
 
-// True when a vertex normal is a plain unit normal, not one carrying Luft 2007's k_a.
-bool unit_normal(const vertex& v) { return std::abs(glm::length(v.normal) - 1.0f) < 1e-4f; }
 
 shaded_sample shade(const billboard_source& source, const sample& s) {
     const std::uint32_t triangle = s.triangle & k_triangle_mask;
@@ -325,7 +324,7 @@ shaded_sample shade(const billboard_source& source, const sample& s) {
     glm::vec3 n = a.normal * w0 + b.normal * s.lambda1 + c.normal * s.lambda2;
     const float length = glm::length(n);
     n = length > 0.0f ? n / length : glm::vec3(0.0f);
-    const bool implicit = !unit_normal(a) || !unit_normal(b) || !unit_normal(c);
+    const bool implicit = carries_ambient(a) || carries_ambient(b) || carries_ambient(c);
     // Only alpha-tested (double-sided) surfaces are ever seen from the back: turn the normal
     // toward the viewer as the leaf shader does for !gl_FrontFacing. Luft 2007's realigned
     // normals light the crown by its shape and are not turned (shaders/shading.glsl shade_implicit).

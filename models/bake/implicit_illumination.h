@@ -15,7 +15,9 @@
 //   - Stored as the normal scaled by k_a (§3.2 end: "the normal vector of each vertex is scaled by
 //     the corresponding ambient reflection coefficient"), so the vertex format does not grow; a
 //     shader decodes k_a as the normal's length.
+#include <cmath>
 #include <cstdint>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <vector>
@@ -24,6 +26,10 @@
 #include "models/plant_model.h"
 
 namespace sylva {
+
+// True when a vertex normal carries Luft 2007's k_a as its length (apply_implicit_illumination),
+// not a plain unit normal: bakes made from the model keep the length where it does.
+inline bool carries_ambient(const vertex& v) { return std::abs(glm::length(v.normal) - 1.0f) >= 1e-4f; }
 
 // The paper's parameters. 0 for rho_m, tau or d_min: derived from the model (implicit_defaults).
 struct implicit_settings {

@@ -4,8 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/vector_relational.hpp>
 
+#include "models/bake/implicit_illumination.h"
 #include "models/image/texture_sampling.h"
 
 namespace sylva {
@@ -107,9 +107,10 @@ vertex point_at(const triangle_corners& t, glm::vec2 b) {
     if (length > 1e-6f) {
         // A unit direction times the corners' own lengths interpolated: 1 for plain normals, and
         // Luft 2007's k_a where the model carries it (models/bake/implicit_illumination.h).
-        const glm::vec3 lengths{glm::length(t.v[0].normal), glm::length(t.v[1].normal), glm::length(t.v[2].normal)};
-        const bool unit = glm::all(glm::lessThan(glm::abs(lengths - 1.0f), glm::vec3(1e-4f)));
-        out.normal = unit ? n / length : n / length * (b0 * lengths.x + b.x * lengths.y + b.y * lengths.z);
+        const bool ambient = carries_ambient(t.v[0]) || carries_ambient(t.v[1]) || carries_ambient(t.v[2]);
+        out.normal = !ambient ? n / length
+                              : n / length * (b0 * glm::length(t.v[0].normal) + b.x * glm::length(t.v[1].normal) +
+                                              b.y * glm::length(t.v[2].normal));
     } else {
         const glm::vec3 g =
             glm::cross(t.v[1].position - t.v[0].position, t.v[2].position - t.v[0].position);
