@@ -401,6 +401,7 @@ void resolve(const billboard_source& source, const rasterizer& raster, const bil
             // The normal page carries k_a as the normal's length too (1: a plain model's, exactly).
             ambient /= float(covered);
             if (ambient != 1.0f) normal *= ambient;
+            out.ambient[texel] = ambient;
             const std::uint32_t total = s * s;
             const auto alpha = std::uint8_t((covered * 255 + total / 2) / total);
             write_rgb(out.albedo.at(tx, ty), colour / float(covered));
@@ -539,6 +540,7 @@ billboard_image bake_billboard(const billboard_source& source, const billboard_p
     }
     out.depth.assign(texels, 0.0f);
     out.covered.assign(texels, 0);
+    out.ambient.assign(texels, 1.0f);
     if (source.transfer) out.transfer.assign(texels * k_billboard_transfer_floats, 0.0f);
     resolve(source, raster, settings, out);
     if (source.transfer) fill_uncovered_transfer(out);

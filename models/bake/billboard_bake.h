@@ -83,6 +83,9 @@ struct billboard_image {
     std::vector<float> depth;
     // Covered subsamples per texel (0 .. s²), exact; albedo.a is its 8-bit rounding.
     std::vector<std::uint16_t> covered;
+    // Luft 2007's k_a per texel, the mean over its covered subsamples (1 for a plain model's
+    // unit normals and where nothing is covered): the pre-lit page's ambient term reads it.
+    std::vector<float> ambient;
     // With billboard_source::transfer: per texel, the transfer interpolated over its covered
     // subsamples, 9 coefficients of the side the viewer sees then 9 of the other side
     // (k_billboard_transfer_floats; 2-band transfer leaves 4..8 zero); uncovered texels take the

@@ -209,7 +209,7 @@ image_rgba8 pre_light(const billboard_image& image, const billboard_plane& side,
             const glm::vec3 p = side.origin + (float(x) + 0.5f) / float(out.width) * side.axis_u +
                                 (1.0f - (float(y) + 0.5f) / float(out.height)) * side.axis_v + image.depth[i] * normal;
             const float visible = image.covered[i] ? light.visibility(p, bias) : 1.0f;
-            const float f = light_factor(n, light.l, visible, ambient);
+            const float f = light_factor(n, light.l, visible, ambient, image.ambient[i]);
             std::uint8_t* t = out.at(x, y);
             for (int c = 0; c < 3; ++c) t[c] = std::uint8_t(std::lround(std::min(255.0f, float(t[c]) * f)));
         }
@@ -324,9 +324,9 @@ std::size_t billboard_cloud::atlas_bytes() const {
     return bytes;
 }
 
-float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient) {
+float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient, float ka) {
     const float n_dot_l = glm::dot(n, l);
-    return ambient + (1.0f - ambient) * visible * (std::max(n_dot_l, 0.0f) + 0.35f * std::max(-n_dot_l, 0.0f));
+    return ka * ambient + (1.0f - ambient) * visible * (std::max(n_dot_l, 0.0f) + 0.35f * std::max(-n_dot_l, 0.0f));
 }
 
 float plant_height(const plant_model& model) {

@@ -58,7 +58,7 @@ namespace sylva {
 // Bump whenever the clustering, the boxes, the billboard rule, the bake or the layout change
 // what a bake produces.
 constexpr std::uint32_t k_billboard_cloud_format =
-    4;  // 2: the pre-lit page; 3: transfer pages; 4: their background
+    5;  // 2: the pre-lit page; 3: transfer pages; 4: their background; 5: k_a on the pre-lit page
 
 // Behrendt 2005 §2.2: "We found that f = 0.5 produces visibly pleasing results."
 constexpr float k_billboard_shape_factor = 0.5f;
@@ -159,9 +159,11 @@ image_rgba8 tangent_space_normal_page(const billboard_cloud& cloud);
 
 // The pre-lit page's light factor for a surface of unit normal n (turned toward its viewer)
 // lit from unit direction l, `visible` the share of the light the plant's own parts do not
-// block (0..1): ambient + (1 - ambient)·visible·(max(n·l, 0) + 0.35·max(-n·l, 0)), the second
-// term the light a leaf transmits when lit from behind, as the leaf shader has it.
-float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient);
+// block (0..1): k_a·ambient + (1 - ambient)·visible·(max(n·l, 0) + 0.35·max(-n·l, 0)), the second
+// term the light a leaf transmits when lit from behind, as the leaf shader has it. k_a is Luft
+// 2007's ambient coefficient (Eq. 1: the ambient term is k_a·I_a; Eq. 4 gives k_a), 1 for a plain
+// model, so the pre-lit page of an implicit-lit plant is darker inside its crown as its meshes are.
+float light_factor(glm::vec3 n, glm::vec3 l, float visible, float ambient, float ka = 1.0f);
 
 // The plant's height (lods[0] vertices, y extent); 4 m and above counts as a tree below.
 float plant_height(const plant_model& model);

@@ -1,5 +1,7 @@
 #include "models/bake/line_extraction.h"
 
+#include "models/bake/implicit_illumination.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -177,6 +179,23 @@ glm::vec3 line_normal(glm::vec3 direction, glm::vec3 surface_normal) {
     return n;
 }
 
+// Luft 2007 (models/bake/implicit_illumination.h): where the element's vertices carry realigned
+// normals scaled by k_a, a line vertex takes the normal of the element's vertex nearest to it,
+// length and all, so lines are lit by the crown's shape and darkened inside it as the mesh is.
+// Ties go to the first vertex, so the choice does not depend on anything but the mesh.
+glm::vec3 nearest_normal(const std::vector<vertex>& vertices, glm::vec3 p) {
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    float nearest = std::numeric_limits<float>::infinity();
+    for (const vertex& v : vertices) {
+        const glm::vec3 d = v.position - p;
+        if (glm::dot(d, d) < nearest) {
+            nearest = glm::dot(d, d);
+            normal = v.normal;
+        }
+    }
+    return normal;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> connected_elements(const mesh_data& mesh,
@@ -263,10 +282,15 @@ element_lines build_element_lines(const mesh_data& mesh, std::span<const std::ui
     glm::vec3 normal_sum{0.0f};
     float magnitude_sum = 0.0f;
     std::vector<vertex> opaque;  // opaque cell centres: where a line may read its colour
+    std::vector<vertex> element_vertices;  // for Luft 2007's normals below
+    bool implicit = false;
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         triangle_corners corners;
-        for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t k = 0; k < 3; ++k) {
             corners.v[k] = mesh.vertices[mesh.indices[std::size_t(triangles[i]) * 3 + k]];
+            element_vertices.push_back(corners.v[k]);
+            implicit = implicit || carries_ambient(corners.v[k]);
+        }
         const glm::vec3 n = glm::cross(corners.v[1].position - corners.v[0].position,
                                        corners.v[2].position - corners.v[0].position);
         normal_sum += n;
@@ -292,8 +316,8 @@ element_lines build_element_lines(const mesh_data& mesh, std::span<const std::ui
             }
         }
         const glm::vec3 n = line_normal(direction, surface);
-        out.vertices.push_back({a, n, uv});
-        out.vertices.push_back({b, n, uv});
+        out.vertices.push_back({a, implicit ? nearest_normal(element_vertices, a) : n, uv});
+        out.vertices.push_back({b, implicit ? nearest_normal(element_vertices, b) : n, uv});
     }
     return out;
 }

@@ -43,6 +43,8 @@ float elongation(const element_spine& spine);
 // vertices carry the element's surface normal made perpendicular to the line (or, for a tube
 // whose normals cancel, the direction across the line nearest to +y) and the uv of the opaque
 // cell centre nearest the segment's midpoint, where the line's colour is read.
+// Where the mesh carries Luft 2007's realigned normals scaled by k_a, each line vertex takes the
+// normal of the element's vertex nearest to it instead, length included.
 struct element_lines {
     std::vector<vertex> vertices;
     float length = 0.0f;  // l contribution

@@ -31,7 +31,7 @@
 namespace sylva {
 
 // Bump whenever the bake changes what it produces (the bake cache keys on it).
-constexpr std::uint32_t k_point_line_format = 1;
+constexpr std::uint32_t k_point_line_format = 2;  // 2: lines keep Luft 2007's normals
 // Parts per cell: enough for bark, twigs, foliage and one important kind (petals).
 constexpr std::size_t k_max_cell_parts = 4;
 

@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <tbb/global_control.h>
 
+#include "models/bake/billboard_cloud.h"
+#include "models/bake/point_line_bake.h"
 #include "models/generate/plant_library.h"
 
 namespace sylva {
@@ -134,6 +136,38 @@ TEST(implicit_illumination, a_generated_tree_is_darker_inside_and_bakes_the_same
     }
     for (std::size_t i = 0; i < tree.lods[0].vertices.size(); ++i)
         ASSERT_EQ(tree.lods[0].vertices[i].normal, again.lods[0].vertices[i].normal) << "vertex " << i;
+}
+
+// §3.2–3.3 reach the line rung (Deussen 2002 §4.2's lines of needles): each line vertex takes the
+// realigned normal and k_a of the nearest vertex of its needle, so lines are darker inside the
+// crown, as the mesh is; a plain conifer's lines keep unit normals.
+TEST(implicit_illumination, line_samples_carry_the_realigned_normal_and_ka) {
+    plant_model conifer = generate_plant_model("conifer", 3, 64);
+    const point_line_model plain = bake_point_lines(conifer);
+    ASSERT_GT(plain.lines.size(), 100u);
+    for (const vertex& v : plain.lines) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+    const implicit_report r = bake_implicit_illumination(conifer, implicit_settings{});
+    const point_line_model lit = bake_point_lines(conifer);
+    ASSERT_EQ(lit.lines.size(), plain.lines.size());
+    double sum = 0.0;
+    for (const vertex& v : lit.lines) {
+        const float ka = glm::length(v.normal);
+        ASSERT_GE(ka, r.used.ka_min - 1e-4f);
+        ASSERT_LE(ka, 1.0f + 1e-4f);
+        sum += ka;
+    }
+    // The lines' mean k_a follows the mesh's (they sample its vertices), well below 1.
+    EXPECT_LT(sum / double(lit.lines.size()), 0.95);
+    EXPECT_NEAR(sum / double(lit.lines.size()), r.mean_ka, 0.1);
+}
+
+// Eq. 1's ambient term k_a·I_a on the pre-lit cloud page (light_factor): with ambient 0.3 and the
+// sun straight on, k_a = 0.5 gives 0.5·0.3 + 0.7 = 0.85, in shadow 0.15.
+TEST(implicit_illumination, the_pre_lit_page_scales_its_ambient_by_ka) {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    EXPECT_FLOAT_EQ(light_factor(up, up, 1.0f, 0.3f, 0.5f), 0.85f);
+    EXPECT_FLOAT_EQ(light_factor(up, up, 0.0f, 0.3f, 0.5f), 0.15f);
+    EXPECT_FLOAT_EQ(light_factor(up, up, 0.0f, 0.3f), 0.3f);  // a plain model: k_a = 1
 }
 
 }  // namespace
