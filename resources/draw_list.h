@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "components/lod_state.h"
+#include "components/population_ambient.h"
 #include "resources/sort_key.h"
 
 namespace sylva {
@@ -30,7 +31,7 @@ struct draw_item {
 };
 static_assert(sizeof(draw_item) == 16);
 
-// Per-instance data as the vertex shader reads it (instanced attributes, locations 3..5).
+// Per-instance data as the vertex shader reads it (instanced attributes, locations 3, 4 and 10).
 // Mirrored in shaders/common.glsl; keep both in sync.
 struct instance_gpu {
     glm::vec3 position{0.0f};  // camera-relative, metres
@@ -42,8 +43,11 @@ struct instance_gpu {
     // build_draw_list writes it, and anyone else drawing points must set it to at least the count.
     float fade = 1.0f;
     float texture_layer = 0.0f;  // layer of the species' textures in the texture arrays
+    // Luft 2007 §5: the neighbours' darkening of an implicit-lit plant (components/
+    // population_ambient.h); the default darkens nothing.
+    population_ambient population;
 };
-static_assert(sizeof(instance_gpu) == 32);
+static_assert(sizeof(instance_gpu) == 40);
 
 struct draw_batch {
     render_pass pass = render_pass::opaque;

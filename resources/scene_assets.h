@@ -10,6 +10,7 @@
 #include "components/lod_state.h"
 #include "models/image/image.h"
 #include "models/mesh.h"
+#include "models/bake/implicit_illumination.h"
 #include "models/bake/point_line_model.h"
 #include "models/terrain/terrain.h"
 #include "lighting/environment_map.h"
@@ -114,6 +115,18 @@ struct species_library {
 // reduction there still averages a few texels; small enough to keep with the assets.
 inline constexpr int k_environment_sky_width = 256;
 
+// An implicit-lit species' density field as its plants carry it (Luft 2007 Eq. 2–4), in model
+// space at the species' scale: the bake's generators and settings (models/bake/
+// implicit_illumination.h, ρ scaled with the model), and the half size h of the box the
+// population factor is stored over (components/population_ambient.h). No generators: the species
+// is not implicit-lit and neither darkens nor is darkened.
+struct species_density {
+    std::vector<glm::vec3> generators;
+    implicit_settings used;
+    float half_size_m = 1.0f;
+    bool receives = false;  // species.implicit.population
+};
+
 struct scene_assets {
     std::vector<mesh_data> meshes;
     std::vector<image_rgba8> leaf_textures;  // one layer per species, same size
@@ -145,6 +158,9 @@ struct scene_assets {
     environment_map environment_sky;
     species_library library;
     std::uint64_t source_triangles = 0;  // sum over instances of full-detail triangles
+    // Luft 2007 §5, by species, when a species asks for its population's density
+    // (species.implicit.population; setup/population_ambient.h); empty otherwise.
+    std::vector<species_density> densities;
 };
 
 }  // namespace sylva

@@ -61,7 +61,9 @@
 //                                                median density less τ
 //       exponent         number     1            0.05 .. 20; n (Eq. 4)
 //       blend            number     1            0 .. 1; 1: the iso-surface's normal, 0: the
-//                                                original (§3.3) }
+//                                                original (§3.3)
+//       population       boolean    false        §5: neighbouring implicit-lit plants darken
+//                                                this species' plants too (kept per instance) }
 //     ladder             array      none         this species' ladder (lod.representation
 //                                                "ladder"), as lod.ladder; none: lod.ladder
 //   }
@@ -265,6 +267,9 @@ struct implicit_lighting_settings {
     float d_min = 0.0f;                // d_min (Eq. 4)
     float exponent = 1.0f;             // n (Eq. 4)
     float blend = 1.0f;                // 1: the iso-surface's normal; 0: the original (§3.3)
+    // §5: this species' plants are darkened by their neighbours' density too (the field of the
+    // population, setup/population_ambient.h); every implicit-lit plant counts as a neighbour.
+    bool population = false;
     bool operator==(const implicit_lighting_settings&) const = default;
 };
 

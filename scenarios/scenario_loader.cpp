@@ -140,7 +140,8 @@ const field_table<implicit_lighting_settings>& implicit_fields() {
                                   .number("ka_min", &t::ka_min, {0.0, 1.0})
                                   .number("d_min", &t::d_min, {0.0, 1000.0})
                                   .number("exponent", &t::exponent, {0.05, 20.0})
-                                  .number("blend", &t::blend, {0.0, 1.0});
+                                  .number("blend", &t::blend, {0.0, 1.0})
+                                  .boolean("population", &t::population);
     return table;
 }
 

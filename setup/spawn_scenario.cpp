@@ -180,6 +180,15 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
     const float scale = settings.height_m / std::max(natural_height, 1e-3f);
+    // Luft 2007 §5: the species' field as its plants carry it, when some species asks for its
+    // population's (setup/population_ambient.h).
+    const bool population = std::any_of(s.species.begin(), s.species.end(),
+                                        [](const species_settings& sp) { return sp.implicit.population; });
+    if (population && bakes_implicit(settings)) {
+        assets.densities.resize(s.species.size());
+        assets.densities[index] =
+            species_density_of(model, implicit_settings_of(settings, seed), scale, settings.implicit.population);
+    }
     for (auto& lod : model.lods) scale_mesh(lod, scale);
     scale_mesh(billboard.mesh, scale);
     scale_mesh(cloud.mesh, scale);
@@ -428,6 +437,12 @@ spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_as
     for (const auto& pop : s.populations) report.requested += pop.count;
     spawn_viewer_and_sky(world, s, assets);
     report.plants = spawn_plants(world, s, assets);
+    report.population = bake_population_ambient(world, assets);
+    if (report.population.receivers > 0)
+        spdlog::info("population ambient (Luft 2007 §5): {} receivers, {} neighbour pairs, {} darkened "
+                     "(lowest factor {:.2f}), {:.2f} s",
+                     report.population.receivers, report.population.neighbour_pairs, report.population.darkened,
+                     report.population.min_factor, report.population.seconds);
     // The receivers' heights for skipping shadow cascades that shade only air: the ground, then
     // every plant's bounding sphere.
     receiver_heights receivers =

@@ -2,6 +2,7 @@
 // Turns a scenario into something to draw: builds the scene's meshes, textures and terrain
 // (build_scene_assets, CPU only) and fills an ECS world with the camera, the sun and one entity
 // per plant plus the resources the per-frame systems read (spawn_scenario).
+#include "setup/population_ambient.h"
 #include "ecs/world.h"
 #include "models/cache/bake_cache.h"
 #include "scenarios/scenario.h"
@@ -22,6 +23,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
 struct spawn_report {
     std::size_t plants = 0;
     std::size_t requested = 0;  // what the populations asked for (placement may fit fewer)
+    population_report population;  // Luft 2007 §5, when a species asks for it
 };
 
 // Creates the entities and resources; aligns the plant component tables so every per-frame

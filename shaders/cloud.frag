@@ -36,7 +36,7 @@ void main() {
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
 #if defined(SH_TRANSFER)
 #ifdef IMPLICIT_LIGHTING
-    sh_ambient = min(length(normal_texel.xyz * 2.0 - 1.0), 1.0);
+    sh_ambient = min(length(normal_texel.xyz * 2.0 - 1.0) * v_population, 1.0);
 #endif
     float seen[9], other[9];
     read_transfer_pages(seen, other);
@@ -50,7 +50,7 @@ void main() {
     // Luft 2007: the normal page holds the realigned normals times k_a (billboard_bake.cpp).
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
     vec3 m = mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * (normal_texel.xyz * 2.0 - 1.0);
-    out_color = vec4(shade_implicit(base, m, v_position, true), 1.0);
+    out_color = vec4(shade_implicit(base, m * v_population, v_position, true), 1.0);
 #else
     // Normal-mapped (Behrendt 2005 §2.3): the bake stored each side's normals toward its own
     // viewer, and back faces are culled, so the rotated normal is the one seen.

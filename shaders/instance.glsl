@@ -8,6 +8,7 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 layout(location = 3) in vec4 in_instance_position_yaw;
 layout(location = 4) in vec4 in_instance_scale_tint_fade_layer;
+layout(location = 10) in uvec2 in_instance_population;  // 5..9: vertex_transfer.glsl
 
 // The vertex placed by its instance: turned by the yaw (c, s), scaled, moved.
 struct instance_pose {
@@ -27,4 +28,26 @@ instance_pose pose_instance() {
     p.scale = in_instance_scale_tint_fade_layer.x;
     p.world = p.rotation * (in_position * p.scale) + in_instance_position_yaw.xyz;
     return p;
+}
+
+// Luft 2007 §5 for a population, kept instanced (components/population_ambient.h, which mirrors
+// this): the factor by which the neighbours' density lowers k_a at model-space point q, blended
+// trilinearly from the 8 corners of the box [-h, h] x [0, 2h] x [-h, h] packed in the instance.
+// Corner c holds 6 bits at bit 6c of the 64-bit word (corner 5 straddles the halves); h is the
+// half in bits 48..63. An instance of a scene without populations packs every factor as 1.
+float population_ambient(vec3 q) {
+    uvec2 p = in_instance_population;
+    float h = unpackHalf2x16(p.y >> 16u).x;
+    vec3 t = clamp(vec3(0.5 * (q.x / h + 1.0), 0.5 * q.y / h, 0.5 * (q.z / h + 1.0)), 0.0, 1.0);
+    float f[8];
+    for (int c = 0; c < 8; ++c) {
+        int start = 6 * c;
+        uint bits = start + 6 <= 32 ? p.x >> uint(start)
+                  : start >= 32     ? p.y >> uint(start - 32)
+                                    : (p.x >> uint(start)) | (p.y << uint(32 - start));
+        f[c] = float(bits & 63u) / 63.0;
+    }
+    vec4 lower = mix(vec4(f[0], f[2], f[4], f[6]), vec4(f[1], f[3], f[5], f[7]), t.x);  // along x
+    vec2 middle = mix(lower.xz, lower.yw, t.y);                                         // along y
+    return mix(middle.x, middle.y, t.z);                                                // along z
 }

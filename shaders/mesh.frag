@@ -70,6 +70,9 @@ void main() {
     // side (which shows the mirror image), reflect it through the quad's plane.
     vec3 plane = n;
     vec3 m = texture(u_normal_map, vec3(v_uv, v_layer)).xyz * 2.0 - 1.0;
+#ifdef IMPLICIT_LIGHTING
+    m *= v_population;
+#endif
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
     n = normalize(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m);
     if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;

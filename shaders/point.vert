@@ -75,6 +75,9 @@ void main() {
     // filtered level), the surface's side that faces the eye, lit as foliage when the material
     // is a leaf.
     vec3 normal = pose.rotation * in_normal;
+#ifdef IMPLICIT_LIGHTING
+    normal *= population_ambient(in_position);  // the normal's length is k_a (Luft 2007 §3.2)
+#endif
     vec4 albedo = textureLod(u_albedo, vec3(in_uv, layer), 1.0);
     vec3 base = albedo.rgb * (1.0 + 0.18 * in_instance_scale_tint_fade_layer.y);
 #if defined(SH_TRANSFER)

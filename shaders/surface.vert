@@ -44,12 +44,20 @@ flat out vec2 v_yaw_cos_sin;  // rotates the normal map's model-space normals in
 #if defined(FADE_DISSOLVE) || defined(MATERIAL_BILLBOARD_CLOUD)
 flat out float v_fade;  // instance_gpu::fade: how much of this representation is drawn
 #endif
+#if defined(IMPLICIT_LIGHTING) && (defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD))
+out float v_population;  // population_ambient: the page's k_a is read per fragment
+#endif
 
 void main() {
     instance_pose pose = pose_instance();
     vec3 world = pose.world;
     v_position = world;
     v_normal = pose.rotation * in_normal;
+#if defined(IMPLICIT_LIGHTING) && (defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD))
+    v_population = population_ambient(in_position);
+#elif defined(IMPLICIT_LIGHTING)
+    v_normal *= population_ambient(in_position);  // the normal's length is k_a (Luft 2007 §3.2)
+#endif
     v_uv = in_uv;
     v_tint = in_instance_scale_tint_fade_layer.y;
     v_layer = in_instance_scale_tint_fade_layer.w;

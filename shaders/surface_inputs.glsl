@@ -7,6 +7,9 @@ in vec3 v_normal;
 in vec2 v_uv;
 in float v_tint;
 flat in float v_layer;
+#if defined(IMPLICIT_LIGHTING) && (defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD))
+in float v_population;  // the neighbours' factor on k_a (instance.glsl population_ambient)
+#endif
 #ifdef WRITE_ID
 flat in uint v_instance;
 layout(location = 1) out uint out_id;  // ID buffer: instance index + 1 (0 = nothing drawn)

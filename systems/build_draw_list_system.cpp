@@ -256,6 +256,10 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     const auto instances = ctx.read<plant_instance>().data();
     const auto lods = ctx.read<lod_state>().data();
     const auto fades = ctx.read<fade_alpha>().data();
+    // Luft 2007 §5 (components/population_ambient.h): present, aligned with the plants, only when
+    // a species asks for its population's darkening.
+    const auto populations = ctx.read<population_ambient>().data();
+    const bool has_population = ctx.read<population_ambient>().size() == n;
     auto classify_cell = [&](const octree_cell& cell, const cell_prefix& prefix) {
         const std::size_t k = cell.plant;
         const part_range parts = parts_of(library.cells[cell.cell]);
@@ -352,6 +356,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const bool partner = (k & k_partner_item_bit) != 0;
             const std::uint32_t plant = k & ~k_partner_item_bit;
             list.instances[i] = make_instance(cam, transforms[plant], instances[plant], fades[plant], partner, library);
+            if (has_population) list.instances[i].population = populations[plant];
             // A points partner fades by its prefix (add_partner_prefixes): its triangles are
             // drawn whole, not also dissolved.
             if (partner && library.meshes[decode_sort_key(list.items[i].key).mesh].drawn_as == representation::points)

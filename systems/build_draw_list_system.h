@@ -12,6 +12,7 @@
 // Items are counted and written in fixed-size chunks at offsets from a prefix sum, so the list
 // is identical for any thread count; then radix-sorted, and runs of equal pass and mesh become
 // instanced batches with their camera-relative instance records.
+#include "components/population_ambient.h"
 #include "components/bounds.h"
 #include "components/camera.h"
 #include "components/fade_alpha.h"
@@ -46,7 +47,7 @@ struct build_draw_list_system {
     static constexpr ecs::phase k_phase = ecs::phase::build;
     using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, octree_cell,
                              cell_prefix, fade_alpha, species_library, cascade_set, lod_policy, primitive_costs,
-                             tile_point_sets, tile_point_draws>;
+                             tile_point_sets, tile_point_draws, population_ambient>;
     using writes = ecs::writes<draw_list>;
     static void run(ecs::system_context<build_draw_list_system>& ctx);
 };

@@ -18,10 +18,12 @@ namespace {
 constexpr GLuint k_instance_binding = 1;
 
 void setup_instance_attributes(GLuint vao) {
-    // instance_gpu (resources/draw_list.h): two vec4 attributes, advanced once per instance.
+    // instance_gpu (resources/draw_list.h): two vec4 attributes and the population's packed
+    // ambient (a uvec2), advanced once per instance.
     glVertexArrayAttribFormat(vao, 3, 4, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribFormat(vao, 4, 4, GL_FLOAT, GL_FALSE, 16);
-    for (GLuint a : {3u, 4u}) {
+    glVertexArrayAttribIFormat(vao, 10, 2, GL_UNSIGNED_INT, 32);  // 5..9: vertex transfer
+    for (GLuint a : {3u, 4u, 10u}) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribBinding(vao, a, k_instance_binding);
     }

@@ -882,8 +882,9 @@ TEST(scenario_loader, implicit_lighting_parameters_load_and_round_trip) {
     json j = minimal();
     j["species"][0]["lighting"] = "implicit";
     j["species"][0]["implicit"] = {{"rho_m", 0.8}, {"tau", 2.5}, {"ka_min", 0.2}, {"exponent", 3},
-                                   {"blend", 0.5}, {"generator_fraction", 0.1}};
+                                   {"blend", 0.5}, {"generator_fraction", 0.1}, {"population", true}};
     const scenario s = load(j);
+    EXPECT_TRUE(s.species[0].implicit.population);
     EXPECT_EQ(s.species[0].lighting, "implicit");
     EXPECT_FLOAT_EQ(s.species[0].implicit.rho_m, 0.8f);
     EXPECT_FLOAT_EQ(s.species[0].implicit.tau, 2.5f);
@@ -915,7 +916,9 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
                  {"/species/0/implicit/ka_min", "out of range; expected a number from 0 to 1", "1.5"});
     expect_error(set(minimal(), "/species/0/implicit", json{{"rho", 1}}),
                  {"/species/0/implicit/rho", "unknown field; expected one of: generator_fraction, rho_m, tau, ka_min, "
-                  "d_min, exponent, blend", "1"});
+                  "d_min, exponent, blend, population", "1"});
+    expect_error(set(minimal(), "/species/0/implicit", json{{"population", 1}}),
+                 {"/species/0/implicit/population", "expected true or false", "1"});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),
                  {"/lod/sample_distance_px", "out of range; expected a number from 0.05 to 64", "0"});
     expect_error(set(minimal(), "/lod/splat_factor", 0.5),
