@@ -135,7 +135,29 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
     return policy;
 }
 
+// The scenario a player with `options` plays: options.lighting lights every species.
+scenario lit_as_asked(scenario s, const player_options& options) {
+    if (!options.lighting.empty()) {
+        s.lod.lighting = options.lighting;
+        for (species_settings& species : s.species) species.lighting = "scenario";
+    }
+    return s;
+}
+
+lod_policy player_policy(const scenario& s, const player_options& options) {
+    return options.geometry == geometry_mode::full ? lod_policy{} : policy_of(s, options);
+}
+
+// Only what the policy can select is baked (DESIGN §2, "skip what a scene doesn't need").
+scene_needs needs_of(const lod_policy& policy) { return {policy.uses_point_lines(), policy.uses_billboard_clouds()}; }
+
 }  // namespace
+
+scene_assets build_player_assets(const scenario& s, const player_options& options, bake_cache* cache,
+                                 const bake_progress& progress) {
+    const scenario lit = lit_as_asked(s, options);
+    return build_scene_assets(lit, cache, needs_of(player_policy(lit, options)), progress);
+}
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
     const auto* p = static_cast<const unsigned char*>(data);
@@ -149,14 +171,10 @@ std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
 
 scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache,
                                  player_options options)
-    : m_scenario(std::move(s)), m_executor(resolve_threads(threads)) {
+    : m_scenario(lit_as_asked(std::move(s), options)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
-    if (!options.lighting.empty()) {
-        m_scenario.lod.lighting = options.lighting;
-        for (species_settings& species : m_scenario.species) species.lighting = "scenario";
-    }
-    const lod_policy policy = options.geometry == geometry_mode::full ? lod_policy{} : policy_of(m_scenario, options);
-    m_assets = build_scene_assets(m_scenario, cache, {policy.uses_point_lines(), policy.uses_billboard_clouds()});
+    const lod_policy policy = player_policy(m_scenario, options);
+    m_assets = options.assets ? std::move(*options.assets) : build_scene_assets(m_scenario, cache, needs_of(policy));
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
     // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines, or a
     // ladder that reaches them).

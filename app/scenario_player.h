@@ -19,6 +19,7 @@
 #include "resources/lod_policy.h"
 #include "resources/rung_budget.h"
 #include "resources/scene_assets.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 
@@ -66,7 +67,15 @@ struct player_options {
     // scenario's.
     double target_frame_ms = 0.0;
     double max_error = 0.0;
+    // Assets already built for this scenario and these options (build_player_assets), moved
+    // from: the viewer re-bakes a tuned species in the background and swaps the player.
+    std::shared_ptr<scene_assets> assets;
 };
+
+// What a player with `options` builds for `s` (its meshes, textures and terrain, CPU only):
+// the viewer runs it on a background thread. `cache` may be null.
+scene_assets build_player_assets(const scenario& s, const player_options& options, bake_cache* cache,
+                                 const bake_progress& progress = {});
 
 class scenario_player {
 public:

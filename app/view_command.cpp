@@ -2,7 +2,11 @@
 // flying by hand (W/A/S/D, Q/E, drag with the left mouse button to look), Space pauses, N steps
 // one frame, R tints every plant by the rung it is drawn with (app/rung_colours.h), Escape quits.
 // An overlay shows the frame's measurements, in rung colours the key, and with the auto ladder a
-// slider for its budget (or frame-time target, or error threshold).
+// slider for its budget (or frame-time target, or error threshold). With implicit-lit species a
+// second panel tunes Luft 2007's parameters (app/implicit_tuning.h): pick the species from the
+// list or by right-clicking a plant, move the sliders, re-bake in the background (a progress bar
+// shows it; the view keeps playing the old bake until the new one is swapped in), and write the
+// values back to the scenario file.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -11,14 +15,18 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <glm/geometric.hpp>
 
 #include "app/commands.h"
+#include "app/implicit_tuning.h"
 #include "app/rung_colours.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
 #include "scenarios/scenario_loader.h"
 #include "components/camera.h"
+#include "components/plant_instance.h"
 #include "models/generate/textures.h"
 #include "scenarios/scenario_loader.h"
 #include "resources/playback.h"
@@ -45,6 +53,85 @@ struct walk_state {
     float yaw = 0.0f, pitch = 0.0f;
     bool rungs = false;
 };
+
+// The implicit-lighting panel's state: the species tuned, its values as the sliders hold them,
+// the background re-bake and the last message.
+struct tuning_state {
+    int species = -1;  // index into the scenario's species; -1: none implicit-lit
+    implicit_lighting_settings values;
+    std::unique_ptr<implicit_rebake> rebake;
+    std::string message;
+};
+
+bool implicit_lit(const scene_assets& assets, std::size_t species) {
+    return species < assets.densities.size() && !assets.densities[species].generators.empty();
+}
+
+// The values the bake used for `species` (derived ones filled in), in the model's own units as
+// the scenario's fields are.
+implicit_lighting_settings used_values(const scenario& s, const scene_assets& assets, std::size_t species) {
+    implicit_lighting_settings v = s.species[species].implicit;
+    const species_density& d = assets.densities[species];
+    v.rho_m = d.used.rho_m / d.scale;
+    v.tau = d.used.tau;
+    v.d_min = d.used.d_min;
+    v.ka_min = d.used.ka_min;
+    v.exponent = d.used.exponent;
+    v.blend = d.used.blend;
+    return v;
+}
+
+void choose_species(tuning_state& t, const scenario& s, const scene_assets& assets, int species) {
+    if (species < 0 || !implicit_lit(assets, std::size_t(species))) return;
+    t.species = species;
+    t.values = used_values(s, assets, std::size_t(species));
+}
+
+// Returns true when the user asked for a re-bake.
+bool tuning_panel(tuning_state& t, const scenario& s, const scene_assets& assets) {
+    if (t.species < 0) return false;
+    ImGui::SetNextWindowPos(ImVec2(float(s.width) - 330.0f, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.7f);
+    ImGui::Begin("Implicit lighting (Luft 2007)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    if (ImGui::BeginCombo("species", s.species[std::size_t(t.species)].name.c_str())) {
+        for (std::size_t i = 0; i < s.species.size(); ++i)
+            if (implicit_lit(assets, i) && ImGui::Selectable(s.species[i].name.c_str(), int(i) == t.species))
+                choose_species(t, s, assets, int(i));
+        ImGui::EndCombo();
+    }
+    ImGui::TextDisabled("right-click a plant to pick its species");
+    implicit_lighting_settings& v = t.values;
+    ImGui::SliderFloat("rho (m)", &v.rho_m, 0.01f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("tau", &v.tau, 0.01f, 500.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("ka,min", &v.ka_min, 0.0f, 1.0f, "%.2f");
+    ImGui::SliderFloat("d_min", &v.d_min, 0.01f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("n", &v.exponent, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("blend", &v.blend, 0.0f, 1.0f, "%.2f");
+    bool rebake = false;
+    if (t.rebake) {
+        ImGui::ProgressBar(t.rebake->progress(), ImVec2(300.0f, 0.0f), t.rebake->step().c_str());
+    } else {
+        rebake = ImGui::Button("Re-bake");
+        ImGui::SameLine();
+        if (ImGui::Button("Write to scenario")) {
+            try {
+                std::filesystem::path file = s.source;
+                if (s.source.rfind("embedded:", 0) == 0 || !std::filesystem::exists(file)) {
+                    // A bundled scenario has no file of its own: write a copy beside the user.
+                    file = s.name + ".json";
+                    std::ofstream(file) << scenario_to_json_text(s) << '\n';
+                }
+                write_implicit_settings(file, std::size_t(t.species), v);
+                t.message = "written to " + file.string();
+            } catch (const std::exception& e) {
+                t.message = e.what();
+            }
+        }
+    }
+    if (!t.message.empty()) ImGui::TextWrapped("%s", t.message.c_str());
+    ImGui::End();
+    return rebake;
+}
 
 void key_callback(GLFWwindow* window, int key, int, int action, int) {
     auto* state = static_cast<walk_state*>(glfwGetWindowUserPointer(window));
@@ -146,7 +233,10 @@ int view(const view_options& o) {
         // The ID buffer tells each pixel's plant, for the rung colours.
         player_options player_settings;
         player_settings.id_buffer = true;
-        scenario_player player(s, o.scenario.threads, context.get(), &cache, player_settings);
+        auto player = std::make_unique<scenario_player>(s, o.scenario.threads, context.get(), &cache, player_settings);
+        tuning_state tuning;
+        for (std::size_t i = 0; i < s.species.size() && tuning.species < 0; ++i)
+            choose_species(tuning, player->settings(), player->assets(), int(i));
         walk_state state;
         state.rungs = o.rungs;
         GLFWwindow* window = context->window();
@@ -161,20 +251,51 @@ int view(const view_options& o) {
         double last_time = glfwGetTime();
         while (context->poll_events()) {
             const double now = glfwGetTime();
-            auto& track = player.world().resource<camera_track>();
+            auto& track = player->world().resource<camera_track>();
             track.follow = !state.flying;
-            if (state.flying) fly(window, state, player.world().single<camera>(), float(now - last_time));
+            if (state.flying) fly(window, state, player->world().single<camera>(), float(now - last_time));
             last_time = now;
-            const std::uint64_t frame = player.frame();
-            frame_record record = player.step();
-            if (state.paused && !state.step) player.set_frame(frame);
+            // The background re-bake done: a player on the tuned assets takes over at this frame.
+            if (tuning.rebake && tuning.rebake->ready()) {
+                try {
+                    player_options options = player_settings;
+                    options.assets = tuning.rebake->take();
+                    const std::uint64_t at = player->frame();
+                    const camera kept = player->world().single<camera>();
+                    auto next = std::make_unique<scenario_player>(tuning.rebake->tuned(), o.scenario.threads,
+                                                                  context.get(), &cache, options);
+                    next->set_frame(at);
+                    if (state.flying) next->world().single<camera>() = kept;
+                    player = std::move(next);
+                    tuning.message = "re-baked and swapped in";
+                } catch (const std::exception& e) {
+                    tuning.message = std::string("re-bake failed: ") + e.what();
+                }
+                tuning.rebake.reset();
+            }
+            // Right-click picks the species under the cursor for the tuning panel.
+            if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse) {
+                double cx = 0.0, cy = 0.0;
+                glfwGetCursorPos(window, &cx, &cy);
+                const std::vector<std::uint32_t> ids = player->capture_plant_ids();
+                const auto x = std::size_t(cx * double(s.width) / double(std::max(context->width(), 1)));
+                const auto y = std::size_t(cy * double(s.height) / double(std::max(context->height(), 1)));
+                if (x < s.width && y < s.height && !ids.empty() && ids[y * s.width + x] != 0) {
+                    const auto plant = ids[y * s.width + x] - 1;
+                    choose_species(tuning, player->settings(), player->assets(),
+                                   int(player->world().table<plant_instance>().data()[plant].species));
+                }
+            }
+            const std::uint64_t frame = player->frame();
+            frame_record record = player->step();
+            if (state.paused && !state.step) player->set_frame(frame);
             state.step = false;
             if (state.rungs)
                 render::draw_image_to_default(
-                    tint_by_rung(player.capture(), player.capture_plant_ids(), player.world().table<lod_state>().values()),
+                    tint_by_rung(player->capture(), player->capture_plant_ids(), player->world().table<lod_state>().values()),
                     context->width(), context->height());
             else
-                player.present(context->width(), context->height());
+                player->present(context->width(), context->height());
             ++shown;
             if (!o.screenshot.empty() && o.exit_after && shown == o.exit_after)
                 write_image(render::read_default_framebuffer(context->width(), context->height()),
@@ -183,7 +304,10 @@ int view(const view_options& o) {
                 ImGui_ImplOpenGL3_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
                 ImGui::NewFrame();
-                draw_overlay(record, state, player.info(), player.world().resource<rung_budget>());
+                draw_overlay(record, state, player->info(), player->world().resource<rung_budget>());
+                if (tuning_panel(tuning, player->settings(), player->assets()))
+                    tuning.rebake = std::make_unique<implicit_rebake>(player->settings(), std::size_t(tuning.species), tuning.values,
+                                                                      player_settings);
                 ImGui::Render();
                 ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             }

@@ -124,6 +124,7 @@ struct species_density {
     std::vector<glm::vec3> generators;
     implicit_settings used;
     float half_size_m = 1.0f;
+    float scale = 1.0f;     // species' height_m over its model's: the bake's ρ is used.rho_m / scale
     bool receives = false;  // species.implicit.population
 };
 
@@ -158,8 +159,9 @@ struct scene_assets {
     environment_map environment_sky;
     species_library library;
     std::uint64_t source_triangles = 0;  // sum over instances of full-detail triangles
-    // Luft 2007 §5, by species, when a species asks for its population's density
-    // (species.implicit.population; setup/population_ambient.h); empty otherwise.
+    // Luft 2007, by species: each implicit-lit species' field (others have no generators), for
+    // the population's darkening (§5, setup/population_ambient.h) and the viewer's tuning panel;
+    // empty when no species is implicit-lit.
     std::vector<species_density> densities;
 };
 

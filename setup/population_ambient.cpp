@@ -55,6 +55,7 @@ species_density species_density_of(const plant_model& unscaled, const implicit_s
     for (const vertex& v : unscaled.lods[0].vertices)
         h = std::max({h, std::abs(v.position.x), std::abs(v.position.z), 0.5f * v.position.y});
     out.half_size_m = h * scale;
+    out.scale = scale;
     return out;
 }
 

@@ -138,15 +138,24 @@ auto read_named_file(const scenario& s, const std::string& pointer, const std::s
 }
 
 void add_species(scene_assets& assets, const scenario& s, std::size_t index, bake_cache* cache,
-                 const scene_needs& needs) {
+                 const scene_needs& needs, const bake_progress& progress) {
     const species_settings settings = resolved_species(s, s.species[index]);
+    // Five steps a species: its model (with Luft 2007 baked in), points and lines, transfer,
+    // crossed billboard, cloud; most are cache reads.
+    const auto step = [&](int done, const char* what) {
+        if (progress)
+            progress((float(index) + float(done) / 5.0f) / float(s.species.size()), settings.name + ": " + what);
+    };
+    step(0, "model");
     const std::size_t first_mesh = assets.meshes.size();
     const std::uint64_t seed = species_seed_of(s.seed, index);
     plant_model model =
         read_named_file<input_error>(s, "/species/" + std::to_string(index) + "/model", settings.model,
                                      [&] { return load_species_model(settings, seed, cache); });
+    step(1, "points and lines");
     point_line_model point_lines;
     if (needs.point_lines) point_lines = load_species_point_lines(settings, seed, model, cache);
+    step(2, "radiance transfer");
     // Behrendt 2005 §4: the transfer of every representation, baked from the full plant (the
     // bake's receivers are unscaled too: transfer does not change with a uniform scale).
     const lighting_variant lighting = lighting_variant_of(settings);
@@ -166,9 +175,11 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     const std::uint64_t transfer_key =
         by_transfer ? species_transfer_key(settings, seed, transfer_config) : 0;
     const radiance_transfer* full_transfer = by_transfer ? &transfer[0] : nullptr;
+    step(3, "crossed billboard");
     // Baked from the unscaled model, so the cache entries do not depend on height_m.
     crossed_billboard billboard =
         load_species_billboard(settings, seed, model, cache, full_transfer, transfer_key);
+    step(4, "billboard cloud");
     billboard_cloud cloud;
     if (needs.billboard_clouds)
         cloud =
@@ -180,11 +191,9 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     // billboard quads with it (their textures are scale-free).
     const float natural_height = model.lods[0].bounds_max.y;
     const float scale = settings.height_m / std::max(natural_height, 1e-3f);
-    // Luft 2007 §5: the species' field as its plants carry it, when some species asks for its
-    // population's (setup/population_ambient.h).
-    const bool population = std::any_of(s.species.begin(), s.species.end(),
-                                        [](const species_settings& sp) { return sp.implicit.population; });
-    if (population && bakes_implicit(settings)) {
+    // Luft 2007: the species' field as its plants carry it, for the population's darkening (§5,
+    // setup/population_ambient.h) and the viewer's tuning panel (the values the bake derived).
+    if (bakes_implicit(settings)) {
         assets.densities.resize(s.species.size());
         assets.densities[index] =
             species_density_of(model, implicit_settings_of(settings, seed), scale, settings.implicit.population);
@@ -251,7 +260,8 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
 
 }  // namespace
 
-scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs) {
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs,
+                                const bake_progress& progress) {
     scene_assets assets;
     const terrain_settings& t = s.terrain;
     assets.terrain =
@@ -278,7 +288,8 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
         assets.environment_sky =
             downsample_environment_map(map, k_environment_sky_width, k_environment_sky_width / 2);
     }
-    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs);
+    for (std::size_t i = 0; i < s.species.size(); ++i) add_species(assets, s, i, cache, needs, progress);
+    if (progress) progress(1.0f, "done");
     match_cloud_atlas_sizes(assets.cloud_albedo);
     match_cloud_atlas_sizes(assets.cloud_normal);
     match_cloud_atlas_sizes(assets.cloud_pre_lit);

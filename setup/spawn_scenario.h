@@ -2,6 +2,9 @@
 // Turns a scenario into something to draw: builds the scene's meshes, textures and terrain
 // (build_scene_assets, CPU only) and fills an ECS world with the camera, the sun and one entity
 // per plant plus the resources the per-frame systems read (spawn_scenario).
+#include <functional>
+#include <string>
+
 #include "setup/population_ambient.h"
 #include "ecs/world.h"
 #include "models/cache/bake_cache.h"
@@ -17,8 +20,12 @@ struct scene_needs {
     bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/bake/billboard_cloud.h)
 };
 
+// Called as the species are baked (or read from the cache): the share done, 0..1, and the step.
+using bake_progress = std::function<void(float done, const std::string& step)>;
+
 // `cache` may be null: species models are then generated or imported every time.
-scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs = {});
+scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs = {},
+                                const bake_progress& progress = {});
 
 struct spawn_report {
     std::size_t plants = 0;
