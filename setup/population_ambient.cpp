@@ -11,23 +11,15 @@
 #include "components/bounds.h"
 #include "components/plant_instance.h"
 #include "ecs/parallel.h"
+#include "models/bake/nanoflann_points.h"
 
 namespace sylva {
 namespace {
 
-// nanoflann's dataset adaptor over the neighbours' sphere centres (float, relative to one plant:
-// a landscape is a few kilometres, so float keeps millimetres).
-struct centre_cloud {
-    const std::vector<glm::vec3>* points;
-    std::size_t kdtree_get_point_count() const { return points->size(); }
-    float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][int(dim)]; }
-    template <class Box>
-    bool kdtree_get_bbox(Box&) const {
-        return false;
-    }
-};
-using centre_tree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, centre_cloud>, centre_cloud, 3>;
+// The neighbours' sphere centres are float relative to one plant: a landscape is a few
+// kilometres, so float keeps millimetres.
+using centre_cloud = nanoflann_points;
+using centre_tree = point_kd_tree;
 
 // The box corner c (ix + 2 iy + 4 iz) of [-h, h] x [0, 2h] x [-h, h].
 glm::vec3 corner(int c, float h) {

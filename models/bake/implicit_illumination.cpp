@@ -10,24 +10,15 @@
 #include <stdexcept>
 
 #include "ecs/parallel.h"
+#include "models/bake/nanoflann_points.h"
 #include "models/random.h"
 
 namespace sylva {
 
 namespace {
 
-// nanoflann's dataset adaptor over a point list.
-struct point_cloud {
-    const std::vector<glm::vec3>* points;
-    std::size_t kdtree_get_point_count() const { return points->size(); }
-    float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][int(dim)]; }
-    template <class Box>
-    bool kdtree_get_bbox(Box&) const {
-        return false;
-    }
-};
-using point_tree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, point_cloud>, point_cloud, 3>;
+using point_cloud = nanoflann_points;
+using point_tree = point_kd_tree;
 
 // Fixed chunks: the result never depends on how many threads ran them.
 constexpr std::size_t k_chunk = 1024;

@@ -179,21 +179,24 @@ glm::vec3 line_normal(glm::vec3 direction, glm::vec3 surface_normal) {
     return n;
 }
 
-// Luft 2007 (models/bake/implicit_illumination.h): where the element's vertices carry realigned
-// normals scaled by k_a, a line vertex takes the normal of the element's vertex nearest to it,
-// length and all, so lines are lit by the crown's shape and darkened inside it as the mesh is.
+// The vertex of `vertices` nearest to p: a line's colour is read at the opaque cell centre nearest
+// its middle, and under Luft 2007 (models/bake/implicit_illumination.h), where the element's
+// vertices carry realigned normals scaled by k_a, a line vertex takes the normal of the element's
+// vertex nearest to it, length and all, so lines are lit by the crown's shape and darkened inside
+// it as the mesh is.
 // Ties go to the first vertex, so the choice does not depend on anything but the mesh.
-glm::vec3 nearest_normal(const std::vector<vertex>& vertices, glm::vec3 p) {
-    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+// `vertices` is not empty (an element has triangles).
+const vertex& nearest_vertex(const std::vector<vertex>& vertices, glm::vec3 p) {
+    std::size_t best = 0;
     float nearest = std::numeric_limits<float>::infinity();
-    for (const vertex& v : vertices) {
-        const glm::vec3 d = v.position - p;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const glm::vec3 d = vertices[i].position - p;
         if (glm::dot(d, d) < nearest) {
             nearest = glm::dot(d, d);
-            normal = v.normal;
+            best = i;
         }
     }
-    return normal;
+    return vertices[best];
 }
 
 }  // namespace
@@ -306,18 +309,10 @@ element_lines build_element_lines(const mesh_data& mesh, std::span<const std::ui
         const glm::vec3 b = spine.points[i + 1];
         const glm::vec3 direction = glm::normalize(b - a);
         const glm::vec3 middle = 0.5f * (a + b);
-        glm::vec2 uv{0.0f};
-        float nearest = std::numeric_limits<float>::infinity();
-        for (const vertex& v : opaque) {
-            const glm::vec3 d = v.position - middle;
-            if (glm::dot(d, d) < nearest) {
-                nearest = glm::dot(d, d);
-                uv = v.uv;
-            }
-        }
+        const glm::vec2 uv = opaque.empty() ? glm::vec2{0.0f} : nearest_vertex(opaque, middle).uv;
         const glm::vec3 n = line_normal(direction, surface);
-        out.vertices.push_back({a, implicit ? nearest_normal(element_vertices, a) : n, uv});
-        out.vertices.push_back({b, implicit ? nearest_normal(element_vertices, b) : n, uv});
+        out.vertices.push_back({a, implicit ? nearest_vertex(element_vertices, a).normal : n, uv});
+        out.vertices.push_back({b, implicit ? nearest_vertex(element_vertices, b).normal : n, uv});
     }
     return out;
 }
