@@ -197,6 +197,10 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         assets.densities.resize(s.species.size());
         assets.densities[index] =
             species_density_of(model, implicit_settings_of(settings, seed), scale, settings.implicit.population);
+    } else if (settings.implicit.population) {
+        warn_once(fmt::format("species {} ({}): implicit.population has no effect under lighting \"{}\"; it needs "
+                              "\"implicit\" or \"sh_implicit\"",
+                              index, settings.name, settings.lighting));
     }
     for (auto& lod : model.lods) scale_mesh(lod, scale);
     scale_mesh(billboard.mesh, scale);
