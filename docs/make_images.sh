@@ -39,16 +39,27 @@ need pngquant pngquant
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
-last="$(printf 'frame_%04d.png' "$frame")"
+
+# play SCENARIO for FRAMES frames at W x H with the given options; prints the last frame's path.
+play_last() {
+  local scenario="$1" frames="$2" name="$3" width="$4" height="$5"
+  shift 5
+  echo "[make_images] $name: sylva play $scenario --frames $frames --width $width --height $height $*" >&2
+  "$sylva" play "$scenario" --headless --frames "$frames" --width "$width" --height "$height" \
+    --out "$work/$name" "$@" >"$work/$name.log" 2>&1 || { cat "$work/$name.log" >&2; exit 1; }
+  printf '%s/%s/frame_%04d.png\n' "$work" "$name" "$((frames - 1))"
+}
 
 # play default, FRAME+1 frames at W x H with the given options; prints the last frame's path.
 render() {
   local name="$1" width="$2" height="$3"
   shift 3
-  echo "[make_images] $name: sylva play default --frames $((frame + 1)) --width $width --height $height $*" >&2
-  "$sylva" play default --headless --frames "$((frame + 1))" --width "$width" --height "$height" \
-    --out "$work/$name" "$@" >"$work/$name.log" 2>&1 || { cat "$work/$name.log" >&2; exit 1; }
-  echo "$work/$name/$last"
+  play_last default "$((frame + 1))" "$name" "$width" "$height" "$@"
+}
+
+# A frame with its label in the top left corner, for a mosaic.
+label_tile() {  # in, label, out
+  oiiotool "$1" --text:x=8:y=20:size=14:color=0.05,0.12,0.05:font="$font" "$2" -o "$3"
 }
 
 # Quantise to a palette: foliage is noise to a PNG compressor, 24-bit frames are 3x larger.
@@ -68,8 +79,7 @@ for rep in mesh_levels points_lines billboard_clouds sh; do
   esac
   frame_png="$(render "$rep" 320 180 "${opts[@]}")"
   shrink "$frame_png" "$out/representation_$rep.png"
-  oiiotool "$frame_png" --text:x=8:y=20:size=14:color=0.05,0.12,0.05:font="$font" "$label" \
-    -o "$work/tile_$rep.png"
+  label_tile "$frame_png" "$label" "$work/tile_$rep.png"
   tiles+=("$work/tile_$rep.png")
 done
 oiiotool "${tiles[@]}" --mosaic:pad=4 4x1 -o "$work/representations.png"
@@ -80,17 +90,14 @@ tree_tiles=()
 for variant in normal_photo implicit_photo normal_lines implicit_lines; do
   lighting="${variant%_*}" style="${variant#*_}"
   [ "$lighting" = normal ] && lighting=normal_mapped
-  echo "[make_images] $variant: sylva play single_tree --frames 1 --lighting $lighting --style $style" >&2
-  "$sylva" play single_tree --headless --frames 1 --width 320 --height 180 --lighting "$lighting" \
-    --style "$style" --out "$work/$variant" >"$work/$variant.log" 2>&1 || { cat "$work/$variant.log" >&2; exit 1; }
+  frame_png="$(play_last single_tree 1 "$variant" 320 180 --lighting "$lighting" --style "$style")"
   case "$variant" in
     normal_photo) label="leaf normals" ;;
     implicit_photo) label="implicit surface (Luft 2007)" ;;
     normal_lines) label="leaf normals, lines" ;;
     implicit_lines) label="implicit surface, lines" ;;
   esac
-  oiiotool "$work/$variant/frame_0000.png" --text:x=8:y=20:size=14:color=0.05,0.12,0.05:font="$font" "$label" \
-    -o "$work/tile_$variant.png"
+  label_tile "$frame_png" "$label" "$work/tile_$variant.png"
   tree_tiles+=("$work/tile_$variant.png")
 done
 oiiotool "${tree_tiles[@]}" --mosaic:pad=4 2x2 -o "$work/implicit_lighting.png"
