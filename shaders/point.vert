@@ -6,7 +6,8 @@
 // instance's fade is then the prefix's fractional length (build_draw_list): splat j of the
 // prefix is drawn at opacity clamp(fade − j, 0, 1), the last one faded
 // (point_prefix::last_fade). SH_TRANSFER: the transfer of the side facing the eye
-// (vertex_transfer.glsl, Behrendt 2005 §4). WRITE_ID passes the instance index on.
+// (vertex_transfer.glsl, Behrendt 2005 §4). WRITE_ID passes the instance index on, WRITE_NORMAL
+// the normal it is lit with (the line style's normal buffer; the visibility pass's too).
 #if defined(WRITE_ID) || defined(SOFT_SPLATS) || defined(SPLAT_VISIBILITY)
 #extension GL_ARB_shader_draw_parameters : require
 #endif
@@ -30,6 +31,9 @@ flat out uint v_instance;  // index into the frame's instance records (baseInsta
 // splat moves back ε = that x its distance along its view ray.
 uniform float u_depth_push;
 uniform int u_visibility_stride;  // lod/point_line_lod.h k_soft_splat_visibility_stride
+#ifdef WRITE_NORMAL
+flat out vec3 v_lit_normal;  // the line style's normal buffer (splat_visibility.frag)
+#endif
 #else
 // A splat is one sample: shaded here once, flat across its pixels, with one shadow tap.
 #define SHADOW_SINGLE_TAP
@@ -65,6 +69,15 @@ void main() {
     int rank = gl_VertexID - gl_BaseVertexARB;
     if (rank % u_visibility_stride != 0 || in_instance_scale_tint_fade_layer.z < float(rank) + 1.0)
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
+#ifdef WRITE_NORMAL
+    // The normal the blend pass lights the splat with: Luft 2007's realigned one as it is (it
+    // points out of the crown), any other turned to face the eye, as below.
+    vec3 lit = normalize(pose.rotation * in_normal);
+#ifndef IMPLICIT_LIGHTING
+    if (dot(lit, world) > 0.0) lit = -lit;
+#endif
+    v_lit_normal = lit;
+#endif
 #else
     gl_Position = u_view_projection * vec4(world, 1.0);
     gl_PointSize = u_splat_px * splat_growth(world);

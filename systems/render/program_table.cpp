@@ -24,15 +24,17 @@ const char* vertex_of(pass_kind pass, surface_primitive primitive) {
 }
 
 // Opaque shadow casters and splat visibility without an ID buffer are depth only: none.
+// `visibility_outputs`: the splats' visibility pass writes IDs or normals, so it needs a
+// fragment shader; without either it is depth only.
 const char* fragment_of(pass_kind pass, material_kind material, surface_primitive primitive,
-                        bool id_buffer) {
+                        bool visibility_outputs) {
     switch (pass) {
         case pass_kind::shadow:
             return alpha_tested(material) && primitive == surface_primitive::triangles
                        ? "surface_shadow.frag"
                        : "";
         case pass_kind::splat_visibility:
-            return id_buffer ? "splat_visibility.frag" : "";
+            return visibility_outputs ? "splat_visibility.frag" : "";
         case pass_kind::soft_splats:
             return "point.frag";
         default:
@@ -72,9 +74,14 @@ program_table::program_table(const program_options& options) : m_options(options
 
 std::size_t program_table::slot_of(pass_kind pass, material_kind material,
                                    surface_primitive primitive, lighting_variant lighting) {
-    // Depth-only passes light nothing: one program serves every lighting variant.
-    if (pass == pass_kind::shadow || pass == pass_kind::splat_visibility)
+    // Depth-only passes light nothing: one program serves every lighting variant. The splats'
+    // visibility pass also writes the line style's normals, which face the eye unless they are
+    // Luft 2007's realigned ones (point.vert): those keep a program of their own.
+    if (pass == pass_kind::shadow ||
+        (pass == pass_kind::splat_visibility && !uses_implicit_normals(lighting)))
         lighting = lighting_variant::normal_mapped;
+    if (pass == pass_kind::splat_visibility && uses_implicit_normals(lighting))
+        lighting = lighting_variant::implicit;
     std::size_t slot = std::size_t(pass);
     slot = slot * k_material_kinds + std::size_t(material);
     slot = slot * std::size_t(surface_primitive::count) + std::size_t(primitive);
@@ -95,9 +102,13 @@ void program_table::prepare(const gpu_mesh& mesh) {
             build(pass_kind::soft_splats, m, surface_primitive::points, l);
             auto& composite = m_screen[std::size_t(screen_program::splat_composite)];
             if (!composite) composite = m_shaders.program({"sky.vert", "splat_layer.frag", {}, {}});
-            auto& ids = m_screen[std::size_t(screen_program::splat_composite_ids)];
-            if (m_options.id_buffer && !ids)
-                ids = m_shaders.program({"sky.vert", "splat_layer.frag", {"WRITE_ID"}, {}});
+            auto& visibility = m_screen[std::size_t(screen_program::splat_composite_visibility)];
+            if ((m_options.id_buffer || m_options.normals) && !visibility) {
+                std::vector<std::string> defines;
+                if (m_options.id_buffer) defines.push_back("WRITE_ID");
+                if (m_options.normals) defines.push_back("WRITE_NORMAL");
+                visibility = m_shaders.program({"sky.vert", "splat_layer.frag", defines, {}});
+            }
         }
     }
 }
@@ -129,15 +140,19 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
                                         surface_primitive primitive,
                                         lighting_variant lighting) const {
     const bool shadow = pass == pass_kind::shadow;
+    const bool visibility_outputs = m_options.id_buffer || m_options.normals;
     program_source source{vertex_of(pass, primitive),
-                          fragment_of(pass, material, primitive, m_options.id_buffer),
-                          {},
-                          {}};
+                          fragment_of(pass, material, primitive, visibility_outputs), {}, {}};
     if (primitive == surface_primitive::points) source.defines.push_back("PRIMITIVE_POINTS");
     if (pass == pass_kind::splat_visibility) {
         // Depth only (and the ID buffer's instance, which the blend pass does not write).
         source.defines.push_back("SPLAT_VISIBILITY");
         if (m_options.id_buffer) source.defines.push_back("WRITE_ID");
+        if (m_options.normals) {
+            // The line style's normal buffer (edges.frag) sees the splats, not what lies behind.
+            source.defines.push_back("WRITE_NORMAL");
+            if (uses_implicit_normals(lighting)) source.defines.push_back("IMPLICIT_LIGHTING");
+        }
         return source;
     }
     if (pass == pass_kind::soft_splats) source.defines.push_back("SOFT_SPLATS");

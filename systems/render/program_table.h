@@ -34,7 +34,9 @@ enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splat
 // primitive_kind, with lines split by how they are widened: GL's own lines, or d'-wide quads
 // from line.geom (chosen per frame from d', so both are built).
 enum class surface_primitive : std::uint8_t { triangles, points, lines, line_quads, count };
-enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_ids, edges, count };
+// splat_composite_visibility: the splat layer's visibility IDs and normals into the frame's
+// ID and normal buffers (shaders/splat_layer.frag), built when the frame has either.
+enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_visibility, edges, count };
 
 constexpr surface_primitive surface_primitive_of(primitive_kind p, bool line_quads = false) {
     if (p == primitive_kind::lines)

@@ -4,7 +4,19 @@
 
 namespace sylva::render {
 
-splat_layer::splat_layer(int frame_width, int frame_height, bool id_buffer)
+namespace {
+
+// Read texel by texel, never filtered, and never past the far edge.
+void read_as_texels(GLuint texture) {
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
+
+splat_layer::splat_layer(int frame_width, int frame_height, bool id_buffer, bool normal_buffer)
     : m_width((frame_width + 1) / 2),
       m_height((frame_height + 1) / 2),
       m_color(make_texture(GL_TEXTURE_2D)),
@@ -30,11 +42,14 @@ splat_layer::splat_layer(int frame_width, int frame_height, bool id_buffer)
         m_ids = make_texture(GL_TEXTURE_2D);
         glTextureStorage2D(m_ids.id(), 1, GL_R32UI, m_width, m_height);
         // An integer texture with GL's default linear filters is incomplete and reads as 0.
-        glTextureParameteri(m_ids.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(m_ids.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(m_ids.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);  // not GL's REPEAT:
-        glTextureParameteri(m_ids.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // no far-edge IDs
+        read_as_texels(m_ids.id());
         glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT2, m_ids.id(), 0);
+    }
+    if (normal_buffer) {
+        m_normals = make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(m_normals.id(), 1, GL_RGBA8, m_width, m_height);
+        read_as_texels(m_normals.id());  // a normal is one splat's, not a blend of two
+        glNamedFramebufferTexture(m_framebuffer.id(), GL_COLOR_ATTACHMENT3, m_normals.id(), 0);
     }
     draw_blend();
     if (glCheckNamedFramebufferStatus(m_framebuffer.id(), GL_FRAMEBUFFER) !=
@@ -50,18 +65,21 @@ void splat_layer::begin() const {
     const GLuint no_id[4] = {0, 0, 0, 0};
     const float far_depth = 1.0f;
     // Clears go to the draw buffers: name all of them first.
-    const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
-                           GLenum(m_ids.id() ? GL_COLOR_ATTACHMENT2 : GL_NONE)};
-    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 3, all);
+    const GLenum all[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                           GLenum(m_ids.id() ? GL_COLOR_ATTACHMENT2 : GL_NONE),
+                           GLenum(m_normals.id() ? GL_COLOR_ATTACHMENT3 : GL_NONE)};
+    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 4, all);
     glClearNamedFramebufferfv(m_framebuffer.id(), GL_COLOR, 0, none);
     glClearNamedFramebufferfv(m_framebuffer.id(), GL_COLOR, 1, far);
     if (m_ids.id()) glClearNamedFramebufferuiv(m_framebuffer.id(), GL_COLOR, 2, no_id);
+    if (m_normals.id()) glClearNamedFramebufferfv(m_framebuffer.id(), GL_COLOR, 3, none);
     glClearNamedFramebufferfv(m_framebuffer.id(), GL_DEPTH, 0, &far_depth);
 }
 
 void splat_layer::draw_visibility() const {
-    const GLenum buffers[2] = {GL_NONE, GLenum(m_ids.id() ? GL_COLOR_ATTACHMENT2 : GL_NONE)};
-    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 2, buffers);
+    const GLenum buffers[3] = {GL_NONE, GLenum(m_ids.id() ? GL_COLOR_ATTACHMENT2 : GL_NONE),
+                               GLenum(m_normals.id() ? GL_COLOR_ATTACHMENT3 : GL_NONE)};
+    glNamedFramebufferDrawBuffers(m_framebuffer.id(), 3, buffers);
 }
 
 void splat_layer::draw_blend() const {

@@ -13,9 +13,10 @@
 //
 // Attachments: colour (premultiplied "over": the splats' colour times their coverage, and the
 // coverage), the nearest splat's window depth (R32F, MIN-blended), a depth buffer for the
-// visibility pass and, with the frame's ID buffer, the visibility splats' IDs. The composite
-// (shaders/splat_layer.frag) writes the nearest depth of its 2x2 footprint as its own, so the
-// frame's depth test hides what the terrain and other surfaces cover, pixel by pixel.
+// visibility pass and, with the frame's ID buffer, the visibility splats' IDs, with its normal
+// buffer (the line style) their normals. The composite (shaders/splat_layer.frag) writes the
+// nearest depth of its 2x2 footprint as its own, so the frame's depth test hides what the
+// terrain and other surfaces cover, pixel by pixel.
 #include "lod/point_line_lod.h"
 #include "systems/render/gl_objects.h"
 
@@ -26,16 +27,19 @@ namespace sylva::render {
 class splat_layer {
 public:
     // For a frame of frame_width x frame_height: (w + 1) / 2 x (h + 1) / 2.
-    splat_layer(int frame_width, int frame_height, bool id_buffer);
-    // Binds the layer and clears it: no colour, coverage 0, depth and nearest depth 1, ID 0.
+    splat_layer(int frame_width, int frame_height, bool id_buffer, bool normal_buffer);
+    // Binds the layer and clears it: no colour, coverage 0, depth and nearest depth 1, ID 0,
+    // normal 0 (alpha 0: no splat).
     void begin() const;
-    // The visibility pass writes depth and, with an ID buffer, IDs (fragment output 1); the
-    // blend pass writes colour (output 0) and nearest depth (output 1).
+    // The visibility pass writes depth and, with an ID buffer, IDs (fragment output 1), with a
+    // normal buffer normals (output 2); the blend pass writes colour (output 0) and nearest
+    // depth (output 1).
     void draw_visibility() const;
     void draw_blend() const;
     GLuint color() const { return m_color.id(); }
     GLuint nearest_depth() const { return m_nearest.id(); }
-    GLuint ids() const { return m_ids.id(); }  // 0 without an ID buffer
+    GLuint ids() const { return m_ids.id(); }          // 0 without an ID buffer
+    GLuint normals() const { return m_normals.id(); }  // 0 without a normal buffer
     // Window size of the layer relative to the frame's: every splat is drawn this many times
     // its frame size.
     static constexpr float k_scale = 0.5f;
@@ -47,6 +51,7 @@ private:
     gl_texture m_nearest;
     gl_texture m_depth;
     gl_texture m_ids;
+    gl_texture m_normals;
     gl_framebuffer m_framebuffer;
 };
 

@@ -25,7 +25,7 @@ struct crown_look {
 };
 
 crown_look look_of(const std::string& lighting, const std::string& representation,
-                   const std::string& style = "photo") {
+                   const std::string& style = "photo", float sample_distance_px = 1.0f) {
     scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
     s.width = 320;
     s.height = 180;
@@ -37,6 +37,7 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
         s.lod.representation = representation;
     }
     s.lod.lighting = lighting;
+    s.lod.sample_distance_px = sample_distance_px;
     s.render.style = style;
     // A tenth of the leaves as generators keeps the bake short (§3.1: "very similar results").
     for (species_settings& species : s.species) species.implicit.generator_fraction = 0.1f;
@@ -125,6 +126,28 @@ TEST(implicit_lighting_gl, line_style_draws_the_crown_not_every_leaf) {
     }
     EXPECT_GT(inked[1], 0.01) << "the realigned crown keeps its outline";
     EXPECT_GT(inked[0], 2.0 * inked[1]) << "the leaves' own normals should clutter the crown with lines";
+}
+
+// The same for soft splats (the default), which the blend pass draws without a normal: the
+// visibility pass writes them, straight into the frame at d' = 1.5 (splats under
+// k_splat_layer_min_side_px) and through the half-size splat layer's composite at d' = 2. Were
+// the normal buffer left to what lies behind the crown, neither lighting would ink it.
+TEST(implicit_lighting_gl, line_style_sees_soft_splats_drawn_directly_and_through_the_layer) {
+    SYLVA_REQUIRE_GL();
+    for (const float d : {1.5f, 2.0f}) {
+        double inked[2] = {0.0, 0.0};
+        int i = 0;
+        for (const char* lighting : {"normal_mapped", "implicit"}) {
+            const crown_look photo = look_of(lighting, "points_lines", "photo", d);
+            const crown_look lines = look_of(lighting, "points_lines", "lines", d);
+            inked[i++] = lines.dark_share - photo.dark_share;
+            std::printf("d' = %.1f, %s: crown pixels inked by the lines %.3f\n", d, lighting,
+                        lines.dark_share - photo.dark_share);
+        }
+        EXPECT_GT(inked[1], 0.01) << "d' = " << d << ": the realigned crown keeps its outline";
+        EXPECT_GT(inked[0], 2.0 * inked[1])
+            << "d' = " << d << ": the samples' own normals should clutter the crown with lines";
+    }
 }
 
 // Lighting "sh_implicit": SH transfer (Behrendt 2005 §4) baked from the realigned normals, the sky's

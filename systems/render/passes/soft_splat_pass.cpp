@@ -26,7 +26,7 @@ void soft_splat_pass::draw(pass_context& context) {
     if (layered) {
         if (!m_layer)
             m_layer.emplace(context.settings->width, context.settings->height,
-                            context.settings->id_buffer);
+                            context.settings->id_buffer, target.has_normal_buffer());
         m_layer->begin();
         if (context.shadows)
             glBindTextureUnit(1, context.shadows->texture());  // the splats' lighting
@@ -35,8 +35,9 @@ void soft_splat_pass::draw(pass_context& context) {
     if (layered) {
         m_layer->draw_visibility();
     } else {
+        // Depth, IDs and the line style's normals: what the blend pass does not write.
         glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        target.draw_ids(true);
+        target.draw_surfaces();
     }
     for (const surface_draw* d : m_draws)
         d->draw(context, {pass_kind::splat_visibility, -1, pixel_scale});
@@ -66,7 +67,8 @@ void soft_splat_pass::draw(pass_context& context) {
 }
 
 // Draws the splat layer over the frame (shaders/splat_layer.frag), then, when the frame has an
-// ID buffer, the layer's visibility IDs in a second pass that writes nothing else.
+// ID or a normal buffer, the layer's visibility IDs and normals in a second pass that writes
+// nothing else.
 void soft_splat_pass::composite(pass_context& context) {
     render_target& target = *context.target;
     target.bind();
@@ -78,11 +80,12 @@ void soft_splat_pass::composite(pass_context& context) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++context.draw_calls;
     glDisable(GL_BLEND);
-    if (m_layer->ids() != 0) {
-        glBindTextureUnit(2, m_layer->ids());
-        target.draw_ids(true);
+    if (m_layer->ids() != 0 || m_layer->normals() != 0) {
+        if (m_layer->ids() != 0) glBindTextureUnit(2, m_layer->ids());
+        if (m_layer->normals() != 0) glBindTextureUnit(3, m_layer->normals());
+        target.draw_surfaces();
         glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glUseProgram(context.programs->screen(screen_program::splat_composite_ids));
+        glUseProgram(context.programs->screen(screen_program::splat_composite_visibility));
         glDrawArrays(GL_TRIANGLES, 0, 3);
         ++context.draw_calls;
         glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
