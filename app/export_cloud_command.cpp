@@ -5,14 +5,12 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
-#include <filesystem>
 #include <string>
 
 #include "app/commands.h"
+#include "app/model_argument.h"
 #include "models/bake/billboard_cloud.h"
 #include "models/gltf/gltf_export.h"
-#include "models/gltf/gltf_import.h"
-#include "models/generate/plant_library.h"
 
 namespace sylva {
 namespace {
@@ -28,17 +26,6 @@ struct export_cloud_options {
     std::uint32_t atlas_width = 0;
     std::uint32_t atlas_height = 0;
 };
-
-std::string preset_list() {
-    std::string names;
-    for (const std::string_view name : k_plant_presets) names += (names.empty() ? "" : ", ") + std::string(name);
-    return names;
-}
-
-bool is_gltf(const std::string& model) {
-    const std::string ext = std::filesystem::path(model).extension().string();
-    return ext == ".gltf" || ext == ".glb";
-}
 
 clustering_method method_of(const std::string& name) {
     if (name == "hierarchy") return clustering_method::hierarchy;
@@ -68,24 +55,12 @@ void report(const std::string& name, const plant_model& model, const billboard_c
 int export_cloud(const export_cloud_options& o) {
     if (o.model.empty() || o.out.empty()) {
         spdlog::error("export-cloud: give a MODEL (a preset: {}; or a .gltf/.glb file) and --out FILE.glb",
-                      preset_list());
-        return k_exit_bad_input;
-    }
-    if (!is_gltf(o.model)) {
-        bool known = false;
-        for (const std::string_view name : k_plant_presets) known = known || name == o.model;
-        if (!known) {
-            spdlog::error("export-cloud: '{}' is neither a preset ({}) nor a .gltf/.glb file", o.model, preset_list());
-            return k_exit_bad_input;
-        }
-    } else if (!std::filesystem::exists(o.model)) {
-        spdlog::error("export-cloud: {}: file not found", o.model);
+                      plant_preset_list());
         return k_exit_bad_input;
     }
     plant_model model;
     try {
-        model = is_gltf(o.model) ? import_plant_model(o.model, o.texture_size)
-                                 : generate_plant_model(o.model, o.seed, o.texture_size);
+        model = load_plant_argument(o.model, o.seed, o.texture_size);
     } catch (const std::exception& e) {  // the model cannot be used: bad input
         spdlog::error("export-cloud: {}", e.what());
         return k_exit_bad_input;
@@ -100,7 +75,7 @@ int export_cloud(const export_cloud_options& o) {
         const auto start = std::chrono::steady_clock::now();
         const billboard_cloud cloud = bake_billboard_cloud(model, settings);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const std::string name = is_gltf(o.model) ? std::filesystem::path(o.model).stem().string() : o.model;
+        const std::string name = plant_argument_name(o.model);
         export_billboard_cloud_glb(cloud, name, o.out);
         report(name, model, cloud, ms);
         spdlog::info("wrote {}", o.out);

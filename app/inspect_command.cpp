@@ -1,10 +1,15 @@
-// `sylva inspect`: what the importer makes of a glTF plant, level by level.
+// `sylva inspect MODEL`: what Sylva makes of a plant (a glTF file, through the importer, or a
+// preset): its mesh levels, and the LoDF structure its foliage bakes into (Rebollo 2006):
+// leaves, collapses, clusters and storage against the paper's Eq. 9.
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 
 #include "app/commands.h"
+#include "app/model_argument.h"
+#include "models/bake/lodf_bake.h"
 #include "models/gltf/gltf_import.h"
 #include "models/gltf/gltf_plant_builder.h"
 
@@ -14,6 +19,7 @@ namespace {
 struct inspect_options {
     std::string file;
     std::uint32_t texture_size = 256;
+    std::uint64_t seed = 1;
 };
 
 struct level_counts {
@@ -38,7 +44,7 @@ level_counts count(const mesh_data& mesh) {
     return c;
 }
 
-void print_report(const std::string& file, const gltf_import_result& r) {
+void print_import(const std::string& file, const gltf_import_result& r) {
     const plant_model& m = r.model;
     std::printf("%s\n", file.c_str());
     std::printf("units: %s (source unit scale %g, converted to metres)\n",
@@ -59,6 +65,10 @@ void print_report(const std::string& file, const gltf_import_result& r) {
             p.label.c_str(), p.leaf ? "leaf" : "bark", p.material.c_str(), p.triangles,
             p.components, 100.0 * double(p.largest_component_share), 100.0 * double(p.alpha_ratio),
             p.green ? ", green" : "");
+    for (const std::string& w : r.warnings) std::printf("warning: %s\n", w.c_str());
+}
+
+void print_levels(const plant_model& m) {
     std::printf("%-8s %10s %10s %10s %8s  %s\n", "lod", "triangles", "bark", "leaf", "leaves",
                 "bounds (m)");
     const char* names[3] = {"full", "reduced", "far"};
@@ -71,19 +81,53 @@ void print_report(const std::string& file, const gltf_import_result& r) {
                     double(mesh.bounds_max.x), double(mesh.bounds_max.y),
                     double(mesh.bounds_max.z));
     }
-    for (const std::string& w : r.warnings) std::printf("warning: %s\n", w.c_str());
+}
+
+// Rebollo 2006 §3.2: the structure, and its storage in the paper's words (Eq. 7–8) against Eq. 9.
+void print_lodf(const plant_model& m) {
+    const auto start = std::chrono::steady_clock::now();
+    const lodf_model lodf = bake_lodf(m.lods[0], m.has_hierarchy);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const lodf_structure& f = lodf.structure;
+    if (f.leaf_count == 0) {
+        std::printf("LoDF: no foliage to collapse\n");
+        return;
+    }
+    std::uint32_t smallest = f.leaf_count, largest = 0;
+    for (const lodf_cluster& c : f.clusters)
+        smallest = std::min(smallest, c.original_leaves), largest = std::max(largest, c.original_leaves);
+    const lodf_storage storage = lodf_storage_of(lodf);
+    std::printf("LoDF (Rebollo 2006), baked in %.0f ms:\n", ms);
+    std::printf("  leaves L %u (%s), collapses %u, clusters G %u (%u .. %u leaves each), F^r %zu leaves\n",
+                f.leaf_count, m.has_hierarchy ? "clustered along the branches" : "clustered along a Morton curve",
+                f.collapse_count(), std::uint32_t(f.clusters.size()), smallest, largest, f.nodes.size());
+    std::printf("  levels: %u .. %u leaves, any count between; made leaves keep %.0f %% of their pair's area "
+                "on average (on existing vertices, Eq. 3)\n",
+                f.leaf_count - f.collapse_count(), f.leaf_count, 100.0 * double(lodf.mean_area_ratio));
+    std::printf("  storage: %llu words (Eq. 7-8 over the crown's V = %u vertices) against Eq. 9's 6.25 V = %.0f "
+                "(%.2f x); %llu bytes as stored\n",
+                static_cast<unsigned long long>(storage.words), lodf.crown_vertices, storage.eq9_words,
+                double(storage.words) / storage.eq9_words, static_cast<unsigned long long>(storage.bytes));
 }
 
 int inspect(const inspect_options& o) {
-    gltf_import_result result;
+    plant_model model;
     try {
-        result = import_gltf_plant(o.file, o.texture_size);
+        if (is_gltf_path(o.file)) {
+            const gltf_import_result result = import_gltf_plant(o.file, o.texture_size);
+            print_import(o.file, result);
+            model = result.model;
+        } else {
+            model = load_plant_argument(o.file, o.seed, o.texture_size);
+            std::printf("%s (preset, seed %llu)\n", o.file.c_str(), static_cast<unsigned long long>(o.seed));
+        }
     } catch (const std::exception& e) {
         // Every importer error is about the file: bad input.
         spdlog::error("{}", e.what());
         return k_exit_bad_input;
     }
-    print_report(o.file, result);
+    print_levels(model);
+    print_lodf(model);
     return k_exit_ok;
 }
 
@@ -91,7 +135,9 @@ int inspect(const inspect_options& o) {
 
 command_runner add_inspect_command(CLI::App& app) {
     auto options = std::make_shared<inspect_options>();
-    app.add_option("file", options->file, "A .gltf or .glb plant")->required();
+    app.add_option("model", options->file, "A species preset (see `sylva plant --list`) or a .gltf/.glb plant")
+        ->required();
+    app.add_option("--seed", options->seed, "Preset seed (the same as `sylva plant`)")->capture_default_str();
     app.add_option("--texture-size", options->texture_size, "Texture size the import resamples to")
         ->check(CLI::Range(16u, 4096u))
         ->capture_default_str();

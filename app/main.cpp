@@ -55,8 +55,11 @@ int run(int argc, char** argv) {
     auto* export_cloud = app.add_subcommand(
         "export-cloud", "Bake a plant's billboard cloud (Behrendt 2005) and export it as binary glTF (.glb)");
     commands.emplace_back(export_cloud, sylva::add_export_cloud_command(*export_cloud));
+    auto* export_lodf = app.add_subcommand(
+        "export-lodf", "Bake a plant's LoDF (Rebollo 2006) and export it at any leaf count as binary glTF (.glb)");
+    commands.emplace_back(export_lodf, sylva::add_export_lodf_command(*export_lodf));
     auto* inspect = app.add_subcommand(
-        "inspect", "Print a glTF plant's triangles, leaves, branches, materials, bounds and units");
+        "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
     auto* bake = app.add_subcommand("bake", "Bake a scenario's species (or one glTF model) into the bake cache");
     commands.emplace_back(bake, sylva::add_bake_command(*bake));
