@@ -58,6 +58,9 @@ int run(int argc, char** argv) {
     auto* export_lodf = app.add_subcommand(
         "export-lodf", "Bake a plant's LoDF (Rebollo 2006) and export it at any leaf count as binary glTF (.glb)");
     commands.emplace_back(export_lodf, sylva::add_export_lodf_command(*export_lodf));
+    auto* lodf_bench = app.add_subcommand(
+        "lodf-bench", "Traverse a plant's LoDF levels (Rebollo 2006 §5): bytes and time per change against re-extraction");
+    commands.emplace_back(lodf_bench, sylva::add_lodf_bench_command(*lodf_bench));
     auto* inspect = app.add_subcommand(
         "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
