@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/one_plant_view.h"
 #include "app/scenario_player.h"
 #include "components/transform.h"
 #include "lod/point_line_lod.h"
@@ -15,74 +16,13 @@
 namespace sylva {
 namespace {
 
-constexpr float k_fov_deg = 50.0f;
-constexpr std::uint32_t k_reference_samples = 3;
 constexpr std::uint32_t k_format_version = 4;  // 3: from 2 px, the error between 2x2 block means; 4: shader work
-
-// Species `i` of `s` alone on flat ground, in a square view of `view_px`.
-scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px) {
-    scenario one = s;
-    // Only what changes the measurement stays (it keys the cache): the species, the seed its
-    // model grows from, the light, the shadows, the ground's colour.
-    one.name = s.species[i].name + ":rung_tables";
-    one.width = one.height = view_px;
-    one.frames = 1;
-    one.fps = scenario{}.fps;
-    one.camera = camera_settings{};
-    const lod_settings lod = s.lod;
-    one.lod = lod_settings{};
-    one.lod.lighting = lod.lighting;
-    one.lod.sh_bands = lod.sh_bands;
-    one.lod.sh_interreflection = lod.sh_interreflection;
-    one.world_offset = glm::dvec3(0.0);
-    one.species = {s.species[i]};
-    one.species[0].max_distance_m = 1e6f;  // never culled at the smallest size
-    one.species[0].ladder.clear();
-    population_settings p;
-    p.species = s.species[i].name;
-    p.count = 1;
-    p.min_spacing_m = 0.5f;
-    p.scale_min = p.scale_max = 1.0f;
-    p.area = {-0.5, -0.5, 0.5, 0.5};
-    one.populations = {p};
-    one.terrain = terrain_settings{};
-    one.terrain.size_m = 64.0;
-    one.terrain.resolution = 9;
-    one.terrain.height_m = 0.0f;
-    one.terrain.ground_color = s.terrain.ground_color;
-    one.eco_tiles.enabled = false;
-    return one;
-}
 
 struct view_sample {
     double error_per_pixel = 0.0;
     double plant_pixels = 0.0;
     double drawn_pixels = 0.0;
 };
-
-// Looks at the plant from `azimuth_deg` so that its sphere is `size_px` high, the eye
-// `eye_height_m` above the ground (level with the plant's centre when k_rung_table_level_eye).
-void aim(scenario_player& player, float size_px, float azimuth_deg, std::uint32_t view_px, double eye_height_m) {
-    ecs::world& world = player.world();
-    const world_transform& t = world.table<world_transform>().data()[0];
-    const species_entry& species = world.resource<species_library>().species[0];
-    const double pixel = image_plane_units(1.0, double(k_fov_deg) * M_PI / 180.0, double(view_px));
-    // select_representation measures from the eye to the plant's base.
-    const double d = 2.0 * double(species.bounding_radius * t.scale) / (double(size_px) * pixel);
-    const double centre = double(species.center_height * t.scale);
-    // From the scenario's eye height; closer than the eye is high, the eye stays off the
-    // vertical (at most 72 degrees down), where a camera keeps its distance.
-    const bool level = eye_height_m < 0.0;
-    const double eye_height = level ? std::min(centre, 0.7 * d) : std::min(eye_height_m, 0.95 * d);
-    const double across = std::sqrt(std::max(d * d - eye_height * eye_height, 0.0));
-    const double a = double(azimuth_deg) * M_PI / 180.0;
-    camera_keyframe key;
-    key.position = t.position + glm::dvec3(across * std::sin(a), eye_height, across * std::cos(a));
-    key.target = t.position + glm::dvec3(0.0, centre, 0.0);
-    key.fov_deg = k_fov_deg;
-    world.resource<camera_track>().keys = {key};
-    player.set_frame(0);
-}
 
 // The colour difference is taken between 2x2 block means of the two images, over the blocks
 // either plant touches: a plant among many of its kind is seen through its neighbours, and what
@@ -126,7 +66,7 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
     species_rung_measurements out;
     out.species = one.species[0].name;
     scenario big = one;
-    big.width = big.height = one.width * k_reference_samples;
+    big.width = big.height = one.width * k_one_plant_reference_samples;
     player_options full(geometry_mode::full);
     full.id_buffer = true;
     full.scenario_lod = false;
@@ -139,10 +79,10 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
     std::vector<reference_view> views;
     for (const float size : k_rung_table_sizes_px)
         for (const float azimuth : k_rung_table_directions) {
-            aim(reference, size, azimuth, one.height, eye_height_m);  // the same camera: 3x the pixels
+            aim_at_plant(reference, size, azimuth, one.height, eye_height_m);  // the same camera: 3x the pixels
             (void)reference.step();
-            views.push_back({box_downsample(reference.capture(), k_reference_samples),
-                             reference.capture_plant_ids(k_reference_samples)});
+            views.push_back({box_downsample(reference.capture(), k_one_plant_reference_samples),
+                             reference.capture_plant_ids(k_one_plant_reference_samples)});
         }
     // The same views without the plant: what the terrain and sky cost there, taken off each
     // rung's shader work so its tables hold only the plant's.
@@ -162,7 +102,7 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
         scenario_player player(one, 0, &context, cache, options);
         for (const float size : k_rung_table_sizes_px)
             for (const float azimuth : k_rung_table_directions) {
-                aim(player, size, azimuth, one.height, eye_height_m);
+                aim_at_plant(player, size, azimuth, one.height, eye_height_m);
                 const frame_record record = player.step();
                 out.work_counted = record.work_counted;
                 empty.push_back(work_of(record));
@@ -182,7 +122,7 @@ species_rung_measurements measure_species(const scenario& one, const std::vector
         for (std::size_t s = 0; s < k_rung_table_size_count; ++s) {
             const double n = double(k_rung_table_directions.size());
             for (const float azimuth : k_rung_table_directions) {
-                aim(player, k_rung_table_sizes_px[s], azimuth, one.height, eye_height_m);
+                aim_at_plant(player, k_rung_table_sizes_px[s], azimuth, one.height, eye_height_m);
                 const frame_record record = player.step();
                 const view_sample v =
                     compare(views[view].image, views[view].ids, player.capture(), player.capture_plant_ids());
@@ -340,7 +280,7 @@ std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, co
                                                            double eye_height_m) {
     std::vector<species_rung_measurements> out;
     for (std::size_t i = 0; i < s.species.size(); ++i) {
-        const scenario one = species_alone(s, i, k_rung_table_view_px);
+        const scenario one = species_alone(s, i, k_rung_table_view_px, "rung_tables");
         out.push_back(read_or_bake(
             cache, "rung_tables", table_key(one, rungs, points, eye_height_m),
             [&] {
