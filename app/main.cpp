@@ -61,6 +61,9 @@ int run(int argc, char** argv) {
     auto* lodf_bench = app.add_subcommand(
         "lodf-bench", "Traverse a plant's LoDF levels (Rebollo 2006 §5): bytes and time per change against re-extraction");
     commands.emplace_back(lodf_bench, sylva::add_lodf_bench_command(*lodf_bench));
+    auto* lodf_quality = app.add_subcommand(
+        "lodf-quality", "LoDF's image quality at equal leaf count against leaf shrink and the mesh levels (FLIP, SSIM, IoU)");
+    commands.emplace_back(lodf_quality, sylva::add_lodf_quality_command(*lodf_quality));
     auto* inspect = app.add_subcommand(
         "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));

@@ -19,14 +19,19 @@ std::string plant_preset_list() {
     return names;
 }
 
-plant_model load_plant_argument(const std::string& model, std::uint64_t seed, std::uint32_t texture_size) {
+void check_plant_argument(const std::string& model) {
     if (is_gltf_path(model)) {
         if (!std::filesystem::exists(model)) throw std::invalid_argument(model + ": file not found");
-        return import_plant_model(model, texture_size);
+        return;
     }
     for (const std::string_view name : k_plant_presets)
-        if (name == model) return generate_plant_model(model, seed, texture_size);
+        if (name == model) return;
     throw std::invalid_argument("'" + model + "' is neither a preset (" + plant_preset_list() + ") nor a .gltf/.glb file");
+}
+
+plant_model load_plant_argument(const std::string& model, std::uint64_t seed, std::uint32_t texture_size) {
+    check_plant_argument(model);
+    return is_gltf_path(model) ? import_plant_model(model, texture_size) : generate_plant_model(model, seed, texture_size);
 }
 
 std::string plant_argument_name(const std::string& model) {

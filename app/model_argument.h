@@ -11,6 +11,9 @@ namespace sylva {
 bool is_gltf_path(const std::string& model);
 // "broadleaf, broadleaf_hd, ...": for messages.
 std::string plant_preset_list();
+// Throws std::invalid_argument naming `model` when it is neither a preset nor an existing
+// .gltf/.glb file; builds nothing.
+void check_plant_argument(const std::string& model);
 // Generates the preset or imports the file. Throws std::invalid_argument naming the argument
 // when it is neither a preset nor an existing file, and passes the importer's complaint on
 // (std::runtime_error: the file is bad input too).

@@ -286,7 +286,9 @@ lodf_model bake_lodf(const mesh_data& full, bool has_hierarchy, const lodf_setti
             for (int k = 0; k < 3; ++k) in_crown[full.indices[3 * std::size_t(t) + std::size_t(k)]] = 1;
     out.crown_vertices = std::uint32_t(std::count(in_crown.begin(), in_crown.end(), 1));
     const std::uint32_t groups = std::clamp<std::uint32_t>(
-        settings.clusters ? settings.clusters : (leaf_count + k_lodf_leaves_per_cluster - 1) / k_lodf_leaves_per_cluster, 1,
+        settings.clusters ? settings.clusters
+                          : (leaf_count + std::max(settings.leaves_per_cluster, 1u) - 1) / std::max(settings.leaves_per_cluster, 1u),
+        1,
         leaf_count);
     const std::vector<std::vector<std::uint32_t>> members = cluster_foliage_leaves(full, leaves, has_hierarchy, groups);
     std::vector<std::vector<std::uint32_t>> queues(groups);

@@ -31,7 +31,8 @@ inline constexpr std::uint32_t k_lodf_leaves_per_cluster = 256;
 inline constexpr std::uint32_t k_lodf_neighbours = 8;
 
 struct lodf_settings {
-    std::uint32_t clusters = 0;  // G; 0: ⌈L / k_lodf_leaves_per_cluster⌉
+    std::uint32_t clusters = 0;  // G; 0: ⌈L / leaves_per_cluster⌉
+    std::uint32_t leaves_per_cluster = k_lodf_leaves_per_cluster;
 };
 
 struct lodf_model {
