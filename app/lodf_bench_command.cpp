@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -40,12 +41,19 @@ struct model_result {
     double lodf_bytes = 0.0, whole_bytes = 0.0;  // mean per change
     double lodf_ns = 0.0, whole_ns = 0.0;        // median over rounds of the mean per change
     double time_saved = 0.0;                     // median over rounds of 1 − lodf/whole
+    lodf_storage storage;
+    std::uint32_t crown_vertices = 0;
+    double bake_ms = 0.0;
 };
 
 model_result measure(const std::string& argument, const lodf_bench_options& o) {
     const plant_model plant = load_plant_argument(argument, o.seed, o.texture_size);
+    const auto start = std::chrono::steady_clock::now();
     const lodf_model model = bake_lodf(plant.lods[0], plant.has_hierarchy);
     model_result r;
+    r.bake_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.storage = lodf_storage_of(model);
+    r.crown_vertices = model.crown_vertices;
     r.name = plant_argument_name(argument);
     r.leaves = model.structure.leaf_count;
     r.clusters = std::uint32_t(model.structure.clusters.size());
@@ -98,7 +106,12 @@ int lodf_bench(const lodf_bench_options& o) {
                         {"bytes_fewer", fewer},
                         {"lodf_extraction_us_median", r.lodf_ns / 1e3},
                         {"whole_extraction_us_median", r.whole_ns / 1e3},
-                        {"extraction_time_saved_median", r.time_saved}});
+                        {"extraction_time_saved_median", r.time_saved},
+                        {"crown_vertices", r.crown_vertices},
+                        {"storage_words", r.storage.words},
+                        {"eq9_words", r.storage.eq9_words},
+                        {"stored_bytes", r.storage.bytes},
+                        {"bake_ms", r.bake_ms}});
     }
     if (!o.json.empty()) {
         try {
