@@ -139,6 +139,21 @@ bench_configuration_spec ladder_configuration(double factor = 1.0) {
     return c;
 }
 
+// Rebollo 2006 as a rung: the papers' ladder with LoDF in the reduced mesh's place, so a near
+// plant's foliage thins leaf by leaf from the full mesh down to where the billboard cloud takes
+// over, instead of jumping to the reduced mesh.
+bench_configuration_spec ladder_lodf() {
+    bench_configuration_spec c = ladder_configuration();
+    c.name = "ladder_lodf";
+    c.description = "the papers' ladder with LoDF (Rebollo 2006) for the reduced mesh: full mesh, LoDF foliage "
+                    "thinned continuously below 400 px, billboard cloud, points and lines, crossed billboard";
+    ladder l = papers_ladder();
+    for (std::size_t i = 0; i < l.count; ++i)
+        if (l.rungs[i] == representation::mesh_reduced) l.rungs[i] = representation::lodf;
+    c.options.policy.every_species = l;
+    return c;
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
@@ -223,6 +238,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
     for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) list.push_back(ladder_configuration(factor));
+    list.push_back(ladder_lodf());
     for (double budget_ms : {4.0, 8.0, 15.0, 30.0, 45.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0})
         list.push_back(auto_ladder(budget_ms));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));

@@ -13,7 +13,7 @@ namespace sylva {
 std::string_view representation_name(representation r) {
     constexpr std::array<std::string_view, static_cast<std::size_t>(representation::count)> k_names = {
         "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "billboard_cloud",
-        "eco_tile"};
+        "eco_tile", "lodf"};
     return k_names[static_cast<std::size_t>(r)];
 }
 
@@ -79,6 +79,9 @@ nlohmann::json frame_json(const frame_record& f) {
             {"submit_record_ms", f.submit_record_ms},
             {"submit_issue_ms", f.submit_issue_ms},
             {"upload_bytes", f.upload_bytes},
+            {"lodf_command_bytes", f.lodf_command_bytes},
+            {"lodf_changed_clusters", f.lodf_changed_clusters},
+            {"lodf_overflow", f.lodf_overflow},
             {"draw_calls", f.draw_calls},
             {"aggregated_tiles", f.aggregated_tiles},
             {"aggregated_plants", f.aggregated_plants},

@@ -43,6 +43,11 @@ struct frame_record {
     double submit_record_ms = 0.0;  // Sylva's CPU work to prepare the GL submission
     double submit_issue_ms = 0.0;   // issuing the GL calls (llvmpipe does vertex work here)
     std::uint64_t upload_bytes = 0;
+    // Rebollo 2006: of those, the LoDF slots' indirect commands rewritten, and the clusters whose
+    // counters changed; plants on the LoDF rung without a slot (drawn as mesh_full).
+    std::uint64_t lodf_command_bytes = 0;
+    std::uint32_t lodf_changed_clusters = 0;
+    std::uint32_t lodf_overflow = 0;
     std::uint32_t draw_calls = 0;
     // Deussen 2002 §6.2: far eco tiles drawn as their aggregated point sets, and their plants.
     std::uint32_t aggregated_tiles = 0;

@@ -25,6 +25,7 @@
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/fit_shadow_cascades_system.h"
+#include "resources/lodf_slots.h"
 #include "resources/frame_stats.h"
 #include "resources/seen_pixels.h"
 #include "systems/project_environment_system.h"
@@ -32,6 +33,7 @@
 #include "systems/render/submit_system.h"
 #include "systems/select_representation_system.h"
 #include "setup/spawn_scenario.h"
+#include "systems/update_lodf_system.h"
 #include "systems/update_point_prefix_system.h"
 #include "systems/update_camera_system.h"
 #include "systems/update_sun_system.h"
@@ -61,6 +63,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<select_representation_system>();
     schedule.add<aggregate_eco_tiles_system>();
     schedule.add<update_point_prefix_system>();
+    schedule.add<update_lodf_system>();
     schedule.add<project_environment_system>();
     schedule.add<fit_shadow_cascades_system>();
     schedule.add<build_draw_list_system>();
@@ -122,6 +125,8 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
             policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
                              s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
                              s.lod.fog_weighted_samples};
+        if (policy.ladders.empty() && policy.every_species.count > 0)
+            policy.ladders.assign(s.species.size(), policy.every_species);
         if (policy.ladders.empty())
             for (const species_settings& species : s.species)
                 policy.ladders.push_back(!species.ladder.empty() ? ladder_of(species.ladder)
@@ -149,7 +154,9 @@ lod_policy player_policy(const scenario& s, const player_options& options) {
 }
 
 // Only what the policy can select is baked (DESIGN §2, "skip what a scene doesn't need").
-scene_needs needs_of(const lod_policy& policy) { return {policy.uses_point_lines(), policy.uses_billboard_clouds()}; }
+scene_needs needs_of(const lod_policy& policy) {
+    return {policy.uses_point_lines(), policy.uses_billboard_clouds(), policy.uses_lodf()};
+}
 
 }  // namespace
 
@@ -318,6 +325,9 @@ void scenario_player::step(frame_record& record) {
     record.shadow_fragments = stats.pass_fragments[std::size_t(render::gpu_pass::shadow)];
     record.instances = draws.instances_by_representation;
     record.upload_bytes = stats.upload_bytes;
+    record.lodf_command_bytes = stats.lodf_command_bytes;
+    record.lodf_changed_clusters = m_world.resource<lodf_slots>().changed_clusters;
+    record.lodf_overflow = m_world.resource<lodf_slots>().overflow;
     record.submit_record_ms = stats.record_ms;
     record.submit_issue_ms = stats.submit_cpu_ms;
     record.draw_calls = stats.draw_calls;
@@ -339,7 +349,7 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
     if (!m_renderer) return {};
     const std::vector<std::uint32_t> instance_ids = m_renderer->read_ids();
     if (instance_ids.empty()) return {};
-    const std::vector<draw_item>& items = m_world.resource<draw_list>().items;
+    const draw_list& draws = m_world.resource<draw_list>();
     const tile_point_sets& tile_sets = m_world.resource<tile_point_sets>();
     const auto& tiles = m_world.table<tile>();
     auto plant_of = [&](std::uint32_t instance) {
@@ -354,9 +364,10 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
         for (std::size_t x = 0; x < width; ++x) {
             const std::uint32_t id =
                 instance_ids[(y * samples + centre) * m_scenario.width + x * samples + centre];
-            // IDs are draw-list instance index + 1; the terrain's instance follows the plants'.
-            // A far eco tile's samples count as its first plant's.
-            if (id != 0 && id - 1 < items.size()) plants[y * width + x] = plant_of(items[id - 1].instance) + 1;
+            // IDs are instance record index + 1 (resources/draw_list.h instance_of_id). A far eco
+            // tile's samples count as its first plant's.
+            const std::uint32_t instance = instance_of_id(id, draws);
+            if (instance != k_no_draw_item) plants[y * width + x] = plant_of(instance) + 1;
         }
     return plants;
 }

@@ -7,7 +7,7 @@ namespace sylva {
 
 // Every representation Sylva can draw, and only those: metrics.json and bench.json report an
 // instance count per enumerator, so a representation joins the enum when it can be drawn (shells,
-// Behrendt 2005 §3, and LoDF foliage clusters, Rebollo 2006, come with their issues).
+// Behrendt 2005 §3, come with their issue).
 enum class representation : std::uint8_t {
     none = 0,      // culled or not yet chosen
     mesh_full,     // every triangle and leaf of the model
@@ -25,6 +25,9 @@ enum class representation : std::uint8_t {
     // (setup/tile_point_sets.h), not on its own. Chosen by a ladder's last rung; a plant whose
     // tile cannot be drawn as its sets falls back to points (systems/aggregate_eco_tiles_system.h).
     eco_tile,
+    // Rebollo 2006: the full mesh's trunk and branches, and its foliage at a continuous leaf count
+    // by LoDF's leaf collapses (lod/lodf.h), drawn cluster by cluster (systems/update_lodf_system.h).
+    lodf,
     count
 };
 

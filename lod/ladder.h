@@ -40,13 +40,13 @@ inline constexpr float k_max_band = 0.9f;
 // with ("points_lines" is representation::points; "eco_tile_points" is the plant drawn by its eco
 // tile's aggregated sets, Deussen 2002 §6.2, which can only follow points_lines as the last rung:
 // a tile that cannot be drawn as its sets draws its plants as points).
-inline constexpr std::array<std::string_view, 7> k_rung_names{
-    "mesh_full",    "mesh_reduced",      "mesh_far",       "billboard_cloud",
-    "points_lines", "crossed_billboard", "eco_tile_points"};
+inline constexpr std::array<std::string_view, 8> k_rung_names{
+    "mesh_full",    "mesh_reduced",      "mesh_far",        "billboard_cloud",
+    "points_lines", "crossed_billboard", "eco_tile_points", "lodf"};
 inline constexpr std::array<representation, k_rung_names.size()> k_rungs{
     representation::mesh_full,       representation::mesh_reduced, representation::mesh_far,
     representation::billboard_cloud, representation::points,       representation::crossed_billboard,
-    representation::eco_tile};
+    representation::eco_tile,        representation::lodf};
 
 // "" when `r` is not a rung.
 inline std::string_view rung_name(representation r) {

@@ -61,13 +61,18 @@ struct draw_list {
     std::vector<draw_item> items;    // sorted by key
     std::vector<draw_item> scratch;  // radix sort ping-pong buffer
     std::vector<instance_gpu> instances;
+    // Rebollo 2006: one record per LoDF slot (resources/lodf_slots.h), in slot order, for the
+    // foliage its indirect commands draw (instance `slot`, systems/render/lodf_commands.h); a
+    // free slot's record is scale 0. Empty when no ladder reaches LoDF.
+    std::vector<instance_gpu> lodf_instances;
+    std::vector<std::uint32_t> lodf_plants;  // by slot: the plant's dense index, k_no_draw_item when free
     std::vector<draw_batch> batches;
     std::vector<std::uint32_t> chunk_offsets;  // build scratch: items per chunk, prefix-summed
     std::vector<std::uint32_t> chunk_point_plants;  // build scratch: plants drawn as prefixes
     std::vector<std::uint32_t> chunk_eco_plants;    // build scratch: seen plants drawn by their tile
     // Statistics of the opaque pass (what the viewer sees), for metrics.
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances_by_representation{};
-    std::uint64_t triangles = 0;
+    std::uint64_t triangles = 0;  // LoDF foliage's included
     std::uint64_t shadow_triangles = 0;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
@@ -82,5 +87,18 @@ struct species_library;
 void build_batches(draw_list& list, const species_library& library);
 
 void radix_sort_draw_items(std::vector<draw_item>& items, std::vector<draw_item>& scratch);
+
+inline constexpr std::uint32_t k_no_draw_item = 0xffffffffu;
+
+// What a value of the renderer's ID buffer names: the instance records are the LoDF slots'
+// (lodf_instances) and then the items', so ID − 1 is a slot, then an item; the terrain's record
+// follows them. Returns the draw item's `instance` (a plant's dense index with its partner or
+// tile bits), a slot's plant, or k_no_draw_item for 0, a free slot and the terrain.
+inline std::uint32_t instance_of_id(std::uint32_t id, const draw_list& list) {
+    if (id == 0) return k_no_draw_item;
+    const std::size_t i = id - 1, slots = list.lodf_plants.size();
+    if (i < slots) return list.lodf_plants[i];
+    return i - slots < list.items.size() ? list.items[i - slots].instance : k_no_draw_item;
+}
 
 }  // namespace sylva

@@ -22,6 +22,8 @@ struct frame_stats {
     double record_ms = 0.0;
     double finish_ms = 0.0;  // time spent waiting for the GPU to finish
     std::uint64_t upload_bytes = 0;
+    // Of those, the LoDF slots' indirect commands rewritten (Rebollo 2006 §4: changed clusters only).
+    std::uint64_t lodf_command_bytes = 0;
     std::uint32_t draw_calls = 0;
     std::uint32_t indirect_commands = 0;
 };

@@ -43,6 +43,9 @@ struct lod_policy {
     // The ladder of each species, by species index (ladder only; the player fills it from the
     // scenario, the papers' ladder where the scenario names none).
     std::vector<ladder> ladders{};
+    // When set (count > 0) and `ladders` is empty, every species gets this ladder instead of its
+    // own: the bench compares ladders that no scenario names (ladder_lodf).
+    ladder every_species{};
     // Multiplies every projected size the ladders see (ladder only): below 1 every rung switches
     // nearer, so the bench sweeps a ladder's cost without moving the draw distances, which
     // lod_scale would.
@@ -59,6 +62,12 @@ struct lod_policy {
         return mode == kind::points_lines || any_ladder_reaches(representation::points) ||
                ((mode == kind::single || mode == kind::hard_switch) &&
                 (near == representation::points || far == representation::points));
+    }
+    // The same for LoDF foliage (Rebollo 2006): the scene then bakes it and keeps cluster slots.
+    bool uses_lodf() const {
+        return any_ladder_reaches(representation::lodf) ||
+               ((mode == kind::single || mode == kind::hard_switch) &&
+                (near == representation::lodf || far == representation::lodf));
     }
     // The same for billboard clouds: the scene then bakes them and uploads their atlases.
     bool uses_billboard_clouds() const {

@@ -11,6 +11,7 @@
 #include "models/image/image.h"
 #include "models/mesh.h"
 #include "models/bake/implicit_illumination.h"
+#include "models/bake/lodf_bake.h"
 #include "models/bake/point_line_model.h"
 #include "models/terrain/terrain.h"
 #include "lighting/environment_map.h"
@@ -68,6 +69,13 @@ struct species_entry {
     std::uint32_t lod_part_count = 0;
     std::uint32_t first_cell = 0;
     std::uint32_t cell_count = 0;  // > 1: every plant of the species has this many cell entities
+    // LoDF (Rebollo 2006), when a ladder reaches it: the full mesh's trunk and branches, and its
+    // foliage index list (every leaf of F^r), both over mesh_full's vertices (mesh_info::
+    // vertices_of); species_library::lodf[species] is the structure. 0 clusters: none.
+    std::uint16_t mesh_lodf_bark = 0;
+    std::uint16_t mesh_lodf_foliage = 0;
+    std::uint32_t lodf_clusters = 0;
+    std::uint32_t lodf_leaves = 0;  // L: F_0's leaves
 };
 
 // One octree cell of a split species: its parts in species_library::lod_parts.
@@ -100,6 +108,9 @@ struct mesh_info {
     representation drawn_as = representation::none;
     primitive_kind primitive = primitive_kind::triangles;
     lighting_variant lighting = lighting_variant::normal_mapped;  // its species' (terrain: normal)
+    // An index list over another mesh's vertices (LoDF: no vertices of its own, Eq. 3): that
+    // mesh's id; -1 for a mesh with its own vertices.
+    std::int32_t vertices_of = -1;
 };
 
 // The species table as an ECS resource (read by select_representation and build_draw_list).
@@ -109,6 +120,10 @@ struct species_library {
     std::vector<lod_part_entry> lod_parts;
     std::vector<lod_cell_entry> cells;
     std::vector<std::uint32_t> points_after;  // lod_part_entry::first_after indexes it
+    // Rebollo 2006, by species: each species' LoDF structure when a ladder reaches the lodf rung
+    // (species_entry::mesh_lodf_foliage holds its index list; no clusters otherwise); empty
+    // when no ladder does.
+    std::vector<lodf_structure> lodf;
 };
 
 // Width of scene_assets::environment_sky: twice the renderer's 128-texel sky texture, so the

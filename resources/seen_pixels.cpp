@@ -17,9 +17,8 @@ void count_seen_pixels(std::span<const std::uint32_t> ids, const draw_list& draw
         out.in_view[plant] = 1;
     }
     for (const std::uint32_t id : ids) {
-        if (id == 0 || id - 1 >= draws.items.size()) continue;  // nothing, or the terrain
-        const std::uint32_t instance = draws.items[id - 1].instance;
-        if (instance & k_tile_item_bit) continue;
+        const std::uint32_t instance = instance_of_id(id, draws);
+        if (instance == k_no_draw_item || (instance & k_tile_item_bit)) continue;  // nothing, or the terrain
         const std::uint32_t plant = instance & ~k_partner_item_bit;
         if (plant >= out.by_plant.size()) out.by_plant.resize(std::size_t(plant) + 1, 0u);
         ++out.by_plant[plant];

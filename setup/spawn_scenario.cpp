@@ -15,6 +15,7 @@
 #include "components/environment.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
+#include "components/cluster_changes.h"
 #include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
@@ -26,6 +27,7 @@
 #include "models/terrain/placement.h"
 #include "models/random.h"
 #include "models/generate/textures.h"
+#include "resources/lodf_slots.h"
 #include "resources/draw_list.h"
 #include "lod/eco_tiles.h"
 #include "resources/frame_stats.h"
@@ -179,6 +181,8 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     // Baked from the unscaled model, so the cache entries do not depend on height_m.
     crossed_billboard billboard =
         load_species_billboard(settings, seed, model, cache, full_transfer, transfer_key);
+    lodf_model lodf;
+    if (needs.lodf) lodf = load_species_lodf(settings, seed, model, cache);
     step(4, "billboard cloud");
     billboard_cloud cloud;
     if (needs.billboard_clouds)
@@ -225,7 +229,32 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
         for (image_rgba8& page : cloud.transfer_pages)
             assets.cloud_transfer.push_back(std::move(page));
     }
+    // Rebollo 2006: LoDF's trunk and foliage as index lists over the full mesh's vertices.
+    mesh_data lodf_bark, lodf_foliage;
+    if (lodf.structure.leaf_count > 0) {
+        for (const submesh& sub : model.lods[0].submeshes) {
+            if (sub.material == material_kind::leaf) continue;
+            lodf_bark.submeshes.push_back({std::uint32_t(lodf_bark.indices.size()), sub.index_count, sub.material});
+            lodf_bark.indices.insert(lodf_bark.indices.end(), model.lods[0].indices.begin() + sub.first_index,
+                                     model.lods[0].indices.begin() + sub.first_index + sub.index_count);
+        }
+        lodf_foliage.indices = std::move(lodf.indices);
+        lodf_foliage.submeshes.push_back({0, std::uint32_t(lodf_foliage.indices.size()), material_kind::leaf});
+        lodf_bark.bounds_min = lodf_foliage.bounds_min = model.lods[0].bounds_min;
+        lodf_bark.bounds_max = lodf_foliage.bounds_max = model.lods[0].bounds_max;
+    }
     add_mesh(assets, std::move(model.lods[0]), representation::mesh_full, entry.mesh_full, entry.triangles_full);
+    if (lodf.structure.leaf_count > 0) {
+        std::uint32_t triangles = 0;
+        add_mesh(assets, std::move(lodf_bark), representation::lodf, entry.mesh_lodf_bark, triangles);
+        assets.library.meshes.back().vertices_of = entry.mesh_full;
+        add_mesh(assets, std::move(lodf_foliage), representation::lodf, entry.mesh_lodf_foliage, triangles);
+        assets.library.meshes.back().vertices_of = entry.mesh_full;
+        entry.lodf_clusters = std::uint32_t(lodf.structure.clusters.size());
+        entry.lodf_leaves = lodf.structure.leaf_count;
+        assets.library.lodf.resize(s.species.size());
+        assets.library.lodf[index] = std::move(lodf.structure);
+    }
     add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
              entry.triangles_reduced);
     add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
@@ -390,6 +419,23 @@ void spawn_octree_cells(ecs::world& world, const species_library& library) {
     if (!cells.empty()) world.align<octree_cell, cell_prefix>();
 }
 
+// Rebollo 2006: when a ladder reaches LoDF, k_lodf_slots slots of foliage-cluster entities (one
+// per cluster of the species with the most), slot by slot, and the slots resource over them
+// (resources/lodf_slots.h); none otherwise.
+void spawn_lodf_clusters(ecs::world& world, const species_library& library) {
+    lodf_slots slots;
+    for (const species_entry& species : library.species)
+        slots.clusters_per_slot = std::max(slots.clusters_per_slot, species.lodf_clusters);
+    if (slots.clusters_per_slot > 0) {
+        slots.slots.resize(k_lodf_slots);
+        slots.changed.resize(k_lodf_slots);
+        for (auto& c : slots.changed) c.reserve(slots.clusters_per_slot);
+        for (std::size_t i = 0; i < std::size_t(k_lodf_slots) * slots.clusters_per_slot; ++i)
+            world.emplace<cluster_changes>(world.create());
+    }
+    world.set_resource(std::move(slots));
+}
+
 // Deussen 2002 §6.2: with eco tiles on, plants are created tile by tile (each tile's plants a
 // contiguous range of the component tables) and the tiles become entities that culling walks.
 std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_assets& assets) {
@@ -413,6 +459,7 @@ std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_asset
     }
     world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
     spawn_octree_cells(world, assets.library);
+    spawn_lodf_clusters(world, assets.library);
     return plants.size();
 }
 

@@ -18,6 +18,7 @@ namespace sylva {
 struct scene_needs {
     bool point_lines = false;  // Deussen 2002 points and lines (setup/point_line_assets.h)
     bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/bake/billboard_cloud.h)
+    bool lodf = false;  // Rebollo 2006 LoDF foliage (models/bake/lodf_bake.h)
 };
 
 // Called as the species are baked (or read from the cache): the share done, 0..1, and the step.

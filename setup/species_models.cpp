@@ -9,6 +9,7 @@
 #include "io/input_file.h"
 #include "models/cache/billboard_cloud_io.h"
 #include "models/cache/billboard_io.h"
+#include "models/cache/lodf_io.h"
 #include "models/gltf/gltf_import.h"
 #include "models/generate/plant_library.h"
 #include "models/cache/plant_model_io.h"
@@ -177,6 +178,14 @@ billboard_cloud load_species_billboard_cloud(const species_settings& species, st
     return load_cached<billboard_cloud>(
         cache, "billboard_clouds", key, bake,
         [](std::span<const std::byte> bytes) { return deserialize_billboard_cloud(bytes); });
+}
+
+lodf_model load_species_lodf(const species_settings& species, std::uint64_t seed, const plant_model& model,
+                             bake_cache* cache) {
+    const std::uint64_t key = hash_string("lodf " + std::to_string(k_lodf_format), species_model_key(species, seed));
+    return load_cached<lodf_model>(
+        cache, "lodf", key, [&] { return serialize_lodf_model(bake_lodf(model.lods[0], model.has_hierarchy)); },
+        [](std::span<const std::byte> bytes) { return deserialize_lodf_model(bytes); });
 }
 
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed) {

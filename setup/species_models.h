@@ -8,6 +8,7 @@
 #include "models/bake/billboard_cloud.h"
 #include "models/bake/crossed_billboard.h"
 #include "models/bake/implicit_illumination.h"
+#include "models/bake/lodf_bake.h"
 #include "models/plant_model.h"
 #include "models/bake/point_line_model.h"
 #include "models/bake/radiance_transfer.h"
@@ -79,6 +80,11 @@ billboard_cloud load_species_billboard_cloud(const species_settings& species, st
 
 // The cache key of a species' point/line representation: its model's key and the bake's format.
 std::uint64_t species_point_line_key(const species_settings& species, std::uint64_t seed);
+
+// The species' LoDF foliage (Rebollo 2006, models/bake/lodf_bake.h) over its full mesh, through
+// `cache` (kind "lodf", keyed by the model and k_lodf_format).
+lodf_model load_species_lodf(const species_settings& species, std::uint64_t seed, const plant_model& model,
+                             bake_cache* cache);
 
 // The point/line representation (Deussen 2002 §4) of `model` (unscaled), through the cache
 // ("point_lines") when `cache` is not null.

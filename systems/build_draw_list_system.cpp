@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
+#include "lod/lodf.h"
 #include "systems/update_point_prefix_system.h"
 
 namespace sylva {
@@ -56,6 +57,8 @@ std::uint16_t mesh_of(const species_entry& species, representation r) {
         case representation::mesh_reduced: return species.mesh_reduced;
         case representation::crossed_billboard: return species.mesh_billboard;
         case representation::billboard_cloud: return species.mesh_cloud;
+        // The trunk and branches; the foliage is drawn by its slot's commands.
+        case representation::lodf: return species.mesh_lodf_bark;
         default: return species.mesh_far;
     }
 }
@@ -260,6 +263,18 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     // a species asks for its population's darkening.
     const auto populations = ctx.read<population_ambient>().data();
     const bool has_population = ctx.read<population_ambient>().size() == n;
+    // Rebollo 2006: a plant on the LoDF rung without a slot (resources/lodf_slots.h) is drawn
+    // as mesh_full, its foliage at full detail; as a partner too.
+    // (A world built without the LoDF slots, as unit tests build them, has none.)
+    static const lodf_slots k_no_slots{};
+    const lodf_slots* found_slots = ctx.try_resource<lodf_slots>();
+    const lodf_slots& slots = found_slots ? *found_slots : k_no_slots;
+    const auto slotted = [&](std::size_t plant, lod_state lod, fade_alpha& fade) {
+        const bool has_slot = plant < slots.slot_of_plant.size() && slots.slot_of_plant[plant] != k_no_lodf_slot;
+        if (!has_slot && lod.current == representation::lodf) lod.current = representation::mesh_full;
+        if (!has_slot && fade.partner == representation::lodf) fade.partner = representation::mesh_full;
+        return lod;
+    };
     auto classify_cell = [&](const octree_cell& cell, const cell_prefix& prefix) {
         const std::size_t k = cell.plant;
         const part_range parts = parts_of(library.cells[cell.cell]);
@@ -281,12 +296,16 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     eco_plants.assign(chunks, 0);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
+        std::size_t plant = begin;
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
+                                          const plant_instance& p, const lod_state& drawn, const fade_alpha& faded,
                                           const point_prefix& prefix) {
+            const std::size_t i = plant++;
             // Most of a big scene is culled: skip those plants before touching their other
             // components (reading plant_instance for the species cost a cache line per plant).
-            if (lod.current == representation::none) return;
+            if (drawn.current == representation::none) return;
+            fade_alpha fade = faded;
+            const lod_state lod = slotted(i, drawn, fade);
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
             count += builder.classify(t, b, p, lod, fade, prefix, parts_of(species)).items();
             // Counted as the meshes are (by their items): the primary and a drawn partner.
@@ -315,10 +334,12 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         draw_item* out = list.items.data() + offsets[c];
         std::uint32_t index = std::uint32_t(begin);
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                          const plant_instance& p, const lod_state& lod, const fade_alpha& fade,
+                                          const plant_instance& p, const lod_state& drawn, const fade_alpha& faded,
                                           const point_prefix& prefix) {
             const std::uint32_t plant = index++;
-            if (lod.current == representation::none) return;
+            if (drawn.current == representation::none) return;
+            fade_alpha fade = faded;
+            const lod_state lod = slotted(plant, drawn, fade);
             const species_entry& species = library.species[static_cast<std::size_t>(p.species)];
             out = write_items(builder.classify(t, b, p, lod, fade, prefix, parts_of(species)), plant, out);
         });
@@ -374,6 +395,28 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         }
     });
     build_batches(list, library);
+    // The LoDF slots' records: a plant on the rung is drawn whole, a partner faded (its trunk's
+    // items above carry the same fade).
+    list.lodf_instances.resize(slots.slots.size());
+    list.lodf_plants.resize(slots.slots.size());
+    const cluster_changes* clusters = ctx.read<cluster_changes>().data();
+    for (std::size_t s = 0; s < slots.slots.size(); ++s) {
+        const lodf_slot& slot = slots.slots[s];
+        instance_gpu& g = list.lodf_instances[s];
+        g = instance_gpu{};
+        list.lodf_plants[s] = slot.plant == k_no_lodf_slot ? k_no_draw_item : slot.plant;
+        if (slot.plant == k_no_lodf_slot) {
+            g.scale = 0.0f;
+            continue;
+        }
+        const bool partner = lods[slot.plant].current != representation::lodf;
+        g = make_instance(cam, transforms[slot.plant], instances[slot.plant], fades[slot.plant], partner, library);
+        if (has_population) g.population = populations[slot.plant];
+        if (!lods[slot.plant].visible) continue;
+        const lodf_structure& lodf = library.lodf[slot.species];
+        for (std::uint32_t c = 0; c < lodf.clusters.size(); ++c)
+            list.triangles += active_range(lodf, c, clusters[s * slots.clusters_per_slot + c]).index_count / 3;
+    }
     for (const std::uint32_t c : point_plants)
         list.instances_by_representation[std::size_t(representation::points)] += c;
     for (const std::uint32_t c : eco_plants)

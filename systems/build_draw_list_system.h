@@ -14,6 +14,7 @@
 // instanced batches with their camera-relative instance records.
 #include "components/population_ambient.h"
 #include "components/bounds.h"
+#include "components/cluster_changes.h"
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -25,6 +26,7 @@
 #include "resources/draw_list.h"
 #include "lighting/shadow_cascades.h"
 #include "resources/lod_policy.h"
+#include "resources/lodf_slots.h"
 #include "systems/aggregate_eco_tiles_system.h"
 #include "resources/scene_assets.h"
 
@@ -45,7 +47,7 @@ cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
 struct build_draw_list_system {
     static constexpr std::string_view k_name = "build_draw_list";
     static constexpr ecs::phase k_phase = ecs::phase::build;
-    using reads = ecs::reads<camera, world_transform, bounds, plant_instance, lod_state, point_prefix, octree_cell,
+    using reads = ecs::reads<camera, cluster_changes, lodf_slots, world_transform, bounds, plant_instance, lod_state, point_prefix, octree_cell,
                              cell_prefix, fade_alpha, species_library, cascade_set, lod_policy, primitive_costs,
                              tile_point_sets, tile_point_draws, population_ambient>;
     using writes = ecs::writes<draw_list>;

@@ -28,7 +28,7 @@ std::size_t draw_commands::bytes_needed(const draw_list& draws) const {
 
 template <typename Emit>
 void draw_commands::for_each_command(const frame_view& view, const mesh_pool& meshes,
-                                     int cascade_count, Emit&& emit) const {
+                                     int cascade_count, std::uint32_t instance_base, Emit&& emit) const {
     // `primitives` > 0 draws that many primitives from the start of each submesh (a prefix,
     // Deussen 2002 §5.3); 0 draws them all.
     auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count,
@@ -45,11 +45,11 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     const draw_list& draws = *view.draws;
     for (const auto& batch : draws.batches) {
         if (is_shadow_pass(batch.pass) && int(batch.pass) >= cascade_count) continue;
-        add(batch.pass, meshes.get(batch.mesh), batch.first_instance, batch.instance_count,
+        add(batch.pass, meshes.get(batch.mesh), instance_base + batch.first_instance, batch.instance_count,
             batch.count);
     }
     // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
-    const auto terrain_instance = std::uint32_t(draws.instances.size());
+    const auto terrain_instance = instance_base + std::uint32_t(draws.instances.size());
     const camera& cam = *view.view_camera;
     const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
     std::array<cascade_bounds, k_max_cascades> cascades{};
@@ -69,10 +69,10 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
 }
 
 std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& meshes,
-                                   int cascade_count, frame_ring& ring) {
+                                   int cascade_count, frame_ring& ring, std::uint32_t instance_base) {
     // Sweep 1: how many commands each group holds.
     m_written.fill(0);
-    for_each_command(view, meshes, cascade_count,
+    for_each_command(view, meshes, cascade_count, instance_base,
                      [&](std::size_t group, const indirect_command&) { ++m_written[group]; });
     m_command_count = 0;
     for (std::uint32_t n : m_written) m_command_count += n;
@@ -89,7 +89,7 @@ std::uint64_t draw_commands::write(const frame_view& view, const mesh_pool& mesh
     m_written.fill(0);
     auto* base = static_cast<std::byte*>(block.data);
     for_each_command(
-        view, meshes, cascade_count, [&](std::size_t group, const indirect_command& command) {
+        view, meshes, cascade_count, instance_base, [&](std::size_t group, const indirect_command& command) {
             const command_range& range =
                 m_commands[group / k_groups_per_pass][group % k_groups_per_pass];
             const std::size_t at = range.offset - std::size_t(block.offset) +

@@ -55,8 +55,10 @@ public:
     std::size_t bytes_needed(const draw_list& draws) const;
     // Groups the draw list's batches and the visible terrain tiles into the ring; returns the
     // bytes written. Shadow batches of cascades past `cascade_count` are dropped.
+    // `instance_base`: records before the draw list's (the LoDF slots'), so batch instances and
+    // the terrain's are that many further on.
     std::uint64_t write(const frame_view& view, const mesh_pool& meshes, int cascade_count,
-                        frame_ring& ring);
+                        frame_ring& ring, std::uint32_t instance_base = 0);
 
     const pass_commands& pass(render_pass p) const { return m_commands[std::size_t(p)]; }
     std::uint32_t command_count() const { return m_command_count; }
@@ -77,7 +79,7 @@ private:
     // Calls emit(group, command) for every command of the frame, in draw-list order.
     template <typename Emit>
     void for_each_command(const frame_view& view, const mesh_pool& meshes, int cascade_count,
-                          Emit&& emit) const;
+                          std::uint32_t instance_base, Emit&& emit) const;
 
     std::vector<terrain_tile> m_terrain_tiles;
     std::array<pass_commands, k_passes> m_commands{};

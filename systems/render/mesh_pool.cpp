@@ -121,22 +121,26 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
     return std::uint16_t(m_meshes.size() - 1);
 }
 
-std::uint16_t mesh_pool::add_indices(std::uint16_t vertices_of, std::span<const std::uint32_t> indices,
-                                     material_kind material, lighting_variant lighting) {
+std::uint16_t mesh_pool::add_indices(std::uint16_t vertices_of, const mesh_data& mesh, lighting_variant lighting) {
     if (m_meshes.size() >= std::numeric_limits<std::uint16_t>::max())
         throw std::runtime_error("mesh_pool: more than 65535 meshes");
     const gpu_mesh& source = m_meshes.at(vertices_of);
-    if (source.submeshes.empty() || source.primitive != primitive_kind::triangles)
-        throw std::logic_error("mesh_pool: an index list needs a triangle mesh's vertices");
+    if (source.submeshes.empty() || source.primitive != primitive_kind::triangles || !mesh.vertices.empty() ||
+        mesh.primitive != primitive_kind::triangles)
+        throw std::logic_error("mesh_pool: an index list goes over a triangle mesh's vertices and has none");
     const std::int32_t base_vertex = source.submeshes[0].base_vertex;
-    reserve(m_vertex_count, m_index_count + indices.size());
-    const auto index_bytes = GLsizeiptr(indices.size() * sizeof(std::uint32_t));
-    glNamedBufferSubData(m_indices.id(), GLintptr(m_index_count * sizeof(std::uint32_t)), index_bytes, indices.data());
+    reserve(m_vertex_count, m_index_count + mesh.indices.size());
+    const auto index_bytes = GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t));
+    glNamedBufferSubData(m_indices.id(), GLintptr(m_index_count * sizeof(std::uint32_t)), index_bytes,
+                         mesh.indices.data());
     m_uploaded_bytes += std::uint64_t(index_bytes);
     gpu_mesh gpu;
-    gpu.submeshes.push_back({std::uint32_t(m_index_count), std::uint32_t(indices.size()), base_vertex, material, lighting});
-    gpu.triangle_count = std::uint32_t(indices.size() / 3);
-    m_index_count += indices.size();
+    for (const submesh& sub : mesh.submeshes) {
+        gpu.submeshes.push_back(
+            {std::uint32_t(m_index_count + sub.first_index), sub.index_count, base_vertex, sub.material, lighting});
+        gpu.triangle_count += sub.index_count / 3;
+    }
+    m_index_count += mesh.indices.size();
     m_meshes.push_back(std::move(gpu));
     return std::uint16_t(m_meshes.size() - 1);
 }

@@ -4,7 +4,6 @@
 // parallel to the vertices, streams each vertex's SH transfer (models/mesh.h vertex_transfer);
 // it exists once some mesh has transfer, and vertices without any read zeros from it.
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "models/mesh.h"
@@ -34,11 +33,11 @@ public:
     // `lighting` chooses the shader its submeshes are drawn with; sh needs mesh.transfer.
     std::uint16_t add(const mesh_data& mesh,
                       lighting_variant lighting = lighting_variant::normal_mapped);
-    // Uploads an index list over the vertices of mesh `vertices_of` (no vertex of its own): one
-    // triangle submesh of `material`. LoDF's foliage (Rebollo 2006 Eq. 3, |V^r| = V) draws every
-    // level from the full mesh's vertices this way.
-    std::uint16_t add_indices(std::uint16_t vertices_of, std::span<const std::uint32_t> indices,
-                              material_kind material, lighting_variant lighting);
+    // Uploads the indices and submeshes of `mesh` (a triangle list without vertices of its own)
+    // over the vertices of mesh `vertices_of`. LoDF's trunk and foliage (Rebollo 2006 Eq. 3,
+    // |V^r| = V) draw every level from the full mesh's vertices this way.
+    std::uint16_t add_indices(std::uint16_t vertices_of, const mesh_data& mesh,
+                              lighting_variant lighting = lighting_variant::normal_mapped);
     const gpu_mesh& get(std::uint16_t id) const { return m_meshes.at(id); }
     std::size_t size() const { return m_meshes.size(); }
     GLuint vertex_array() const { return m_vao.id(); }

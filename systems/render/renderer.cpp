@@ -56,11 +56,20 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         const lighting_variant lighting = i < assets.library.meshes.size()
                                               ? assets.library.meshes[i].lighting
                                               : lighting_variant::normal_mapped;
-        std::uint16_t id = m_meshes.add(assets.meshes[i], lighting);
+        const std::int32_t vertices_of = i < assets.library.meshes.size() ? assets.library.meshes[i].vertices_of : -1;
+        std::uint16_t id = vertices_of >= 0 ? m_meshes.add_indices(std::uint16_t(vertices_of), assets.meshes[i], lighting)
+                                            : m_meshes.add(assets.meshes[i], lighting);
         if (id != i) throw std::logic_error("renderer: mesh ids must follow scene_assets order");
         m_programs.prepare(m_meshes.get(id));
     }
     setup_instance_attributes(m_meshes.vertex_array());
+    std::uint32_t lodf_clusters = 0;
+    for (const species_entry& species : assets.library.species) lodf_clusters = std::max(lodf_clusters, species.lodf_clusters);
+    if (lodf_clusters > 0) {
+        m_lodf = std::make_unique<lodf_commands>(k_lodf_slots, lodf_clusters);
+        m_lodf_species.assign(k_lodf_slots, k_no_lodf_slot);
+        m_lodf_draw.set_commands(m_lodf.get());
+    }
     if (settings.shadows)
         m_shadow_maps =
             std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
@@ -136,16 +145,21 @@ void renderer::write_uniforms(const frame_view& view) {
 }
 
 void renderer::write_instances(const frame_view& view) {
+    // The LoDF slots' records first (their commands name them by slot), then the items', then
+    // the terrain's (resources/draw_list.h instance_of_id).
+    const auto& slots = view.draws->lodf_instances;
     const auto& instances = view.draws->instances;
-    const std::size_t bytes = (instances.size() + 1) * sizeof(instance_gpu);
+    const std::size_t bytes = (slots.size() + instances.size() + 1) * sizeof(instance_gpu);
     auto block = m_ring.allocate(bytes, 256);
+    auto* out = static_cast<std::byte*>(block.data);
     // An empty list's data() may be null, and memcpy from null is undefined even for 0 bytes.
-    if (!instances.empty())
-        std::memcpy(block.data, instances.data(), instances.size() * sizeof(instance_gpu));
+    if (!slots.empty()) std::memcpy(out, slots.data(), slots.size() * sizeof(instance_gpu));
+    out += slots.size() * sizeof(instance_gpu);
+    if (!instances.empty()) std::memcpy(out, instances.data(), instances.size() * sizeof(instance_gpu));
+    out += instances.size() * sizeof(instance_gpu);
     instance_gpu terrain;
     terrain.position = view.terrain_position;
-    std::memcpy(static_cast<std::byte*>(block.data) + instances.size() * sizeof(instance_gpu),
-                &terrain, sizeof(terrain));
+    std::memcpy(out, &terrain, sizeof(terrain));
     glVertexArrayVertexBuffer(m_meshes.vertex_array(), k_instance_binding, m_ring.buffer(),
                               block.offset, sizeof(instance_gpu));
     m_frame_upload_bytes += bytes;
@@ -159,22 +173,50 @@ void renderer::render(const frame_view& view) {
         m_shadow_maps ? std::min(view.cascades->count, m_shadow_maps->cascades()) : 0;
     const draw_list& draws = *view.draws;
     const std::size_t bytes_needed = sizeof(frame_uniforms) + 512 +
-                                     (draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
+                                     (draws.lodf_instances.size() + draws.instances.size() + 1) * sizeof(instance_gpu) + 256 +
                                      m_commands.bytes_needed(draws) + 16 * 16;
     m_ring.begin_frame(bytes_needed);
     m_frame_upload_bytes = m_sky.update(*view.sky, *view.sun_light);
     write_uniforms(view);
     write_instances(view);
-    m_frame_upload_bytes += m_commands.write(view, m_meshes, m_context.cascade_count, m_ring);
+    m_frame_upload_bytes +=
+        m_commands.write(view, m_meshes, m_context.cascade_count, m_ring, std::uint32_t(draws.lodf_instances.size()));
+    update_lodf(view);
     m_record_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     glBindVertexArray(m_meshes.vertex_array());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, m_ring.buffer());
+    m_context.frame_indirect_buffer = m_ring.buffer();
     glBindBufferRange(GL_UNIFORM_BUFFER, 0, m_ring.buffer(), GLintptr(m_uniform_offset),
                       sizeof(frame_uniforms));
     for (frame_pass* pass : m_passes) pass->draw(m_context);
     m_ring.end_frame();
+}
+
+void renderer::update_lodf(const frame_view& view) {
+    m_lodf_bytes = 0;
+    if (!m_lodf || !view.lodf || !view.library) return;
+    const lodf_slots& slots = *view.lodf;
+    for (std::uint32_t s = 0; s < slots.slots.size() && s < m_lodf_species.size(); ++s) {
+        const lodf_slot& slot = slots.slots[s];
+        if (slot.plant == k_no_lodf_slot) {
+            if (m_lodf_species[s] != k_no_lodf_slot) m_lodf_bytes += m_lodf->release(s);
+            m_lodf_species[s] = k_no_lodf_slot;
+            continue;
+        }
+        const lodf_structure& lodf = view.library->lodf[slot.species];
+        const std::span<const cluster_changes> clusters(view.lodf_clusters + std::size_t(s) * slots.clusters_per_slot,
+                                                        lodf.clusters.size());
+        if (slot.taken || m_lodf_species[s] != slot.species) {
+            const gpu_submesh& foliage = m_meshes.get(view.library->species[slot.species].mesh_lodf_foliage).submeshes[0];
+            m_lodf_bytes += m_lodf->assign(s, lodf, foliage, s, clusters);
+            m_lodf_species[s] = slot.species;
+        } else {
+            m_lodf_bytes += m_lodf->update(s, clusters);
+        }
+    }
+    m_frame_upload_bytes += m_lodf_bytes;
 }
 
 frame_stats renderer::finish() {
@@ -190,6 +232,7 @@ frame_stats renderer::finish() {
     stats.gpu_pass_ms = m_timer.read();
     for (double ms : stats.gpu_pass_ms) stats.gpu_ms += ms;
     stats.upload_bytes = m_frame_upload_bytes;
+    stats.lodf_command_bytes = m_lodf_bytes;
     stats.record_ms = m_record_ms;
     stats.draw_calls = m_context.draw_calls;
     stats.indirect_commands = m_commands.command_count();

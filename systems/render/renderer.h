@@ -20,13 +20,16 @@
 #include "models/image/image.h"
 #include "resources/draw_list.h"
 #include "resources/frame_stats.h"
+#include "resources/lodf_slots.h"
 #include "resources/scene_assets.h"
 #include "systems/render/draw_commands.h"
 #include "systems/render/frame_ring.h"
+#include "systems/render/lodf_commands.h"
 #include "systems/render/mesh_pool.h"
 #include "systems/render/pass_timer.h"
 #include "systems/render/passes/cloud_draw.h"
 #include "systems/render/passes/edge_pass.h"
+#include "systems/render/passes/lodf_draw.h"
 #include "systems/render/passes/mesh_draw.h"
 #include "systems/render/passes/pass_context.h"
 #include "systems/render/passes/sample_draw.h"
@@ -86,6 +89,12 @@ struct frame_view {
     bool soft_splats = false;
     float soft_splat_px = 2.0f;
     float soft_splat_alpha = 1.0f;
+    // Rebollo 2006: the plants on the LoDF rung (resources/lodf_slots.h), their slots' cluster
+    // counters (the cluster_changes table, slot by slot) and the species' structures. Null
+    // when no ladder reaches LoDF.
+    const lodf_slots* lodf = nullptr;
+    const cluster_changes* lodf_clusters = nullptr;
+    const species_library* library = nullptr;
 
     // Sets the point/line fields above from what the viewer asks; view_camera must be set.
     void set_samples(const point_line_quality& quality);
@@ -121,6 +130,8 @@ public:
 private:
     void write_uniforms(const frame_view& view);
     void write_instances(const frame_view& view);
+    // Rewrites the LoDF slots' commands whose clusters changed (systems/render/lodf_commands.h).
+    void update_lodf(const frame_view& view);
 
     renderer_settings m_settings;
     mesh_pool m_meshes;
@@ -133,12 +144,17 @@ private:
     sky_texture m_sky;
     draw_commands m_commands;
     float m_ground_uv_scale = 4.0f;
+    // Rebollo 2006: the LoDF slots' indirect commands, when a species has LoDF foliage; the
+    // species each slot's commands were written for (k_no_lodf_slot: none).
+    std::unique_ptr<lodf_commands> m_lodf;
+    std::vector<std::uint32_t> m_lodf_species;
 
     // The representations, in the order the surface passes draw them (passes/pass_context.h).
     mesh_draw m_mesh_draw;
     cloud_draw m_cloud_draw;
     sample_draw m_sample_draw;
-    std::array<const surface_draw*, 3> m_surface_draws{&m_mesh_draw, &m_cloud_draw, &m_sample_draw};
+    lodf_draw m_lodf_draw;
+    std::array<const surface_draw*, 4> m_surface_draws{&m_mesh_draw, &m_cloud_draw, &m_sample_draw, &m_lodf_draw};
     // The frame's passes, in order.
     shadow_cascade_pass m_shadow_pass{m_surface_draws};
     opaque_pass m_opaque_pass{m_surface_draws};
@@ -151,6 +167,7 @@ private:
 
     std::size_t m_uniform_offset = 0;
     std::uint64_t m_frame_upload_bytes = 0;
+    std::uint64_t m_lodf_bytes = 0;  // this frame's LoDF command uploads
     std::uint64_t m_static_upload_bytes = 0;
     double m_record_ms = 0.0;
 };

@@ -18,6 +18,11 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
     view.terrain_position = glm::vec3(device.terrain_origin - cam.position);
     view.time_s = float(ctx.resource<playback_clock>().time_s());
     view.set_samples(ctx.resource<lod_policy>().points);
+    if (const lodf_slots* slots = ctx.try_resource<lodf_slots>(); slots && !slots->slots.empty()) {
+        view.lodf = slots;
+        view.lodf_clusters = ctx.read<cluster_changes>().data();
+        view.library = &ctx.resource<species_library>();
+    }
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

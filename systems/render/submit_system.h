@@ -4,6 +4,7 @@
 // showed of each plant (resources/seen_pixels.h). A main-thread system: it runs on the thread that owns
 // the GL context, after every parallel system of the frame has finished.
 #include "components/camera.h"
+#include "components/cluster_changes.h"
 #include "components/environment.h"
 #include "components/sun.h"
 #include "ecs/system.h"
@@ -11,6 +12,7 @@
 #include "resources/frame_stats.h"
 #include "lighting/shadow_cascades.h"
 #include "resources/lod_policy.h"
+#include "resources/lodf_slots.h"
 #include "resources/playback.h"
 #include "resources/seen_pixels.h"
 #include "systems/render/renderer.h"
@@ -27,7 +29,8 @@ struct submit_system {
     static constexpr std::string_view k_name = "submit";
     static constexpr ecs::phase k_phase = ecs::phase::submit;
     static constexpr bool k_main_thread = true;
-    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy>;
+    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy, lodf_slots,
+                             cluster_changes, species_library>;
     using writes = ecs::writes<render_device, frame_stats, seen_pixels>;
     static void run(ecs::system_context<submit_system>& ctx);
 };

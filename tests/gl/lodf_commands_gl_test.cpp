@@ -64,7 +64,10 @@ TEST(lodf_commands_gl, a_change_uploads_only_the_changed_clusters_and_draws_that
     render::mesh_pool pool;
     const std::uint16_t full = pool.add(plant.lods[0]);
     const std::uint64_t vertex_bytes_before = pool.uploaded_bytes();
-    const std::uint16_t foliage = pool.add_indices(full, lodf.indices, material_kind::leaf, lighting_variant::normal_mapped);
+    mesh_data foliage_list;
+    foliage_list.indices = lodf.indices;
+    foliage_list.submeshes = {{0, std::uint32_t(lodf.indices.size()), material_kind::leaf}};
+    const std::uint16_t foliage = pool.add_indices(full, foliage_list);
     EXPECT_EQ(pool.uploaded_bytes() - vertex_bytes_before, lodf.indices.size() * 4) << "indices only: Eq. 3, no vertices";
     lodf_commands commands(3, g + 2);
     std::vector<cluster_changes> clusters(g);

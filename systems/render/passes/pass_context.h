@@ -36,6 +36,8 @@ struct pass_context {
     const shadow_maps* shadows = nullptr;  // null when the renderer draws no shadows
     pass_timer* timer = nullptr;
     int cascade_count = 0;         // cascades drawn this frame
+    GLuint frame_indirect_buffer = 0;  // the ring the frame's commands are in: a draw that binds
+                                       // another indirect buffer binds this one back
     std::uint32_t draw_calls = 0;  // counted by draw_group and the screen passes
 
     // One glMultiDrawElementsIndirect over a command group (nothing when it is empty).
