@@ -139,18 +139,15 @@ bench_configuration_spec ladder_configuration(double factor = 1.0) {
     return c;
 }
 
-// Rebollo 2006 as a rung: the papers' ladder with LoDF in the reduced mesh's place, so a near
-// plant's foliage thins leaf by leaf from the full mesh down to where the billboard cloud takes
-// over, instead of jumping to the reduced mesh.
+// Rebollo 2006 as a rung: each species' ladder with LoDF in the reduced mesh's place, so a near
+// plant's foliage thins leaf by leaf from the full mesh down to where the next rung takes over,
+// instead of jumping to the reduced mesh.
 bench_configuration_spec ladder_lodf() {
     bench_configuration_spec c = ladder_configuration();
     c.name = "ladder_lodf";
-    c.description = "the papers' ladder with LoDF (Rebollo 2006) for the reduced mesh: full mesh, LoDF foliage "
-                    "thinned continuously below 400 px, billboard cloud, points and lines, crossed billboard";
-    ladder l = papers_ladder();
-    for (std::size_t i = 0; i < l.count; ++i)
-        if (l.rungs[i] == representation::mesh_reduced) l.rungs[i] = representation::lodf;
-    c.options.policy.every_species = l;
+    c.description = "each species' ladder with LoDF (Rebollo 2006) for its reduced mesh: the foliage thinned "
+                    "continuously from the full mesh to the next rung";
+    c.options.policy.lodf_for_reduced = true;
     return c;
 }
 

@@ -125,13 +125,15 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
             policy.points = {s.lod.sample_distance_px, s.lod.splat_factor, true,
                              s.lod.splats == "opaque" ? splat_style::opaque : splat_style::soft,
                              s.lod.fog_weighted_samples};
-        if (policy.ladders.empty() && policy.every_species.count > 0)
-            policy.ladders.assign(s.species.size(), policy.every_species);
         if (policy.ladders.empty())
             for (const species_settings& species : s.species)
                 policy.ladders.push_back(!species.ladder.empty() ? ladder_of(species.ladder)
                                          : !s.lod.ladder.empty() ? ladder_of(s.lod.ladder)
                                                                  : papers_ladder());
+        if (policy.lodf_for_reduced)
+            for (ladder& l : policy.ladders)
+                for (std::size_t i = 0; i < l.count; ++i)
+                    if (l.rungs[i] == representation::mesh_reduced) l.rungs[i] = representation::lodf;
         if (policy.ladders.size() != s.species.size())
             throw std::invalid_argument("a ladder policy needs one ladder per species: scenario '" + s.name +
                                         "' has " + std::to_string(s.species.size()) + " species, the policy " +

@@ -10,16 +10,7 @@
 namespace sylva {
 
 mesh_data leaf_shrink_mesh(const mesh_data& full, std::uint32_t leaves, std::uint64_t seed) {
-    mesh_data out;
-    out.vertices = full.vertices;
-    out.bounds_min = full.bounds_min;
-    out.bounds_max = full.bounds_max;
-    for (const submesh& s : full.submeshes) {
-        if (s.material == material_kind::leaf) continue;
-        out.submeshes.push_back({std::uint32_t(out.indices.size()), s.index_count, s.material});
-        out.indices.insert(out.indices.end(), full.indices.begin() + s.first_index,
-                           full.indices.begin() + s.first_index + s.index_count);
-    }
+    mesh_data out = non_foliage_part(full);
     const std::vector<foliage_leaf> all = find_foliage_leaves(full);
     const auto total = std::uint32_t(all.size());
     if (total == 0) return out;

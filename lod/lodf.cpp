@@ -1,5 +1,7 @@
 #include "lod/lodf.h"
 
+#include "models/bake/lodf_leaves.h"
+
 #include <algorithm>
 
 namespace sylva {
@@ -67,16 +69,7 @@ std::uint32_t collapses_for_leaves(const lodf_structure& lodf, std::uint32_t lea
 }
 
 mesh_data lodf_mesh(const mesh_data& full, const lodf_model& model, std::uint32_t leaves) {
-    mesh_data out;
-    out.vertices = full.vertices;
-    out.bounds_min = full.bounds_min;
-    out.bounds_max = full.bounds_max;
-    for (const submesh& s : full.submeshes) {
-        if (s.material == material_kind::leaf) continue;
-        out.submeshes.push_back({std::uint32_t(out.indices.size()), s.index_count, s.material});
-        out.indices.insert(out.indices.end(), full.indices.begin() + s.first_index,
-                           full.indices.begin() + s.first_index + s.index_count);
-    }
+    mesh_data out = non_foliage_part(full);
     const lodf_structure& f = model.structure;
     if (f.leaf_count == 0) return out;
     std::vector<cluster_changes> clusters(f.clusters.size());

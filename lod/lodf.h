@@ -31,6 +31,18 @@ std::uint32_t retarget_lodf(const lodf_structure& lodf, std::span<cluster_change
                             std::uint32_t& init_position, std::uint32_t target,
                             std::vector<std::uint32_t>& changed);
 
+// glMultiDrawElementsIndirect's command (GL 4.3 §10.4): what a cluster's draw is, and what LoDF
+// uploads per changed cluster (systems/render/lodf_commands.h).
+struct lodf_draw_command {
+    std::uint32_t count = 0;
+    std::uint32_t instance_count = 0;
+    std::uint32_t first_index = 0;
+    std::int32_t base_vertex = 0;
+    std::uint32_t base_instance = 0;
+    bool operator==(const lodf_draw_command&) const = default;
+};
+static_assert(sizeof(lodf_draw_command) == 20);
+
 // The index range a cluster draws: its active leaves' triangles.
 struct lodf_range {
     std::uint32_t first_index = 0;

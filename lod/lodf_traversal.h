@@ -11,19 +11,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "lod/lodf.h"
 #include "models/bake/lodf_bake.h"
 
 namespace sylva {
-
-// glMultiDrawElementsIndirect's command (GL 4.3 §10.4): what LoDF uploads per changed cluster.
-struct lodf_draw_command {
-    std::uint32_t count = 0;
-    std::uint32_t instance_count = 1;
-    std::uint32_t first_index = 0;
-    std::int32_t base_vertex = 0;
-    std::uint32_t base_instance = 0;
-};
-static_assert(sizeof(lodf_draw_command) == 20);
 
 struct traversal_change {
     std::uint32_t leaves = 0;          // drawn after the change

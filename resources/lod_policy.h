@@ -43,9 +43,9 @@ struct lod_policy {
     // The ladder of each species, by species index (ladder only; the player fills it from the
     // scenario, the papers' ladder where the scenario names none).
     std::vector<ladder> ladders{};
-    // When set (count > 0) and `ladders` is empty, every species gets this ladder instead of its
-    // own: the bench compares ladders that no scenario names (ladder_lodf).
-    ladder every_species{};
+    // Every ladder's mesh_reduced rung drawn as LoDF (Rebollo 2006) instead: the bench's
+    // ladder_lodf, the scenario's own ladders with the foliage thinned continuously there.
+    bool lodf_for_reduced = false;
     // Multiplies every projected size the ladders see (ladder only): below 1 every rung switches
     // nearer, so the bench sweeps a ladder's cost without moving the draw distances, which
     // lod_scale would.

@@ -22,6 +22,7 @@
 #include "components/sun.h"
 #include "components/transform.h"
 #include "io/input_file.h"
+#include "models/bake/lodf_leaves.h"
 #include "models/terrain/density.h"
 #include "models/image/image_ops.h"
 #include "models/terrain/placement.h"
@@ -232,16 +233,11 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     // Rebollo 2006: LoDF's trunk and foliage as index lists over the full mesh's vertices.
     mesh_data lodf_bark, lodf_foliage;
     if (lodf.structure.leaf_count > 0) {
-        for (const submesh& sub : model.lods[0].submeshes) {
-            if (sub.material == material_kind::leaf) continue;
-            lodf_bark.submeshes.push_back({std::uint32_t(lodf_bark.indices.size()), sub.index_count, sub.material});
-            lodf_bark.indices.insert(lodf_bark.indices.end(), model.lods[0].indices.begin() + sub.first_index,
-                                     model.lods[0].indices.begin() + sub.first_index + sub.index_count);
-        }
+        lodf_bark = non_foliage_part(model.lods[0], false);
         lodf_foliage.indices = std::move(lodf.indices);
         lodf_foliage.submeshes.push_back({0, std::uint32_t(lodf_foliage.indices.size()), material_kind::leaf});
-        lodf_bark.bounds_min = lodf_foliage.bounds_min = model.lods[0].bounds_min;
-        lodf_bark.bounds_max = lodf_foliage.bounds_max = model.lods[0].bounds_max;
+        lodf_foliage.bounds_min = model.lods[0].bounds_min;
+        lodf_foliage.bounds_max = model.lods[0].bounds_max;
     }
     add_mesh(assets, std::move(model.lods[0]), representation::mesh_full, entry.mesh_full, entry.triangles_full);
     if (lodf.structure.leaf_count > 0) {

@@ -87,6 +87,20 @@ std::unordered_map<std::uint32_t, std::uint32_t> depth_first_ranks(const mesh_da
 
 }  // namespace
 
+mesh_data non_foliage_part(const mesh_data& mesh, bool keep_vertices) {
+    mesh_data out;
+    if (keep_vertices) out.vertices = mesh.vertices;
+    out.bounds_min = mesh.bounds_min;
+    out.bounds_max = mesh.bounds_max;
+    for (const submesh& s : mesh.submeshes) {
+        if (s.material == material_kind::leaf) continue;
+        out.submeshes.push_back({std::uint32_t(out.indices.size()), s.index_count, s.material});
+        out.indices.insert(out.indices.end(), mesh.indices.begin() + s.first_index,
+                           mesh.indices.begin() + s.first_index + s.index_count);
+    }
+    return out;
+}
+
 std::vector<foliage_leaf> find_foliage_leaves(const mesh_data& mesh) {
     vertex_sets sets(mesh.vertices.size());
     std::vector<std::uint32_t> triangles;

@@ -24,6 +24,11 @@ struct foliage_leaf {
     std::uint32_t branch = 0;              // the stem carrying it (triangle_part::branch), else 0
 };
 
+// `mesh` without its foliage: every submesh but the material-leaf ones (indices copied, submeshes
+// rebased), the vertices too when `keep_vertices`, else none (an index list over the same
+// vertices, mesh_pool::add_indices); bounds kept, per-triangle parts and leaf records dropped.
+mesh_data non_foliage_part(const mesh_data& mesh, bool keep_vertices = true);
+
 // The connected pieces (by shared vertex index) of the triangles of every material-leaf submesh,
 // in the order of their first triangle.
 std::vector<foliage_leaf> find_foliage_leaves(const mesh_data& mesh);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "components/cluster_changes.h"
+#include "lod/lodf.h"
 #include "models/bake/lodf_structure.h"
 #include "systems/render/gl_objects.h"
 #include "systems/render/mesh_pool.h"
@@ -41,16 +42,7 @@ public:
     std::uint32_t slot_commands(std::uint32_t slot) const { return m_slots[slot].clusters; }
     std::uint64_t uploaded_bytes() const { return m_uploaded; }
 
-    // glMultiDrawElementsIndirect's command layout (GL 4.3 §10.4).
-    struct command {
-        std::uint32_t count = 0;
-        std::uint32_t instance_count = 0;
-        std::uint32_t first_index = 0;
-        std::int32_t base_vertex = 0;
-        std::uint32_t base_instance = 0;
-        bool operator==(const command&) const = default;
-    };
-    static_assert(sizeof(command) == 20);
+    using command = lodf_draw_command;  // lod/lodf.h
     // What the CPU holds for the slot (tests compare it with the buffer).
     std::span<const command> slot_mirror(std::uint32_t slot) const;
 

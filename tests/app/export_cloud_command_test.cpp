@@ -22,21 +22,7 @@ using result = test::command_result;
 
 result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
-std::string bytes_of(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The validator's report, or nothing when node or the package is missing.
-std::optional<nlohmann::json> validate(const fs::path& file) {
-    const fs::path tools = fs::path(SYLVA_SOURCE_DIR) / "tests" / "tools";
-    if (test::run_command("node --version").exit_code != 0 || !fs::exists(tools / "node_modules" / "gltf-validator"))
-        return std::nullopt;
-    const result r = test::run_command("node " + (tools / "validate_gltf.mjs").string() + " " + file.string());
-    const auto report = nlohmann::json::parse(r.output, nullptr, false);
-    if (report.is_discarded()) return nlohmann::json{{"unparsed", r.output}};
-    return report;
-}
+using test::bytes_of;
 
 TEST(export_cloud_command, exports_a_preset_and_reports_the_bake) {
     const fs::path dir = test::fresh_temp_dir("export_cloud_preset");
@@ -46,7 +32,7 @@ TEST(export_cloud_command, exports_a_preset_and_reports_the_bake) {
     ASSERT_TRUE(fs::exists(out));
     for (const char* what : {"clusters (hierarchy", "billboards", "atlas 512 x 256", "min-volume/PCA", "bake"})
         EXPECT_NE(r.output.find(what), std::string::npos) << what << " in " << r.output;
-    if (const auto report = validate(out)) {
+    if (const auto report = test::validate_gltf(out)) {
         EXPECT_EQ((*report)["issues"]["numErrors"], 0) << report->dump(2);
         EXPECT_EQ((*report)["info"]["materialCount"], 1);
     }
@@ -64,7 +50,7 @@ TEST(export_cloud_command, exports_an_imported_glb_with_the_geometric_clustering
     const result r = run("export-cloud " + plant.string() + " --texture-size 64 --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("clusters (geometric)"), std::string::npos) << r.output;
-    if (const auto report = validate(out)) {
+    if (const auto report = test::validate_gltf(out)) {
         EXPECT_EQ((*report)["issues"]["numErrors"], 0) << report->dump(2);
     }
     fs::remove_all(dir);

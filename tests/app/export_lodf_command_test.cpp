@@ -22,20 +22,7 @@ using result = test::command_result;
 
 result run(const std::string& arguments) { return test::run_sylva(arguments); }
 
-std::string bytes_of(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::optional<nlohmann::json> validate(const fs::path& file) {
-    const fs::path tools = fs::path(SYLVA_SOURCE_DIR) / "tests" / "tools";
-    if (test::run_command("node --version").exit_code != 0 || !fs::exists(tools / "node_modules" / "gltf-validator"))
-        return std::nullopt;
-    const result r = test::run_command("node " + (tools / "validate_gltf.mjs").string() + " " + file.string());
-    const auto report = nlohmann::json::parse(r.output, nullptr, false);
-    if (report.is_discarded()) return nlohmann::json{{"unparsed", r.output}};
-    return report;
-}
+using test::bytes_of;
 
 // The number after `label` in a report line ("2274 triangles" -> 2274).
 long number_before(const std::string& text, const std::string& label) {
@@ -62,7 +49,7 @@ TEST(export_lodf_command, writes_the_foliage_at_a_leaf_count_with_the_trunk) {
     ASSERT_TRUE(std::regex_search(inspected.output, full, std::regex("full +([0-9]+)"))) << inspected.output;
     EXPECT_EQ(all_triangles, std::stol(full[1])) << "100 % is the full mesh, triangle for triangle";
     for (const fs::path& file : {half, all}) {
-        if (const auto report = validate(file)) {
+        if (const auto report = test::validate_gltf(file)) {
             EXPECT_EQ((*report)["issues"]["numErrors"], 0) << report->dump(2);
         }
     }

@@ -8,6 +8,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace sylva::test {
@@ -48,6 +52,25 @@ inline std::filesystem::path fresh_temp_dir(const std::string& name) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
+}
+
+// A file's bytes (to compare two exports).
+inline std::string bytes_of(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The Khronos glTF validator's report on `file` (tests/tools/validate_gltf.mjs), or nothing when
+// node or the package is missing (./sylva test installs it).
+inline std::optional<nlohmann::json> validate_gltf(const std::filesystem::path& file) {
+    namespace fs = std::filesystem;
+    const fs::path tools = fs::path(SYLVA_SOURCE_DIR) / "tests" / "tools";
+    if (run_command("node --version").exit_code != 0 || !fs::exists(tools / "node_modules" / "gltf-validator"))
+        return std::nullopt;
+    const command_result r = run_command("node " + (tools / "validate_gltf.mjs").string() + " " + file.string());
+    const auto report = nlohmann::json::parse(r.output, nullptr, false);
+    if (report.is_discarded()) return nlohmann::json{{"unparsed", r.output}};
+    return report;
 }
 
 }  // namespace sylva::test
