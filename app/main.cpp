@@ -64,6 +64,9 @@ int run(int argc, char** argv) {
     auto* lodf_quality = app.add_subcommand(
         "lodf-quality", "LoDF's image quality at equal leaf count against leaf shrink and the mesh levels (FLIP, SSIM, IoU)");
     commands.emplace_back(lodf_quality, sylva::add_lodf_quality_command(*lodf_quality));
+    auto* implicit_ao = app.add_subcommand(
+        "implicit-ao", "Rank correlation of Luft 2007's ambient coefficient with ray-cast occlusion, per vertex");
+    commands.emplace_back(implicit_ao, sylva::add_implicit_ao_command(*implicit_ao));
     auto* inspect = app.add_subcommand(
         "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
