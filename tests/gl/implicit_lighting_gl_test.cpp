@@ -22,6 +22,10 @@ struct crown_look {
     double neighbour_change = 0.0;  // mean |Δ luma| between horizontally adjacent plant pixels
     double luma_entropy = 0.0;    // bits, of the plant's pixels' luma rounded to integers
     double dark_share = 0.0;      // of the plant's pixels, those darker than 24 of 255 (ink)
+    // The same inside the crown only: plant pixels whose 5x5 neighbourhood is all plant, so
+    // the silhouette's lines (which both lightings draw) do not count (issue 22: "edge pixels
+    // inside crowns ... at equal silhouette edges").
+    double interior_dark_share = 0.0;
 };
 
 crown_look look_of(const std::string& lighting, const std::string& representation,
@@ -67,6 +71,17 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
                 ++pairs;
             }
         }
+    std::size_t interior = 0;
+    for (std::size_t y = 2; y + 2 < image.height; ++y)
+        for (std::size_t x = 2; x + 2 < image.width; ++x) {
+            bool inside = true;
+            for (std::size_t v = y - 2; v <= y + 2 && inside; ++v)
+                for (std::size_t u = x - 2; u <= x + 2 && inside; ++u) inside = ids[v * image.width + u] != 0;
+            if (!inside) continue;
+            ++interior;
+            out.interior_dark_share += luma(y * image.width + x) < 24.0 ? 1.0 : 0.0;
+        }
+    out.interior_dark_share /= double(std::max<std::size_t>(interior, 1));
     EXPECT_GT(pixels, 2000u) << "the tree should fill part of the frame";
     out.mean_luma /= double(std::max<std::size_t>(pixels, 1));
     out.dark_share /= double(std::max<std::size_t>(pixels, 1));
@@ -116,16 +131,20 @@ TEST(implicit_lighting_gl, toon_style_puts_the_crown_in_bands) {
 // are realigned to the implicit surface.
 TEST(implicit_lighting_gl, line_style_draws_the_crown_not_every_leaf) {
     SYLVA_REQUIRE_GL();
-    double inked[2] = {0.0, 0.0};
+    double inked[2] = {0.0, 0.0}, inside[2] = {0.0, 0.0};
     int i = 0;
     for (const char* lighting : {"normal_mapped", "implicit"}) {
         const crown_look photo = look_of(lighting, "mesh_levels");
         const crown_look lines = look_of(lighting, "mesh_levels", "lines");
-        inked[i++] = lines.dark_share - photo.dark_share;
-        std::printf("%s: crown pixels inked by the lines %.3f\n", lighting, lines.dark_share - photo.dark_share);
+        inked[i] = lines.dark_share - photo.dark_share;
+        inside[i++] = lines.interior_dark_share - photo.interior_dark_share;
+        std::printf("%s: crown pixels inked by the lines %.3f, inside the crown %.3f\n", lighting,
+                    lines.dark_share - photo.dark_share, lines.interior_dark_share - photo.interior_dark_share);
     }
     EXPECT_GT(inked[1], 0.01) << "the realigned crown keeps its outline";
     EXPECT_GT(inked[0], 2.0 * inked[1]) << "the leaves' own normals should clutter the crown with lines";
+    std::printf("inside the crown: %.1fx fewer inked pixels with realigned normals\n", inside[0] / std::max(inside[1], 1e-9));
+    EXPECT_GT(inside[0], 5.0 * inside[1]) << "issue 22: at least 5x fewer edge pixels inside the crown";
 }
 
 // The same for soft splats (the default), which the blend pass draws without a normal: the
