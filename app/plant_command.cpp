@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "models/bake/implicit_illumination.h"
 #include "models/gltf/gltf_export.h"
 #include "models/generate/plant_library.h"
 
@@ -16,6 +17,7 @@ struct plant_options {
     std::string lod = "full";
     std::string out;
     std::uint32_t texture_size = 512;
+    bool implicit = false;
     bool list = false;
 };
 
@@ -51,7 +53,14 @@ int plant(const plant_options& o) {
                           : o.lod == "far"   ? plant_lod::far
                                              : plant_lod::full;
     try {
-        const plant_model model = generate_plant_model(o.species, o.seed, o.texture_size);
+        plant_model model = generate_plant_model(o.species, o.seed, o.texture_size);
+        if (o.implicit) {
+            implicit_settings settings;
+            settings.seed = o.seed;
+            const implicit_report report = bake_implicit_illumination(model, settings);
+            spdlog::info("Luft 2007 illumination baked: {} generators, mean k_a {:.3f} (in COLOR_0)", report.generators,
+                         report.mean_ka);
+        }
         export_plant_glb(model, lod, o.out);
         spdlog::info("wrote {} ({} seed {}, {} level, {} triangles)", o.out, o.species, o.seed,
                      o.lod, model.lods[std::size_t(lod)].triangle_count());
@@ -76,6 +85,9 @@ command_runner add_plant_command(CLI::App& app) {
         ->check(CLI::Range(16u, 4096u))
         ->capture_default_str();
     app.add_option("--out", options->out, "Output file (.glb)");
+    app.add_flag("--implicit", options->implicit,
+                 "Bake Luft 2007's implicit-surface illumination first: realigned normals, and the ambient "
+                 "coefficient k_a as the vertex colour COLOR_0 (grey)");
     app.add_flag("--list", options->list, "Print the species presets and exit");
     return [options] { return plant(*options); };
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "models/bake/implicit_illumination.h"
 #include "models/gltf/gltf_image_codec.h"
 #include "models/gltf/gltf_tinygltf.h"
 
@@ -129,15 +130,26 @@ void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesy
     model.asset.generator = "sylva";
     model.buffers.emplace_back();
 
-    // The validator rejects normals that are not unit length.
+    // The validator rejects normals that are not unit length. A model baked with Luft 2007's
+    // illumination keeps k_a as its normals' length (models/bake/implicit_illumination.h): the
+    // normals go out unit and k_a goes to COLOR_0 as a grey (k_a, k_a, k_a), which glTF viewers
+    // multiply into the base colour, the ambient darkening the paper bakes.
     std::vector<vertex> vertices = mesh.vertices;
+    const bool ambient = std::any_of(vertices.begin(), vertices.end(), carries_ambient);
+    std::vector<glm::vec3> grey;
     glm::vec3 lo(vertices[0].position), hi(vertices[0].position);
     for (vertex& v : vertices) {
         const float len = glm::length(v.normal);
+        if (ambient) grey.emplace_back(std::isfinite(len) ? std::clamp(len, 0.0f, 1.0f) : 1.0f);
         v.normal = std::isfinite(len) && len > 1e-6f ? v.normal / len : glm::vec3(0, 1, 0);
         lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
     }
     const auto [vertex_view, position, normal, uv] = add_vertex_accessors(model, vertices, lo, hi);
+    int colour = -1;
+    if (ambient) {
+        const int view = add_view(model, grey.data(), grey.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+        colour = add_accessor(model, view, 0, grey.size(), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
+    }
     const int index_view = add_view(model, mesh.indices.data(), mesh.indices.size() * 4,
                                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
 
@@ -163,6 +175,7 @@ void export_plant_glb(const plant_model& plant, plant_lod lod, const std::filesy
         if (s.index_count == 0) continue;
         tinygltf::Primitive p;
         p.attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}};
+        if (colour >= 0) p.attributes["COLOR_0"] = colour;
         p.indices = add_accessor(model, index_view, std::size_t(s.first_index) * 4, s.index_count,
                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
         p.material = s.material == material_kind::leaf ? 1 : 0;

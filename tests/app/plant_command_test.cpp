@@ -15,6 +15,8 @@
 #include <sstream>
 #include <string>
 
+#include "models/gltf/gltf_tinygltf.h"
+
 namespace sylva {
 namespace {
 
@@ -94,6 +96,45 @@ TEST(plant_command, every_preset_exports_valid_gltf) {
         EXPECT_EQ(report["issues"]["numErrors"], 0) << report["issues"].dump(2);
         EXPECT_EQ(v.exit_code, 0);
     }
+    fs::remove_all(dir);
+}
+
+// Luft 2007 exported (issue 22 item 6): --implicit bakes the illumination; the file keeps unit
+// normals (the validator checks them) and carries k_a as a grey COLOR_0 on every vertex, some
+// of it darker than white (the crown's inside) and none above.
+TEST(plant_command, implicit_writes_unit_normals_and_the_ambient_as_colour_0) {
+    const fs::path dir = test::fresh_temp_dir("plant_implicit");
+    const fs::path out = dir / "oak.glb";
+    const result r = run("plant broadleaf --implicit --texture-size 64 --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("mean k_a"), std::string::npos) << r.output;
+    if (const auto report = test::validate_gltf(out)) {
+        EXPECT_EQ((*report)["issues"]["numErrors"], 0) << report->dump(2);
+    }
+    tinygltf::TinyGLTF loader = make_gltf_loader();
+    tinygltf::Model model;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, out.string())) << error;
+    ASSERT_FALSE(model.meshes.empty());
+    for (const tinygltf::Primitive& p : model.meshes[0].primitives) {
+        ASSERT_TRUE(p.attributes.count("COLOR_0")) << "every primitive carries the ambient";
+        const tinygltf::Accessor& colour = model.accessors[std::size_t(p.attributes.at("COLOR_0"))];
+        const tinygltf::Accessor& position = model.accessors[std::size_t(p.attributes.at("POSITION"))];
+        EXPECT_EQ(colour.count, position.count);
+        EXPECT_EQ(colour.type, TINYGLTF_TYPE_VEC3);
+        const tinygltf::BufferView& view = model.bufferViews[std::size_t(colour.bufferView)];
+        const auto* grey = reinterpret_cast<const float*>(&model.buffers[0].data[view.byteOffset + colour.byteOffset]);  // NOLINT
+        float lowest = 1.0f, highest = 0.0f;
+        for (std::size_t i = 0; i < colour.count * 3; ++i) lowest = std::min(lowest, grey[i]), highest = std::max(highest, grey[i]);
+        EXPECT_LT(lowest, 0.9f);
+        EXPECT_LE(highest, 1.0f);
+    }
+    // Without --implicit there is no ambient to carry.
+    const fs::path plain = dir / "plain.glb";
+    ASSERT_EQ(run("plant broadleaf --texture-size 64 --out " + plain.string()).exit_code, 0);
+    tinygltf::Model plain_model;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&plain_model, &error, &warning, plain.string())) << error;
+    EXPECT_FALSE(plain_model.meshes[0].primitives[0].attributes.count("COLOR_0"));
     fs::remove_all(dir);
 }
 
