@@ -161,27 +161,10 @@ float quad_area(const std::vector<vertex>& vertices, const std::array<std::uint3
                    glm::length(triangle_cross(vertices, q[0], q[2], q[3])));
 }
 
-std::array<std::uint32_t, 4> collapse_quad(const std::vector<vertex>& vertices, const std::array<std::uint32_t, 4>& a,
-                                           const std::array<std::uint32_t, 4>& b, float target_area) {
-    // Each texture corner from either leaf: 16 quads, the texture spanning each once. Ties go to
-    // the lowest mask, so a quad of a's own corners (mask 0) wins only when nothing is nearer.
-    std::array<std::uint32_t, 4> best = a;
-    float best_score = std::numeric_limits<float>::infinity();
-    for (std::uint32_t mask = 0; mask < 16; ++mask) {
-        std::array<std::uint32_t, 4> q;
-        for (std::uint32_t c = 0; c < 4; ++c) q[c] = (mask >> c) & 1u ? b[c] : a[c];
-        const glm::vec3 first = triangle_cross(vertices, q[0], q[1], q[2]);
-        const glm::vec3 second = triangle_cross(vertices, q[0], q[2], q[3]);
-        const float area = 0.5f * (glm::length(first) + glm::length(second));
-        const bool folded = glm::dot(first, second) < 0.0f;
-        const float score = std::abs(area / std::max(target_area, 1e-12f) - 1.0f) + (folded ? 1e3f : 0.0f);
-        if (score < best_score) best_score = score, best = q;
-    }
-    return best;
-}
-
 namespace {
 
+// How far quad q's area is from `target_area`, as a share of it; a folded quad (its two
+// triangles facing apart) scores past any flat one.
 float score_of(const std::vector<vertex>& vertices, const std::array<std::uint32_t, 4>& q, float target_area) {
     const glm::vec3 first = triangle_cross(vertices, q[0], q[1], q[2]);
     const glm::vec3 second = triangle_cross(vertices, q[0], q[2], q[3]);
@@ -191,6 +174,21 @@ float score_of(const std::vector<vertex>& vertices, const std::array<std::uint32
 }
 
 }  // namespace
+
+std::array<std::uint32_t, 4> collapse_quad(const std::vector<vertex>& vertices, const std::array<std::uint32_t, 4>& a,
+                                           const std::array<std::uint32_t, 4>& b, float target_area) {
+    // Each texture corner from either leaf: 16 quads, the texture spanning each once. Ties go to
+    // the lowest mask, so a quad of a's own corners (mask 0) wins only when nothing is nearer.
+    std::array<std::uint32_t, 4> best = a;
+    float best_score = std::numeric_limits<float>::infinity();
+    for (std::uint32_t mask = 0; mask < 16; ++mask) {
+        std::array<std::uint32_t, 4> q;
+        for (std::uint32_t c = 0; c < 4; ++c) q[c] = (mask >> c) & 1u ? b[c] : a[c];
+        const float score = score_of(vertices, q, target_area);
+        if (score < best_score) best_score = score, best = q;
+    }
+    return best;
+}
 
 namespace {
 
