@@ -62,8 +62,8 @@ implicit_field& implicit_field::operator=(implicit_field&& other) noexcept {
     return *this;
 }
 
-float implicit_field::value(const glm::vec3& q) const {
-    // Eq. 3 over the generators within ρ (Eq. 2 is zero beyond).
+float implicit_field::density(const glm::vec3& q) const {
+    // Eq. 3 over the generators within ρ (Eq. 2 is zero beyond), before τ.
     std::vector<std::pair<std::uint32_t, float>> near;
     nanoflann::SearchParams params;
     params.sorted = false;
@@ -72,7 +72,7 @@ float implicit_field::value(const glm::vec3& q) const {
     std::sort(near.begin(), near.end());
     float sum = 0.0f;
     for (const auto& [i, d2] : near) sum += generator_density(d2, m_rho);
-    return sum - m_tau;
+    return sum;
 }
 
 glm::vec3 implicit_field::outward_normal(const glm::vec3& q) const {
@@ -90,53 +90,81 @@ glm::vec3 implicit_field::outward_normal(const glm::vec3& q) const {
     return length > 0.0f ? g / length : glm::vec3(0.0f);
 }
 
-iso_surface extract_iso_surface(const implicit_field& field, float cell_m) {
-    iso_surface out;
+density_grid sample_density(const implicit_field& field, float cell_m) {
+    density_grid out;
+    out.cell_m = cell_m;
     if (field.generators().empty()) return out;
-    if (!(cell_m > 0.0f)) throw std::invalid_argument("extract_iso_surface: the cell must be positive");
+    if (!(cell_m > 0.0f)) throw std::invalid_argument("sample_density: the cell must be positive");
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const glm::vec3& p : field.generators()) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    // F is −τ beyond ρ of every generator: one cell more than ρ holds the whole surface.
+    // Σ D_i is 0 beyond ρ of every generator: one cell more than ρ holds all of it.
     lo -= glm::vec3(field.rho() + cell_m);
     hi += glm::vec3(field.rho() + cell_m);
-    const glm::ivec3 n = glm::ivec3(glm::ceil((hi - lo) / cell_m)) + 1;
-    const std::size_t count = std::size_t(n.x) * std::size_t(n.y) * std::size_t(n.z);
+    out.origin = lo;
+    out.size = glm::ivec3(glm::ceil((hi - lo) / cell_m)) + 1;
+    const std::size_t count = std::size_t(out.size.x) * std::size_t(out.size.y) * std::size_t(out.size.z);
     if (count > 64u * 1024u * 1024u)
-        throw std::invalid_argument("extract_iso_surface: " + std::to_string(count) +
+        throw std::invalid_argument("sample_density: " + std::to_string(count) +
                                     " grid samples; raise the cell size (implicit.cells_per_rho)");
-    // Sampled in parallel into a dense array (fixed chunks), then handed to OpenVDB, which
-    // meshes the level set: "inside" is below the isovalue, so the grid holds −F.
-    std::vector<float> samples(count);
+    // Sampled in parallel into a dense array (fixed chunks).
+    out.sums.resize(count);
     const std::size_t chunks = (count + k_chunk - 1) / k_chunk;
     ecs::parallel_for_each_index(chunks, [&](std::size_t chunk) {
         const std::size_t end = std::min(count, (chunk + 1) * k_chunk);
         for (std::size_t i = chunk * k_chunk; i < end; ++i) {
-            const int x = int(i % std::size_t(n.x));
-            const int y = int((i / std::size_t(n.x)) % std::size_t(n.y));
-            const int z = int(i / (std::size_t(n.x) * std::size_t(n.y)));
-            samples[i] = -field.value(lo + glm::vec3(x, y, z) * cell_m);
+            const int x = int(i % std::size_t(out.size.x));
+            const int y = int((i / std::size_t(out.size.x)) % std::size_t(out.size.y));
+            const int z = int(i / (std::size_t(out.size.x) * std::size_t(out.size.y)));
+            out.sums[i] = field.density(lo + glm::vec3(x, y, z) * cell_m);
         }
     });
+    return out;
+}
+
+float density_grid::density_at(const glm::vec3& q) const {
+    if (sums.empty()) return 0.0f;
+    const glm::vec3 g = (q - origin) / cell_m;
+    if (!(g.x >= 0.0f && g.y >= 0.0f && g.z >= 0.0f)) return 0.0f;
+    const glm::ivec3 c = glm::ivec3(glm::floor(g));
+    if (c.x + 1 >= size.x || c.y + 1 >= size.y || c.z + 1 >= size.z) return 0.0f;
+    const glm::vec3 f = g - glm::vec3(c);
+    const auto at = [&](int dx, int dy, int dz) {
+        return sums[(std::size_t(c.z + dz) * std::size_t(size.y) + std::size_t(c.y + dy)) * std::size_t(size.x) +
+                    std::size_t(c.x + dx)];
+    };
+    const float x00 = glm::mix(at(0, 0, 0), at(1, 0, 0), f.x), x10 = glm::mix(at(0, 1, 0), at(1, 1, 0), f.x);
+    const float x01 = glm::mix(at(0, 0, 1), at(1, 0, 1), f.x), x11 = glm::mix(at(0, 1, 1), at(1, 1, 1), f.x);
+    return glm::mix(glm::mix(x00, x10, f.y), glm::mix(x01, x11, f.y), f.z);
+}
+
+iso_surface extract_iso_surface(const implicit_field& field, float cell_m) {
+    return extract_iso_surface(field, sample_density(field, cell_m));
+}
+
+iso_surface extract_iso_surface(const implicit_field& field, const density_grid& grid) {
+    iso_surface out;
+    if (grid.sums.empty()) return out;
+    // OpenVDB meshes the level set with "inside" below the isovalue: the grid holds −Σ D_i and
+    // the isovalue is −τ, so F = Σ D_i − τ > 0 is inside.
     openvdb::initialize();
-    const float outside = field.tau();  // −F where no generator reaches
-    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(outside);
-    grid->setTransform(openvdb::math::Transform::createLinearTransform(double(cell_m)));
-    auto access = grid->getAccessor();
-    for (std::size_t i = 0; i < count; ++i) {
-        if (samples[i] == outside) continue;  // the background
-        const int x = int(i % std::size_t(n.x));
-        const int y = int((i / std::size_t(n.x)) % std::size_t(n.y));
-        const int z = int(i / (std::size_t(n.x) * std::size_t(n.y)));
-        access.setValue(openvdb::Coord(x, y, z), samples[i]);
+    openvdb::FloatGrid::Ptr vdb = openvdb::FloatGrid::create(0.0f);
+    vdb->setTransform(openvdb::math::Transform::createLinearTransform(double(grid.cell_m)));
+    auto access = vdb->getAccessor();
+    for (std::size_t i = 0; i < grid.sums.size(); ++i) {
+        if (grid.sums[i] == 0.0f) continue;  // the background: no generator reaches
+        const int x = int(i % std::size_t(grid.size.x));
+        const int y = int((i / std::size_t(grid.size.x)) % std::size_t(grid.size.y));
+        const int z = int(i / (std::size_t(grid.size.x) * std::size_t(grid.size.y)));
+        access.setValue(openvdb::Coord(x, y, z), -grid.sums[i]);
     }
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec4I> quads;
-    openvdb::tools::volumeToMesh(*grid, points, quads, 0.0);
+    openvdb::tools::volumeToMesh(*vdb, points, quads, -double(field.tau()));
     out.positions.reserve(points.size());
-    for (const openvdb::Vec3s& p : points) out.positions.push_back(lo + glm::vec3(p.x(), p.y(), p.z()));
+    for (const openvdb::Vec3s& p : points) out.positions.push_back(grid.origin + glm::vec3(p.x(), p.y(), p.z()));
     out.normals.resize(out.positions.size());
     const std::size_t point_chunks = (out.positions.size() + k_chunk - 1) / k_chunk;
     ecs::parallel_for_each_index(point_chunks, [&](std::size_t chunk) {
@@ -167,29 +195,42 @@ std::vector<glm::vec3> foliage_generators(const mesh_data& mesh, float fraction,
     return chosen;
 }
 
-implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
-    if (generators.empty()) return s;
-    if (!(s.rho_m > 0.0f)) {
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (const glm::vec3& p : generators) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-        s.rho_m = std::max(0.2f * 0.5f * glm::length(hi - lo), 1e-3f);
+namespace {
+
+// §3.1: ρ "with regard to the size of the model": a fifth of the generators' bounding radius.
+float default_rho(const std::vector<glm::vec3>& generators) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : generators) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
     }
-    if (!(s.tau > 0.0f) || !(s.d_min > 0.0f)) {
-        const implicit_field unthresholded(generators, s.rho_m, 0.0f);
-        std::vector<float> own(generators.size());
-        for (std::size_t i = 0; i < generators.size(); ++i) own[i] = unthresholded.value(generators[i]);
-        std::nth_element(own.begin(), own.begin() + std::ptrdiff_t(own.size() / 2), own.end());
-        const float m = own[own.size() / 2];
-        if (!(s.tau > 0.0f)) s.tau = 0.25f * m;
-        if (!(s.d_min > 0.0f)) s.d_min = std::max(m - s.tau, 1e-6f);
-    }
+    return std::max(0.2f * 0.5f * glm::length(hi - lo), 1e-3f);
+}
+
+// τ and d_min from the foliage's own density m, read from `grid` at the generators.
+implicit_settings thresholds_from(const std::vector<glm::vec3>& generators, implicit_settings s,
+                                  const density_grid& grid) {
+    if (s.tau > 0.0f && s.d_min > 0.0f) return s;
+    std::vector<float> own(generators.size());
+    for (std::size_t i = 0; i < generators.size(); ++i) own[i] = grid.density_at(generators[i]);
+    std::nth_element(own.begin(), own.begin() + std::ptrdiff_t(own.size() / 2), own.end());
+    const float m = own[own.size() / 2];
+    if (!(s.tau > 0.0f)) s.tau = 0.25f * m;
+    if (!(s.d_min > 0.0f)) s.d_min = std::max(2.0f * (m - s.tau), 1e-6f);
     return s;
 }
 
-void apply_implicit_illumination(mesh_data& mesh, const implicit_field& field, const iso_surface& surface,
+}  // namespace
+
+implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
+    if (generators.empty()) return s;
+    if (!(s.rho_m > 0.0f)) s.rho_m = default_rho(generators);
+    if (s.tau > 0.0f && s.d_min > 0.0f) return s;
+    const implicit_field unthresholded(generators, s.rho_m, 0.0f);
+    return thresholds_from(generators, s, sample_density(unthresholded, s.rho_m / s.cells_per_rho));
+}
+
+void apply_implicit_illumination(mesh_data& mesh, const density_grid& grid, const iso_surface& surface,
                                  const implicit_settings& settings) {
     std::unique_ptr<point_tree> nearest;
     const point_cloud cloud{&surface.positions};
@@ -202,9 +243,9 @@ void apply_implicit_illumination(mesh_data& mesh, const implicit_field& field, c
         const std::size_t end = std::min(mesh.vertices.size(), (chunk + 1) * k_chunk);
         for (std::size_t i = chunk * k_chunk; i < end; ++i) {
             vertex& v = mesh.vertices[i];
-            // §3.2: k_a from the density at the vertex (Eq. 4).
-            const float ka = ambient_coefficient(field.value(v.position), settings.ka_min, settings.d_min,
-                                                 settings.exponent);
+            // §3.2: k_a from the density at the vertex (Eq. 4), F = Σ D_i − τ (Eq. 3).
+            const float ka = ambient_coefficient(grid.density_at(v.position) - settings.tau, settings.ka_min,
+                                                 settings.d_min, settings.exponent);
             // §3.3: the normal of the nearest iso-surface vertex, or a mix with the original.
             glm::vec3 n = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0.0f, 1.0f, 0.0f);
             if (nearest) {
@@ -224,13 +265,18 @@ implicit_report bake_implicit_illumination(plant_model& plant, const implicit_se
     implicit_report report;
     const std::vector<glm::vec3> generators =
         foliage_generators(plant.lods[0], settings.generator_fraction, settings.seed);
-    report.used = implicit_defaults(generators, settings);
+    report.used = settings;
     report.generators = generators.size();
     if (generators.empty()) return report;  // no foliage: nothing to light by its shape
+    // Σ D_i sampled once: the defaults' median, the iso-surface and every vertex's F read it.
+    if (!(report.used.rho_m > 0.0f)) report.used.rho_m = default_rho(generators);
+    const density_grid grid = sample_density(implicit_field(generators, report.used.rho_m, 0.0f),
+                                             report.used.rho_m / report.used.cells_per_rho);
+    report.used = thresholds_from(generators, report.used, grid);
     const implicit_field field(generators, report.used.rho_m, report.used.tau);
-    const iso_surface surface = extract_iso_surface(field, report.used.rho_m / report.used.cells_per_rho);
+    const iso_surface surface = extract_iso_surface(field, grid);
     report.surface_vertices = surface.positions.size();
-    for (mesh_data& level : plant.lods) apply_implicit_illumination(level, field, surface, report.used);
+    for (mesh_data& level : plant.lods) apply_implicit_illumination(level, grid, surface, report.used);
     double sum = 0.0;
     for (const vertex& v : plant.lods[0].vertices) sum += double(glm::length(v.normal));
     report.mean_ka = plant.lods[0].vertices.empty() ? 1.0f : float(sum / double(plant.lods[0].vertices.size()));
