@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -32,6 +33,7 @@ struct implicit_ao_options {
     std::vector<std::string> models;
     std::uint32_t rays = 256;
     std::uint64_t seed = 1;
+    implicit_settings implicit;  // 0 for rho/tau/d_min: the bake's defaults
     std::string json;
 };
 
@@ -40,6 +42,11 @@ struct ao_result {
     std::size_t vertices = 0;
     double implicit_rho = 0.0;
     double ellipsoid_rho = 0.0;
+    double density_rho = 0.0;  // −F itself: the best any k_a falling with F can rank
+    double foliage_rho = 0.0;  // k_a on the leaves' vertices alone
+    double ka_min_share = 0.0;  // vertices at k_a,min (tied: Eq. 4 saturates at d_min)
+    implicit_settings used;
+    double bake_s = 0.0;  // bake_implicit_illumination on every level, on this machine's threads
 };
 
 ao_result measure(const std::string& argument, const implicit_ao_options& o) {
@@ -63,11 +70,23 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
         visibility[v] = leaf[v] ? 0.5 * (front + back) : front;
     }
     // Eq. 4's k_a, as the bake stores it.
-    implicit_settings implicit;
+    implicit_settings implicit = o.implicit;
     implicit.seed = o.seed;
-    bake_implicit_illumination(plant, implicit);
+    const auto start = std::chrono::steady_clock::now();
+    const implicit_report report = bake_implicit_illumination(plant, implicit);
+    const double bake_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<double> ka(original.vertices.size());
-    for (std::size_t v = 0; v < ka.size(); ++v) ka[v] = glm::length(plant.lods[0].vertices[v].normal);
+    std::size_t at_min = 0;
+    for (std::size_t v = 0; v < ka.size(); ++v) {
+        ka[v] = glm::length(plant.lods[0].vertices[v].normal);
+        at_min += ka[v] <= double(report.used.ka_min) + 1e-4 ? 1 : 0;
+    }
+    // The field itself, unclamped: Eq. 4 is monotone in F, so −F bounds what any (k_a,min, d_min,
+    // n) can reach for this ρ and τ.
+    const implicit_field field(foliage_generators(original, implicit.generator_fraction, implicit.seed),
+                               report.used.rho_m, report.used.tau);
+    std::vector<double> density(ka.size());
+    for (std::size_t v = 0; v < ka.size(); ++v) density[v] = -double(field.value(original.vertices[v].position));
     // The naive method: 1 − the vertex's radial depth inside the foliage's axis-aligned bounding
     // ellipsoid (1 at its rim, 0 at its centre).
     glm::vec3 lo(1e30f), hi(-1e30f);
@@ -77,7 +96,20 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     std::vector<double> ellipsoid(ka.size());
     for (std::size_t v = 0; v < ka.size(); ++v)
         ellipsoid[v] = std::min(1.0, double(glm::length((original.vertices[v].position - centre) / half)));
-    return {plant_argument_name(argument), ka.size(), spearman_correlation(ka, visibility), spearman_correlation(ellipsoid, visibility)};
+    ao_result r;
+    r.name = plant_argument_name(argument);
+    r.vertices = ka.size();
+    r.implicit_rho = spearman_correlation(ka, visibility);
+    r.ellipsoid_rho = spearman_correlation(ellipsoid, visibility);
+    r.density_rho = spearman_correlation(density, visibility);
+    std::vector<double> leaf_ka, leaf_visibility;
+    for (std::size_t v = 0; v < ka.size(); ++v)
+        if (leaf[v]) leaf_ka.push_back(ka[v]), leaf_visibility.push_back(visibility[v]);
+    r.foliage_rho = spearman_correlation(leaf_ka, leaf_visibility);
+    r.ka_min_share = double(at_min) / double(std::max<std::size_t>(ka.size(), 1));
+    r.used = report.used;
+    r.bake_s = bake_s;
+    return r;
 }
 
 int implicit_ao(const implicit_ao_options& o) {
@@ -95,12 +127,17 @@ int implicit_ao(const implicit_ao_options& o) {
             return k_exit_failure;
         }
     }
-    std::printf("%-16s %9s | %18s %18s\n", "model", "vertices", "Spearman k_a", "Spearman ellipsoid");
+    std::printf("%-16s %9s | %12s %12s %12s %12s | %9s | %7s %9s %9s | %6s\n", "model", "vertices", "Spearman k_a", "ellipsoid",
+                "-F (bound)", "leaves only", "at k_amin", "rho m", "tau", "d_min", "bake s");
     nlohmann::ordered_json json = nlohmann::ordered_json::array();
     for (const ao_result& r : results) {
-        std::printf("%-16s %9zu | %18.3f %18.3f\n", r.name.c_str(), r.vertices, r.implicit_rho, r.ellipsoid_rho);
+        std::printf("%-16s %9zu | %12.3f %12.3f %12.3f %12.3f | %8.1f%% | %7.3f %9.4f %9.4f | %6.2f\n", r.name.c_str(), r.vertices,
+                    r.implicit_rho, r.ellipsoid_rho, r.density_rho, r.foliage_rho, 100.0 * r.ka_min_share, r.used.rho_m, r.used.tau,
+                    r.used.d_min, r.bake_s);
         json.push_back({{"model", r.name}, {"vertices", r.vertices}, {"spearman_implicit", r.implicit_rho},
-                        {"spearman_ellipsoid", r.ellipsoid_rho}, {"rays", o.rays}});
+                        {"spearman_ellipsoid", r.ellipsoid_rho}, {"spearman_density", r.density_rho}, {"spearman_foliage", r.foliage_rho},
+                        {"ka_min_share", r.ka_min_share}, {"rho_m", r.used.rho_m}, {"tau", r.used.tau},
+                        {"d_min", r.used.d_min}, {"bake_s", r.bake_s}, {"rays", o.rays}});
     }
     if (!o.json.empty()) write_atomically(o.json, json.dump(2) + "\n");
     return k_exit_ok;
@@ -116,6 +153,16 @@ command_runner add_implicit_ao_command(CLI::App& app) {
         ->check(CLI::Range(16u, 4096u))
         ->capture_default_str();
     app.add_option("--seed", options->seed, "Preset seed, and the rays' and generators' seed")->capture_default_str();
+    app.add_option("--rho", options->implicit.rho_m, "Radius of influence rho in metres (Eq. 2; 0: the bake's default)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--tau", options->implicit.tau, "Threshold tau (Eq. 3; 0: the bake's default)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--d-min", options->implicit.d_min, "d_min of Eq. 4 (0: the bake's default)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--generator-fraction", options->implicit.generator_fraction,
+                   "Share of foliage triangles that are generators (§3.1)")
+        ->check(CLI::Range(0.001f, 1.0f))
+        ->capture_default_str();
     app.add_option("--json", options->json, "Also write the table as JSON to this file");
     return [options] { return implicit_ao(*options); };
 }
