@@ -17,6 +17,7 @@ command_runner add_lodf_bench_command(CLI::App& app);
 command_runner add_lodf_quality_command(CLI::App& app);
 command_runner add_inspect_command(CLI::App& app);
 command_runner add_implicit_ao_command(CLI::App& app);
+command_runner add_implicit_look_command(CLI::App& app);
 command_runner add_bake_command(CLI::App& app);
 command_runner add_stress_command(CLI::App& app);
 command_runner add_bench_command(CLI::App& app);

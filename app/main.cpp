@@ -67,6 +67,10 @@ int run(int argc, char** argv) {
     auto* implicit_ao = app.add_subcommand(
         "implicit-ao", "Rank correlation of Luft 2007's ambient coefficient with ray-cast occlusion, per vertex");
     commands.emplace_back(implicit_ao, sylva::add_implicit_ao_command(*implicit_ao));
+    auto* implicit_look = app.add_subcommand(
+        "implicit-look", "Crown noise (variance of a Laplacian) and brightness, lit by Luft 2007's implicit surface "
+                         "against the species' normals");
+    commands.emplace_back(implicit_look, sylva::add_implicit_look_command(*implicit_look));
     auto* inspect = app.add_subcommand(
         "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
