@@ -175,6 +175,16 @@ bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
     return c;
 }
 
+// `c` with every species lit by Luft 2007's implicit-surface normals and density ambient, named
+// `<name>_implicit`: measured against the implicit-lit reference; its time beside `c`'s says what
+// the lighting costs at run time (issue 22: nothing).
+bench_configuration_spec lit_implicitly(bench_configuration_spec c) {
+    c.name += "_implicit";
+    c.description += ", every species lit by Luft 2007's implicit surface (realigned normals, density ambient)";
+    c.options.lighting = "implicit";
+    return c;
+}
+
 // Species lit by SH transfer.
 std::size_t sh_species(const scenario& s) {
     return std::size_t(std::count_if(s.species.begin(), s.species.end(), [&](const species_settings& sp) {
@@ -266,6 +276,11 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(lit_by_transfer(ladder_configuration()));
     list.push_back(lit_by_transfer(points_lines(1.0f)));
     list.push_back(lit_by_transfer(points_lines(2.0f)));
+    // Luft 2007: the same geometry lit by the implicit surface, against its own reference.
+    list.push_back(lit_implicitly(baseline(float(k_named_baseline_distance_m))));
+    list.push_back(lit_implicitly(mesh_lod(1.0)));
+    list.push_back(lit_implicitly(ladder_configuration()));
+    list.push_back(lit_implicitly(points_lines(1.0f)));
     return list;
 }
 
