@@ -236,19 +236,33 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(reference);
     list.push_back(brute_force());
 
-    for (double factor : {1.0, 0.25, 0.5, 2.0}) list.push_back(mesh_lod(factor));
+    // Luft 2007's implicit lighting (lit_implicitly) right after its normal-lit twin, so that the
+    // two are timed next to each other in every timing round.
+    for (double factor : {1.0, 0.25, 0.5, 2.0}) {
+        list.push_back(mesh_lod(factor));
+        if (factor == 1.0) list.push_back(lit_implicitly(mesh_lod(factor)));
+    }
     list.push_back(single(representation::mesh_reduced, "every plant as its reduced mesh"));
     list.push_back(single(representation::mesh_far, "every plant as its far mesh"));
     list.push_back(single(representation::billboard_cloud,
                           "every plant as its billboard cloud (Behrendt 2005)"));
-    for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) list.push_back(baseline(d));
+    for (float d : {0.0f, 50.0f, 25.0f, 100.0f}) {
+        list.push_back(baseline(d));
+        if (double(d) == k_named_baseline_distance_m) list.push_back(lit_implicitly(baseline(d)));
+    }
     list.push_back(billboard_clouds("normal_mapped"));
     list.push_back(billboard_clouds("pre_lit"));
-    for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) list.push_back(ladder_configuration(factor));
+    for (double factor : {1.0, 0.5, 0.25, 0.125, 2.0, 4.0}) {
+        list.push_back(ladder_configuration(factor));
+        if (factor == 1.0) list.push_back(lit_implicitly(ladder_configuration(factor)));
+    }
     list.push_back(ladder_lodf());
     for (double budget_ms : {4.0, 8.0, 15.0, 30.0, 45.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0})
         list.push_back(auto_ladder(budget_ms));
-    for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) list.push_back(points_lines(d));
+    for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) {
+        list.push_back(points_lines(d));
+        if (d == 1.0f) list.push_back(lit_implicitly(points_lines(d)));
+    }
     for (float d : {1.0f, 2.0f}) list.push_back(points_lines(d, splat_style::opaque));
     for (float d : {1.0f, 2.0f, 2.5f, 3.0f})
         list.push_back(points_lines(d, splat_style::soft, false));
@@ -276,11 +290,6 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(lit_by_transfer(ladder_configuration()));
     list.push_back(lit_by_transfer(points_lines(1.0f)));
     list.push_back(lit_by_transfer(points_lines(2.0f)));
-    // Luft 2007: the same geometry lit by the implicit surface, against its own reference.
-    list.push_back(lit_implicitly(baseline(float(k_named_baseline_distance_m))));
-    list.push_back(lit_implicitly(mesh_lod(1.0)));
-    list.push_back(lit_implicitly(ladder_configuration()));
-    list.push_back(lit_implicitly(points_lines(1.0f)));
     return list;
 }
 

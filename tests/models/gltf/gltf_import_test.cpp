@@ -362,3 +362,36 @@ TEST_F(gltf_import, exported_textures_survive_the_round_trip) {
 
 }  // namespace
 }  // namespace sylva
+
+namespace sylva {
+namespace {
+
+// Two trees from other makers and exporters (tests/data/trees/README.md): a Blender export with
+// alpha-masked leaf cards and external PNGs, and a COLLADA2GLTF binary with alpha-blended cards
+// and an untextured trunk. Every triangle is kept on the side its material says.
+TEST(gltf_import_of_other_makers, both_trees_keep_their_leaves_and_bark) {
+    const std::filesystem::path trees = std::filesystem::path(SYLVA_SOURCE_DIR) / "tests/data/trees";
+    const plant_model quaternius = import_plant_model(trees / "quaternius_common_tree_1/CommonTree_1.gltf", 256);
+    EXPECT_EQ(triangles_of(quaternius.lods[0], material_kind::leaf), 1920u);
+    EXPECT_EQ(triangles_of(quaternius.lods[0], material_kind::bark), 4345u);
+    const plant_model cesium = import_plant_model(trees / "cesium_tree.glb", 256);
+    EXPECT_EQ(triangles_of(cesium.lods[0], material_kind::leaf), 892u);
+    // 1,184 trunk triangles, 120 of them of zero area (dropped with a warning).
+    EXPECT_EQ(triangles_of(cesium.lods[0], material_kind::bark), 1064u);
+    for (const plant_model* p : {&quaternius, &cesium}) {
+        // The leaf texture keeps its cut-out: some texels transparent, some opaque.
+        std::size_t clear = 0, solid = 0;
+        for (std::size_t i = 3; i < p->leaf_texture.texels.size(); i += 4)
+            (p->leaf_texture.texels[i] < 128 ? clear : solid) += 1;
+        EXPECT_GT(clear, 0u);
+        EXPECT_GT(solid, 0u);
+        // Standing on the ground, a few metres tall.
+        glm::vec3 lo(1e9f), hi(-1e9f);
+        for (const vertex& v : p->lods[0].vertices) lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+        EXPECT_NEAR(lo.y, 0.0f, 0.3f);
+        EXPECT_GT(hi.y, 5.0f);
+    }
+}
+
+}  // namespace
+}  // namespace sylva
