@@ -66,6 +66,9 @@ struct draw_list {
     // free slot's record is scale 0. Empty when no ladder reaches LoDF.
     std::vector<instance_gpu> lodf_instances;
     std::vector<std::uint32_t> lodf_plants;  // by slot: the plant's dense index, k_no_draw_item when free
+    // By slot: the passes its foliage is drawn in (bit render_pass), like an item's: the view
+    // when visible, the cascades it overlaps when it is the plant's primary rung.
+    std::vector<std::uint32_t> lodf_pass_masks;
     std::vector<draw_batch> batches;
     std::vector<std::uint32_t> chunk_offsets;  // build scratch: items per chunk, prefix-summed
     std::vector<std::uint32_t> chunk_point_plants;  // build scratch: plants drawn as prefixes

@@ -87,6 +87,19 @@ public:
         }
     }
 
+    // The passes a plant is drawn in: the view's when it is visible, and each shadow cascade its
+    // bounding sphere overlaps when it is in shadow range.
+    std::uint32_t passes_of(const world_transform& t, const bounds& b, const lod_state& lod) const {
+        std::uint32_t mask = 0;
+        const glm::vec3 center = glm::vec3(t.position - m_camera.position) + glm::vec3(0.0f, b.center_height, 0.0f);
+        if (lod.visible) mask |= 1u << unsigned(render_pass::opaque);
+        if (lod.in_shadow_range)
+            for (int c = 0; c < m_cascade_count; ++c)
+                if (sphere_overlaps_cascade(m_cascades[std::size_t(c)], center, b.radius))
+                    mask |= 1u << unsigned(shadow_pass(c));
+        return mask;
+    }
+
     // `parts` are the plant's point/line parts, or one octree cell's (§6.1), whose prefixes
     // `prefix` holds; a split plant itself has none (its cells are classified one by one).
     plant_draws classify(const world_transform& t, const bounds& b, const plant_instance& p,
@@ -96,13 +109,8 @@ public:
         if (lod.current == representation::none) return d;
         const auto& species = m_library.species[static_cast<std::size_t>(p.species)];
         const glm::vec3 base{t.position - m_camera.position};
-        const glm::vec3 center = base + glm::vec3(0.0f, b.center_height, 0.0f);
         d.distance = glm::length(base);
-        if (lod.visible) d.pass_mask |= 1u << unsigned(render_pass::opaque);
-        if (lod.in_shadow_range)
-            for (int c = 0; c < m_cascade_count; ++c)
-                if (sphere_overlaps_cascade(m_cascades[std::size_t(c)], center, b.radius))
-                    d.pass_mask |= 1u << unsigned(shadow_pass(c));
+        d.pass_mask = passes_of(t, b, lod);
         // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
         // only names one for a visible plant); the primary alone casts.
         if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
@@ -399,18 +407,24 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     // items above carry the same fade).
     list.lodf_instances.resize(slots.slots.size());
     list.lodf_plants.resize(slots.slots.size());
+    list.lodf_pass_masks.resize(slots.slots.size());
     const cluster_changes* clusters = ctx.read<cluster_changes>().data();
     for (std::size_t s = 0; s < slots.slots.size(); ++s) {
         const lodf_slot& slot = slots.slots[s];
         instance_gpu& g = list.lodf_instances[s];
         g = instance_gpu{};
         list.lodf_plants[s] = slot.plant == k_no_lodf_slot ? k_no_draw_item : slot.plant;
+        list.lodf_pass_masks[s] = 0;
         if (slot.plant == k_no_lodf_slot) {
             g.scale = 0.0f;
             continue;
         }
         const bool partner = lods[slot.plant].current != representation::lodf;
         g = make_instance(cam, transforms[slot.plant], instances[slot.plant], fades[slot.plant], partner, library);
+        // Like every plant's items: the primary casts into the cascades it overlaps, a faded
+        // partner is drawn in the view only (Behrendt 2005 §2.3), so a plant in a band casts once.
+        const std::uint32_t passes = builder.passes_of(transforms[slot.plant], bounds_of[slot.plant], lods[slot.plant]);
+        list.lodf_pass_masks[s] = partner ? passes & (1u << unsigned(render_pass::opaque)) : passes;
         if (has_population) g.population = populations[slot.plant];
         if (!lods[slot.plant].visible) continue;
         const lodf_structure& lodf = library.lodf[slot.species];

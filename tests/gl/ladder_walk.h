@@ -60,6 +60,8 @@ public:
         return s;
     }
 
+    ecs::world& world() { return m_player.world(); }
+
 private:
     static player_options id_buffer() {
         player_options options;

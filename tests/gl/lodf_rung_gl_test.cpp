@@ -9,6 +9,10 @@
 
 #include "app/scenario_player.h"
 #include "gl_test_support.h"
+#include "ladder_walk.h"
+#include "lod/ladder.h"
+#include "resources/draw_list.h"
+#include "resources/lodf_slots.h"
 #include "scenarios/scenario_loader.h"
 
 namespace sylva {
@@ -81,6 +85,40 @@ TEST(lodf_rung_gl, a_moving_camera_uploads_only_the_changed_clusters) {
         changed_frames += p.records[f].lodf_changed_clusters > 0;
     }
     EXPECT_GT(changed_frames, 0u) << "the camera moves: the detail changes";
+}
+
+// Shadows cast from the active leaves (issue 23 item 3), once: a slot's foliage casts into the
+// cascades the plant overlaps when LoDF is the plant's primary rung, and is drawn in the view only
+// while it is the faded partner of another rung, which casts instead (Behrendt 2005 §2.3).
+TEST(lodf_rung_gl, its_foliage_casts_only_as_the_plants_primary_rung) {
+    SYLVA_REQUIRE_GL();
+    scenario s = tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.3f}}, 1);
+    ASSERT_TRUE(s.render.shadows);
+    testing::ladder_walk walk(s);
+    constexpr std::uint32_t k_view = 1u << unsigned(render_pass::opaque);
+    int primary = 0, partner = 0;
+    for (const float size_px : {400.0f, 170.0f, 160.0f, 150.0f, 140.0f, 130.0f, 80.0f}) {
+        SCOPED_TRACE(size_px);
+        const testing::walk_sample sample = walk.at(walk.distance_for(size_px));
+        ecs::world& world = walk.world();
+        const draw_list& list = world.resource<draw_list>();
+        const lod_state& lod = world.table<lod_state>().data()[0];
+        if (list.lodf_plants.empty() || list.lodf_plants[0] != 0) {
+            EXPECT_NE(lod.current, representation::lodf) << "on the rung without a slot";
+            continue;
+        }
+        const std::uint32_t mask = list.lodf_pass_masks[0];
+        EXPECT_TRUE(mask & k_view) << "the plant is in view";
+        if (lod.current == representation::lodf) {
+            ++primary;
+            EXPECT_NE(mask & ~k_view, 0u) << "LoDF is the primary: its leaves cast";
+        } else {
+            ++partner;
+            EXPECT_EQ(mask & ~k_view, 0u) << "LoDF is the partner: " << rung_name(lod.current) << " casts";
+        }
+    }
+    EXPECT_GT(primary, 0);
+    EXPECT_GT(partner, 0) << "the walk should cross the band";
 }
 
 TEST(lodf_rung_gl, the_frame_is_the_same_for_any_thread_count) {

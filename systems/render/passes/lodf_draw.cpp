@@ -1,5 +1,7 @@
 #include "systems/render/passes/lodf_draw.h"
 
+#include "resources/draw_list.h"
+#include "resources/sort_key.h"
 #include "systems/render/lodf_commands.h"
 #include "systems/render/renderer.h"
 
@@ -16,6 +18,9 @@ void lodf_draw::draw(pass_context& context, const draw_target& target) const {
     for (std::uint32_t s = 0; s < view.lodf->slots.size(); ++s) {
         const lodf_slot& slot = view.lodf->slots[s];
         if (slot.plant == k_no_lodf_slot || m_commands->slot_commands(s) == 0) continue;
+        const render_pass pass = shadow ? shadow_pass(target.cascade) : render_pass::opaque;
+        if (s >= view.draws->lodf_pass_masks.size() || !(view.draws->lodf_pass_masks[s] & (1u << unsigned(pass))))
+            continue;
         const lighting_variant lighting = view.library->species[slot.species].lighting;
         const surface_program& program = context.programs->surface(
             shadow ? pass_kind::shadow : pass_kind::view, material_kind::leaf, primitive_kind::triangles, lighting);
