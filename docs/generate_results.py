@@ -159,6 +159,12 @@ def index(pages):
     if os.path.exists(os.path.join(RESULTS, "budget_holding.md")):
         lines += ["", "How closely the auto ladder holds a frame time: [budget_holding.md](budget_holding.md) "
                       "(`docs/measure_budget_holding.sh`)."]
+    if os.path.exists(os.path.join(RESULTS, "lodf.md")):
+        lines += ["", "LoDF (Rebollo 2006): bytes and time per change, storage, quality at equal leaf count: "
+                      "[lodf.md](lodf.md) (`docs/measure_lodf.py`)."]
+    if os.path.exists(os.path.join(RESULTS, "implicit_lighting.md")):
+        lines += ["", "Implicit-surface illumination (Luft 2007): occlusion ranks, crown noise, run time, the bake: "
+                      "[implicit_lighting.md](implicit_lighting.md) (`docs/measure_implicit.py`)."]
     return "\n".join(lines) + "\n"
 
 
