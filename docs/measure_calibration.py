@@ -17,6 +17,8 @@ import subprocess
 import sys
 import tempfile
 
+import measure_meta
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 
@@ -52,11 +54,7 @@ def main():
             worst = max(worst, spread)
             label = f"{splats} splat" if what == "point" else "line"
             rows.append(f"| {d:g} | {label} | {median:.3f} | {min(values):.3f} – {max(values):.3f} | ±{spread:.1f} % |")
-    commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=ROOT,
-                           capture_output=True, text=True).stdout.strip()
-    if dirty:
-        commit += " with uncommitted changes"
+    commit = measure_meta.commit()
     seconds = [r["seconds"] for r in runs if "seconds" in r]
     page = [
         "# Results: the device calibration of primitive costs",

@@ -24,11 +24,12 @@ import argparse
 import datetime
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
+
+import measure_meta
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
@@ -43,26 +44,6 @@ PAIRS = ["baseline", "mesh_lod", "ladder", "points_lines"]
 def run(cmd, env=None):
     print("[implicit] " + " ".join(cmd), file=sys.stderr)
     return subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True, env=env).stdout
-
-
-def machine():
-    model = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    model = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    return f"{model}, {os.cpu_count()} cores"
-
-
-def commit():
-    c = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=ROOT,
-                           capture_output=True, text=True).stdout.strip()
-    return c + (" with uncommitted changes" if dirty else "")
 
 
 def folder_bytes(path):
@@ -157,7 +138,7 @@ def main():
     page = [
         "# Results: implicit-surface foliage illumination (Luft 2007)",
         "",
-        f"Measured {datetime.date.today().isoformat()} at commit `{commit()}` on {machine()}. "
+        f"Measured {datetime.date.today().isoformat()} at commit `{measure_meta.commit()}` on {measure_meta.machine()}. "
         f"Reproduce: `docs/measure_implicit.py --rounds {args.rounds} --frames {args.frames} --rays {args.rays} "
         f"--bench-scenarios {','.join(bench_scenarios)}"
         + "".join(f" --model {os.path.basename(m)}" for m in args.model) + "`. "

@@ -14,10 +14,11 @@ import argparse
 import datetime
 import json
 import os
-import platform
 import subprocess
 import sys
 import tempfile
+
+import measure_meta
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
@@ -28,19 +29,6 @@ IMPORTED = [("oak_hd", "broadleaf_hd", 2), ("spruce", "conifer", 5)]
 def run(cmd):
     print("[lodf] " + " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-
-
-def machine():
-    model = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    model = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    return f"{model}, {os.cpu_count()} cores"
 
 
 def main():
@@ -61,15 +49,11 @@ def main():
             bench = json.load(f)
         with open(quality_json) as f:
             quality = json.load(f)
-    commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=ROOT,
-                           capture_output=True, text=True).stdout.strip()
-    if dirty:
-        commit += " with uncommitted changes"
+    commit = measure_meta.commit()
     page = [
         "# Results: LoDF, continuous foliage level of detail (Rebollo 2006)",
         "",
-        f"Measured {datetime.date.today().isoformat()} at commit `{commit}` on {machine()}. "
+        f"Measured {datetime.date.today().isoformat()} at commit `{commit}` on {measure_meta.machine()}. "
         f"Reproduce: `docs/measure_lodf.py --steps {args.steps} --rounds {args.rounds}`. "
         "oak_hd and spruce are broadleaf_hd (seed 2) and conifer (seed 5) written as glTF by `sylva plant` "
         "and imported back.",
