@@ -153,20 +153,21 @@ def index(pages):
     lines += ["", "Per representation, every scenario's rows beside the engine baseline's:"]
     for file, (title, _, _) in REPRESENTATION_PAGES.items():
         lines.append(f"- [{title}]({file}.md)")
-    if os.path.exists(os.path.join(RESULTS, "calibration.md")):
-        lines += ["", "The device calibration's run-to-run spread: [calibration.md](calibration.md) "
-                      "(`docs/measure_calibration.py`)."]
-    if os.path.exists(os.path.join(RESULTS, "budget_holding.md")):
-        lines += ["", "How closely the auto ladder holds a frame time: [budget_holding.md](budget_holding.md) "
-                      "(`docs/measure_budget_holding.sh`)."]
-    if os.path.exists(os.path.join(RESULTS, "lodf.md")):
-        lines += ["", "LoDF (Rebollo 2006): bytes and time per change, storage, quality at equal leaf count: "
-                      "[lodf.md](lodf.md) (`docs/measure_lodf.py`)."]
-    if os.path.exists(os.path.join(RESULTS, "implicit_lighting.md")):
-        lines += ["", "Implicit-surface illumination (Luft 2007): occlusion ranks, crown noise, run time, the bake: "
-                      "[implicit_lighting.md](implicit_lighting.md) (`docs/measure_implicit.py`)."]
+    for file, text, script in MEASURED_PAGES:
+        if os.path.exists(os.path.join(RESULTS, file)):
+            lines += ["", f"{text}: [{file}]({file}) (`{script}`)."]
     return "\n".join(lines) + "\n"
 
+
+# Pages other scripts write, linked from the index when present: file, what it shows, script.
+MEASURED_PAGES = [
+    ("calibration.md", "The device calibration's run-to-run spread", "docs/measure_calibration.py"),
+    ("budget_holding.md", "How closely the auto ladder holds a frame time", "docs/measure_budget_holding.sh"),
+    ("lodf.md", "LoDF (Rebollo 2006): bytes and time per change, storage, quality at equal leaf count",
+     "docs/measure_lodf.py"),
+    ("implicit_lighting.md", "Implicit-surface illumination (Luft 2007): occlusion ranks, crown noise, run time, "
+     "the bake", "docs/measure_implicit.py"),
+]
 
 # One page per representation: its title, the bench families it shows and the lightings.
 REPRESENTATION_PAGES = {
