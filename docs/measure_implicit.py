@@ -253,10 +253,7 @@ def main():
         page.append(f"| {k} | {costs['normal_mapped'].get(k, 0):,} | {costs['implicit'].get(k, 0):,} |")
     page.append(f"| total | {sum(costs['normal_mapped'].values()):,} | {sum(costs['implicit'].values()):,} |")
     page.append("")
-    os.makedirs(os.path.join(ROOT, "docs", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "docs", "results", "implicit_lighting.md"), "w") as f:
-        f.write("\n".join(page))
-    print("wrote docs/results/implicit_lighting.md", file=sys.stderr)
+    measure_meta.write_page("implicit_lighting.md", page)
 
 
 if __name__ == "__main__":

@@ -116,10 +116,7 @@ def main():
         page.append(f"| {r['model']} | {r['level']} | {r['leaves']} | {r['size_px']:.0f} | {f1} | {s1} | {i1} | "
                     f"{r['rival']} | {f2} | {s2} | {i2} | {'yes' if r['lodf_better_on_all_three'] else 'no'} |")
     page += ["", f"LoDF is better on all three metrics in {wins} of {len(quality)} rows.", ""]
-    os.makedirs(os.path.join(ROOT, "docs", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "docs", "results", "lodf.md"), "w") as f:
-        f.write("\n".join(page))
-    print("wrote docs/results/lodf.md", file=sys.stderr)
+    measure_meta.write_page("lodf.md", page)
 
 
 if __name__ == "__main__":

@@ -1,8 +1,9 @@
-"""What every docs/measure_*.py page says about where its figures come from: the commit measured
-(marked when the work tree had uncommitted changes) and the machine."""
+"""What every docs/measure_*.py page shares: where its figures come from (the commit measured,
+marked when the work tree had uncommitted changes, and the machine) and how it is written."""
 import os
 import platform
 import subprocess
+import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -25,3 +26,11 @@ def machine():
     except OSError:
         pass
     return f"{model}, {os.cpu_count()} cores"
+
+
+def write_page(name, lines):
+    """Writes docs/results/<name> from the page's lines."""
+    os.makedirs(os.path.join(ROOT, "docs", "results"), exist_ok=True)
+    with open(os.path.join(ROOT, "docs", "results", name), "w") as f:
+        f.write("\n".join(lines))
+    print(f"wrote docs/results/{name}", file=sys.stderr)
