@@ -35,27 +35,26 @@ struct implicit_look_options {
     std::string json;
 };
 
+// The frame a player just drew: its image, and 1 where the ID buffer holds a plant.
 struct frame_look {
     image_rgba8 image;
-    std::vector<std::uint8_t> plants;  // 1 where the ID buffer holds a plant
+    std::vector<std::uint8_t> plants;
 };
 
-std::vector<frame_look> play(const scenario& s, const std::string& lighting, render::gl_context& context,
-                             bake_cache& cache) {
+frame_look step(scenario_player& player) {
+    (void)player.step();
+    frame_look look{player.capture(), {}};
+    const std::vector<std::uint32_t> ids = player.capture_plant_ids();
+    look.plants.resize(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) look.plants[i] = ids[i] != 0 ? 1 : 0;
+    return look;
+}
+
+player_options lit(const std::string& lighting) {
     player_options options;
     options.lighting = lighting;
     options.id_buffer = true;
-    scenario_player player(s, 0, &context, &cache, options);
-    std::vector<frame_look> out;
-    for (std::uint32_t f = 0; f < s.frames; ++f) {
-        (void)player.step();
-        frame_look look{player.capture(), {}};
-        const std::vector<std::uint32_t> ids = player.capture_plant_ids();
-        look.plants.resize(ids.size());
-        for (std::size_t i = 0; i < ids.size(); ++i) look.plants[i] = ids[i] != 0 ? 1 : 0;
-        out.push_back(std::move(look));
-    }
-    return out;
+    return options;
 }
 
 struct look_result {
@@ -64,20 +63,24 @@ struct look_result {
     crown_texture normal, implicit;
 };
 
-look_result measure(scenario s, render::gl_context& context, bake_cache& cache) {
+// Both lightings played frame by frame side by side (each player draws into its own targets),
+// so a walk of any length holds two frames at a time.
+look_result measure(const scenario& s, render::gl_context& context, bake_cache& cache) {
     look_result r;
     r.scenario = s.name;
     r.frames = s.frames;
-    spdlog::info("{}: {} frames lit by the species' normals", s.name, s.frames);
-    const std::vector<frame_look> normal = play(s, "normal_mapped", context, cache);
-    spdlog::info("{}: {} frames lit by the implicit surface (Luft 2007)", s.name, s.frames);
-    const std::vector<frame_look> implicit = play(s, "implicit", context, cache);
-    for (std::size_t f = 0; f < normal.size(); ++f) {
-        std::vector<std::uint8_t> both(normal[f].plants.size());
-        for (std::size_t i = 0; i < both.size(); ++i) both[i] = normal[f].plants[i] & implicit[f].plants[i];
+    spdlog::info("{}: {} frames, lit by the species' normals and by the implicit surface (Luft 2007)", s.name,
+                 s.frames);
+    scenario_player normal_player(s, 0, &context, &cache, lit("normal_mapped"));
+    scenario_player implicit_player(s, 0, &context, &cache, lit("implicit"));
+    for (std::uint32_t f = 0; f < s.frames; ++f) {
+        const frame_look normal = step(normal_player);
+        const frame_look implicit = step(implicit_player);
+        std::vector<std::uint8_t> both(normal.plants.size());
+        for (std::size_t i = 0; i < both.size(); ++i) both[i] = normal.plants[i] & implicit.plants[i];
         const std::vector<std::uint8_t> crown = mask_interior(both, s.width, s.height, 2);
-        r.normal = pooled(r.normal, crown_texture_of(normal[f].image, crown));
-        r.implicit = pooled(r.implicit, crown_texture_of(implicit[f].image, crown));
+        r.normal = pooled(r.normal, crown_texture_of(normal.image, crown));
+        r.implicit = pooled(r.implicit, crown_texture_of(implicit.image, crown));
     }
     return r;
 }

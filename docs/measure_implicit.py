@@ -34,7 +34,6 @@ import measure_meta
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 GENERATED = ["broadleaf", "broadleaf_hd", "conifer", "shrub"]
-IMPORTED = [("oak_hd", "broadleaf_hd", 2), ("spruce", "conifer", 5)]
 # Trees made by other makers and tools (tests/data/trees/README.md).
 OTHERS = ["tests/data/trees/quaternius_common_tree_1/CommonTree_1.gltf", "tests/data/trees/cesium_tree.glb"]
 LOOK_SCENARIOS = ["single_tree", "forest", "default"]
@@ -97,11 +96,7 @@ def main():
     bench_scenarios = [s for s in args.bench_scenarios.split(",") if s]
     only = ",".join(p + suffix for p in PAIRS for suffix in ["", "_implicit"])
     with tempfile.TemporaryDirectory() as tmp:
-        models = list(GENERATED)
-        for name, preset, seed in IMPORTED:
-            path = os.path.join(tmp, name + ".glb")
-            run([SYLVA, "plant", preset, "--seed", str(seed), "--out", path])
-            models.append(path)
+        models = GENERATED + measure_meta.export_imported(tmp, run)
         models += [os.path.join(ROOT, m) for m in OTHERS] + [os.path.abspath(m) for m in args.model]
         ao = {}
         for label, extra in [("default", []), ("every foliage triangle a generator", ["--generator-fraction", "1"])]:

@@ -23,7 +23,6 @@ import measure_meta
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 GENERATED = ["broadleaf", "broadleaf_hd", "conifer", "shrub"]
-IMPORTED = [("oak_hd", "broadleaf_hd", 2), ("spruce", "conifer", 5)]
 
 
 def run(cmd):
@@ -37,11 +36,7 @@ def main():
     parser.add_argument("--rounds", type=int, default=5)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        models = list(GENERATED)
-        for name, preset, seed in IMPORTED:
-            path = os.path.join(tmp, name + ".glb")
-            run([SYLVA, "plant", preset, "--seed", str(seed), "--out", path])
-            models.append(path)
+        models = GENERATED + measure_meta.export_imported(tmp, run)
         bench_json, quality_json = os.path.join(tmp, "bench.json"), os.path.join(tmp, "quality.json")
         run([SYLVA, "lodf-bench", *models, "--steps", str(args.steps), "--rounds", str(args.rounds), "--json", bench_json])
         run([SYLVA, "lodf-quality", *models, "--json", quality_json])

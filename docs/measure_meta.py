@@ -6,6 +6,19 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
+# Trees written as glTF by `sylva plant` and read back through the importer: name, preset, seed.
+IMPORTED = [("oak_hd", "broadleaf_hd", 2), ("spruce", "conifer", 5)]
+
+
+def export_imported(folder, run):
+    """Writes the IMPORTED trees into `folder` with `run` (a command runner); their paths."""
+    paths = []
+    for name, preset, seed in IMPORTED:
+        path = os.path.join(folder, name + ".glb")
+        run([SYLVA, "plant", preset, "--seed", str(seed), "--out", path])
+        paths.append(path)
+    return paths
 
 
 def commit():

@@ -220,14 +220,28 @@ implicit_settings thresholds_from(const std::vector<glm::vec3>& generators, impl
     return s;
 }
 
+// The settings with ρ, τ and d_min filled in, and Σ D_i sampled at the cells they give: the bake
+// reads the same samples for the defaults' median, the iso-surface and every vertex's F.
+struct sampled_defaults {
+    implicit_settings used;
+    density_grid grid;
+};
+
+sampled_defaults sample_with_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
+    if (!(s.rho_m > 0.0f)) s.rho_m = default_rho(generators);
+    density_grid grid = sample_density(implicit_field(generators, s.rho_m, 0.0f), s.rho_m / s.cells_per_rho);
+    return {thresholds_from(generators, s, grid), std::move(grid)};
+}
+
 }  // namespace
 
 implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
     if (generators.empty()) return s;
-    if (!(s.rho_m > 0.0f)) s.rho_m = default_rho(generators);
-    if (s.tau > 0.0f && s.d_min > 0.0f) return s;
-    const implicit_field unthresholded(generators, s.rho_m, 0.0f);
-    return thresholds_from(generators, s, sample_density(unthresholded, s.rho_m / s.cells_per_rho));
+    if (s.tau > 0.0f && s.d_min > 0.0f) {
+        if (!(s.rho_m > 0.0f)) s.rho_m = default_rho(generators);
+        return s;
+    }
+    return sample_with_defaults(generators, s).used;
 }
 
 void apply_implicit_illumination(mesh_data& mesh, const density_grid& grid, const iso_surface& surface,
@@ -268,11 +282,8 @@ implicit_report bake_implicit_illumination(plant_model& plant, const implicit_se
     report.used = settings;
     report.generators = generators.size();
     if (generators.empty()) return report;  // no foliage: nothing to light by its shape
-    // Σ D_i sampled once: the defaults' median, the iso-surface and every vertex's F read it.
-    if (!(report.used.rho_m > 0.0f)) report.used.rho_m = default_rho(generators);
-    const density_grid grid = sample_density(implicit_field(generators, report.used.rho_m, 0.0f),
-                                             report.used.rho_m / report.used.cells_per_rho);
-    report.used = thresholds_from(generators, report.used, grid);
+    const auto [used, grid] = sample_with_defaults(generators, settings);
+    report.used = used;
     const implicit_field field(generators, report.used.rho_m, report.used.tau);
     const iso_surface surface = extract_iso_surface(field, grid);
     report.surface_vertices = surface.positions.size();
