@@ -433,9 +433,12 @@ std::uint64_t scenario_player::state_hash() const {
         h = fnv1a(&fades.data()[i].value, sizeof(float), h);
         h = fnv1a(&fades.data()[i].partner, sizeof(representation), h);
     }
+    const auto& clusters = m_world.table<cluster_changes>();
+    h = lodf_state_hash(m_world.resource<lodf_slots>(), std::span(clusters.data(), clusters.size()), h);
     const draw_list& draws = m_world.resource<draw_list>();
     h = fnv1a(draws.items.data(), draws.items.size() * sizeof(draw_item), h);
     h = fnv1a(draws.instances.data(), draws.instances.size() * sizeof(instance_gpu), h);
+    h = fnv1a(draws.lodf_instances.data(), draws.lodf_instances.size() * sizeof(instance_gpu), h);
     return h;
 }
 

@@ -2,7 +2,8 @@
 """Measures LoDF (Rebollo 2006; issue 23) on the generated trees and on two trees imported from
 glTF, and writes docs/results/lodf.md: bytes and extraction time per change against
 re-extracting the whole foliage (the paper's §5 traversal), storage against Eq. 9, and image
-quality at equal leaf count against leaf shrink and the mesh levels.
+quality at equal leaf count against leaf shrink and the mesh levels, and the cluster system's
+cost with 1,000 plants on the rung (build/bin/lodf_update_bench).
 
 Usage: docs/measure_lodf.py [--steps 100] [--rounds 5]
 
@@ -22,12 +23,30 @@ import measure_meta
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
+ECS_BENCH = os.path.join(ROOT, "build", "bin", "lodf_update_bench")
 GENERATED = ["broadleaf", "broadleaf_hd", "conifer", "shrub"]
 
 
 def run(cmd):
     print("[lodf] " + " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+
+
+def ecs_cost(rounds):
+    """The LoDF system's time per frame for 1, 2 and 4 threads (medians of `rounds` repetitions),
+    with the state hash each thread count ends its walk with."""
+    print(f"[lodf] {ECS_BENCH} ({rounds} repetitions)", file=sys.stderr)
+    out = subprocess.run([ECS_BENCH, f"--benchmark_repetitions={rounds}", "--benchmark_format=json"],
+                         check=True, capture_output=True, text=True).stdout
+    runs = json.loads(out)["benchmarks"]
+    rows = {}
+    for threads in (1, 2, 4):
+        mine = [b for b in runs if b.get("run_type") == "iteration" and b["name"].startswith(f"lodf_update/{threads}/")]
+        times = sorted(b["real_time"] for b in mine)
+        rows[threads] = {"ms": times[len(times) // 2], "labels": {b.get("label", "") for b in mine},
+                         "changed": mine[0]["changed_clusters_per_frame"], "clusters": mine[0]["clusters"],
+                         "plants": mine[0]["plants_on_rung"], "leaves": mine[0]["leaves_per_plant"]}
+    return rows
 
 
 def main():
@@ -44,6 +63,7 @@ def main():
             bench = json.load(f)
         with open(quality_json) as f:
             quality = json.load(f)
+    ecs = ecs_cost(args.rounds)
     commit = measure_meta.commit()
     page = [
         "# Results: LoDF, continuous foliage level of detail (Rebollo 2006)",
@@ -111,6 +131,24 @@ def main():
         page.append(f"| {r['model']} | {r['level']} | {r['leaves']} | {r['size_px']:.0f} | {f1} | {s1} | {i1} | "
                     f"{r['rival']} | {f2} | {s2} | {i2} | {'yes' if r['lodf_better_on_all_three'] else 'no'} |")
     page += ["", f"LoDF is better on all three metrics in {wins} of {len(quality)} rows.", ""]
+    labels = set().union(*(r["labels"] for r in ecs.values()))
+    one = ecs[1]
+    page += [
+        "## The cluster system with 1,000 plants on the rung",
+        "",
+        f"{one['plants']:.0f} broadleaf trees ({one['leaves']:.0f} leaves, {one['clusters'] / one['plants']:.0f} clusters "
+        f"each: {one['clusters']:.0f} cluster entities) on the LoDF rung, a camera walking 1.5 m a frame through them "
+        "(`build/bin/lodf_update_bench`, the walk of tests/systems/lodf_crowd.h): update_lodf's time per frame "
+        f"(slots, the walk over Changed_group, Eq. 10–13), median of {args.rounds} repetitions; "
+        f"{one['changed']:.0f} clusters change per frame.",
+        "",
+        "| threads | ms per frame | state after the walk |",
+        "|---:|---:|---|",
+    ]
+    for threads, r in ecs.items():
+        page.append(f"| {threads} | {r['ms']:.3f} | {', '.join(sorted(r['labels']))} |")
+    page += ["", "The state is bit-identical for 1, 2 and 4 threads." if len(labels) == 1 and "no walk" not in labels
+             else "**The state differs between thread counts.**", ""]
     measure_meta.write_page("lodf.md", page)
 
 

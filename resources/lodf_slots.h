@@ -11,11 +11,11 @@
 
 namespace sylva {
 
-// Plants on the LoDF rung at once. Each holds clusters_per_slot cluster entities and as many
-// 20-byte commands: 32 slots of broadleaf_hd's 120 clusters are 3,840 entities and 77 KB of
-// commands. A plant beyond them is drawn as mesh_full (the same plant at full detail) and
-// counted in `overflow`; the rung is for the nearest plants, which a ladder keeps few.
-inline constexpr std::uint32_t k_lodf_slots = 32;
+// Plants on the LoDF rung at once: a scenario's lod.lodf_slots (32 unless it says). Each holds
+// clusters_per_slot cluster entities and as many 20-byte commands: 32 slots of broadleaf_hd's
+// 120 clusters are 3,840 entities and 77 KB of commands. A plant beyond them is drawn as
+// mesh_full (the same plant at full detail) and counted in `overflow`; the rung is for the
+// nearest plants, which a ladder keeps few.
 inline constexpr std::uint32_t k_no_lodf_slot = std::numeric_limits<std::uint32_t>::max();
 
 struct lodf_slot {
@@ -28,7 +28,7 @@ struct lodf_slot {
 };
 
 struct lodf_slots {
-    std::vector<lodf_slot> slots;            // k_lodf_slots when a ladder reaches lodf, else none
+    std::vector<lodf_slot> slots;            // lod.lodf_slots when a ladder reaches lodf, else none
     std::uint32_t clusters_per_slot = 0;     // the most clusters of any species
     std::vector<std::uint32_t> slot_of_plant;  // by dense plant index
     std::uint32_t overflow = 0;              // plants on the rung this frame without a slot

@@ -204,6 +204,11 @@
 //                                       colour error per plant pixel (of 1, in the same tables)
 //                                       is at most this; not with plant_budget_ms or
 //                                       target_frame_ms
+//     lodf_slots         integer 32     1 .. 65536; plants a ladder with a "lodf" rung can
+//                                       draw by LoDF at once (each slot holds the species'
+//                                       cluster entities and indirect commands); a plant that
+//                                       reaches the rung takes a free one and keeps it while it
+//                                       stays; one without a free slot draws mesh_full
 //     ladder             array   none   1 .. 8 rungs, nearest first, for representation
 //                                       "ladder"; none: the papers' ladder (lod/ladder.h
 //                                       papers_ladder). Each {
@@ -411,6 +416,7 @@ struct lod_settings {
     std::vector<ladder_step_settings> ladder;  // empty: the papers' ladder (lod/ladder.h)
     double plant_budget_ms = 0.0;  // ladder: rungs chosen by measured tables within this cost
     double max_error = 0.0;        // ladder: the cheapest rung within this error per plant pixel
+    std::uint32_t lodf_slots = 32;  // plants on the LoDF rung at once (resources/lodf_slots.h)
     bool operator==(const lod_settings&) const = default;
 };
 

@@ -364,6 +364,7 @@ const field_table<lod_settings>& lod_fields() {
                                        [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
                                   .number("plant_budget_ms", &t::plant_budget_ms, {0.0, 1e5})
                                   .number("max_error", &t::max_error, {0.0, 1.0})
+                                  .integer("lodf_slots", &t::lodf_slots, {1, 65536})
                                   .check([](const json_node& n, const t& s) {
                                       if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
                                           n.find("target_frame_ms")

@@ -415,23 +415,6 @@ void spawn_octree_cells(ecs::world& world, const species_library& library) {
     if (!cells.empty()) world.align<octree_cell, cell_prefix>();
 }
 
-// Rebollo 2006: when a ladder reaches LoDF, k_lodf_slots slots of foliage-cluster entities (one
-// per cluster of the species with the most), slot by slot, and the slots resource over them
-// (resources/lodf_slots.h); none otherwise.
-void spawn_lodf_clusters(ecs::world& world, const species_library& library) {
-    lodf_slots slots;
-    for (const species_entry& species : library.species)
-        slots.clusters_per_slot = std::max(slots.clusters_per_slot, species.lodf_clusters);
-    if (slots.clusters_per_slot > 0) {
-        slots.slots.resize(k_lodf_slots);
-        slots.changed.resize(k_lodf_slots);
-        for (auto& c : slots.changed) c.reserve(slots.clusters_per_slot);
-        for (std::size_t i = 0; i < std::size_t(k_lodf_slots) * slots.clusters_per_slot; ++i)
-            world.emplace<cluster_changes>(world.create());
-    }
-    world.set_resource(std::move(slots));
-}
-
 // Deussen 2002 §6.2: with eco tiles on, plants are created tile by tile (each tile's plants a
 // contiguous range of the component tables) and the tiles become entities that culling walks.
 std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_assets& assets) {
@@ -455,7 +438,7 @@ std::size_t spawn_plants(ecs::world& world, const scenario& s, const scene_asset
     }
     world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
     spawn_octree_cells(world, assets.library);
-    spawn_lodf_clusters(world, assets.library);
+    spawn_lodf_clusters(world, assets.library, s.lod.lodf_slots);
     return plants.size();
 }
 
@@ -485,6 +468,20 @@ void spawn_viewer_and_sky(ecs::world& world, const scenario& s, const scene_asse
 }
 
 }  // namespace
+
+void spawn_lodf_clusters(ecs::world& world, const species_library& library, std::uint32_t slot_count) {
+    lodf_slots slots;
+    for (const species_entry& species : library.species)
+        slots.clusters_per_slot = std::max(slots.clusters_per_slot, species.lodf_clusters);
+    if (slots.clusters_per_slot > 0) {
+        slots.slots.resize(slot_count);
+        slots.changed.resize(slot_count);
+        for (auto& c : slots.changed) c.reserve(slots.clusters_per_slot);
+        for (std::size_t i = 0; i < std::size_t(slot_count) * slots.clusters_per_slot; ++i)
+            world.emplace<cluster_changes>(world.create());
+    }
+    world.set_resource(std::move(slots));
+}
 
 // Cells per side of the receivers' height grid (resources/shadow_receivers.h): 47 m on landscape's
 // 3 km terrain, finer than a near cascade's slice.

@@ -38,6 +38,12 @@ struct spawn_report {
 // query over plants is a linear walk.
 spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_assets& assets);
 
+// Rebollo 2006: when a species has LoDF clusters, `slot_count` (lod.lodf_slots) slots of
+// foliage-cluster entities (one per cluster of the species with the most), slot by slot, and the
+// slots resource over them (resources/lodf_slots.h); an empty resource otherwise. Part of
+// spawn_scenario, and for worlds built by hand (tests, benchmarks).
+void spawn_lodf_clusters(ecs::world& world, const species_library& library, std::uint32_t slot_count);
+
 // Scenario keyframes with heights above the terrain resolved to absolute world positions.
 std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const heightfield& terrain);
 

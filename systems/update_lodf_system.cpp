@@ -7,6 +7,7 @@
 #include "ecs/parallel.h"
 #include "lod/lodf.h"
 #include "lod/point_line_lod.h"
+#include "models/cache/bake_cache.h"
 
 namespace sylva {
 
@@ -21,6 +22,22 @@ float lodf_top_px(const ladder& l) {
     for (std::size_t i = 1; i < l.count; ++i)
         if (l.rungs[i] == representation::lodf) return l.below_px[i] * (1.0f + l.band[i]);
     return 0.0f;
+}
+
+std::uint64_t lodf_state_hash(const lodf_slots& slots, std::span<const cluster_changes> clusters, std::uint64_t seed) {
+    const auto add = [&seed](const auto& value) { seed = hash_bytes(std::as_bytes(std::span(&value, 1)), seed); };
+    for (const lodf_slot& slot : slots.slots) {
+        add(slot.plant);
+        add(slot.species);
+        add(slot.init_position);
+        add(slot.leaves);
+        add(slot.taken);
+    }
+    add(slots.overflow);
+    add(slots.changed_clusters);
+    for (const std::vector<std::uint32_t>& changed : slots.changed)
+        seed = hash_bytes(std::as_bytes(std::span(changed)), seed);
+    return hash_bytes(std::as_bytes(clusters), seed);  // cluster_changes: three u32, no padding
 }
 
 void update_lodf_system::run(ecs::system_context<update_lodf_system>& ctx) {

@@ -4,6 +4,8 @@
 // species has at the size where the rung takes over, falling with the plant's projected area,
 // L·(size / S_top)², down to one per cluster. The walk over Changed_group then updates the
 // slot's cluster entities (Eq. 10–13), slots in parallel chunks.
+#include <span>
+
 #include "components/camera.h"
 #include "components/cluster_changes.h"
 #include "components/fade_alpha.h"
@@ -26,6 +28,11 @@ std::uint32_t lodf_leaves_at(std::uint32_t leaves, std::uint32_t clusters, float
 // The projected size below which the ladder's LoDF rung is whole: the upper edge of the band
 // into it; 0 when LoDF is the nearest rung or the ladder has none.
 float lodf_top_px(const ladder& l);
+
+// FNV-1a 64 of what update_lodf writes: the slots (field by field: lodf_slot has padding) and
+// every cluster entity's counters, chained from `seed`. Equal for any thread count (the
+// determinism tests and the player's state hash compare it).
+std::uint64_t lodf_state_hash(const lodf_slots& slots, std::span<const cluster_changes> clusters, std::uint64_t seed);
 
 struct update_lodf_system {
     static constexpr std::string_view k_name = "update_lodf";

@@ -63,13 +63,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
         m_programs.prepare(m_meshes.get(id));
     }
     setup_instance_attributes(m_meshes.vertex_array());
-    std::uint32_t lodf_clusters = 0;
-    for (const species_entry& species : assets.library.species) lodf_clusters = std::max(lodf_clusters, species.lodf_clusters);
-    if (lodf_clusters > 0) {
-        m_lodf = std::make_unique<lodf_commands>(k_lodf_slots, lodf_clusters);
-        m_lodf_species.assign(k_lodf_slots, k_no_lodf_slot);
-        m_lodf_draw.set_commands(m_lodf.get());
-    }
+    for (const species_entry& species : assets.library.species)
+        m_lodf_clusters = std::max(m_lodf_clusters, species.lodf_clusters);
     if (settings.shadows)
         m_shadow_maps =
             std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
@@ -196,8 +191,15 @@ void renderer::render(const frame_view& view) {
 
 void renderer::update_lodf(const frame_view& view) {
     m_lodf_bytes = 0;
-    if (!m_lodf || !view.lodf || !view.library) return;
+    if (m_lodf_clusters == 0 || !view.lodf || !view.library || view.lodf->slots.empty()) return;
     const lodf_slots& slots = *view.lodf;
+    // The commands are sized by the first frame's slots (the scenario's lod.lodf_slots), which
+    // spawn fixed for the world's life.
+    if (!m_lodf || m_lodf_species.size() != slots.slots.size()) {
+        m_lodf = std::make_unique<lodf_commands>(std::uint32_t(slots.slots.size()), m_lodf_clusters);
+        m_lodf_species.assign(slots.slots.size(), k_no_lodf_slot);
+        m_lodf_draw.set_commands(m_lodf.get());
+    }
     for (std::uint32_t s = 0; s < slots.slots.size() && s < m_lodf_species.size(); ++s) {
         const lodf_slot& slot = slots.slots[s];
         if (slot.plant == k_no_lodf_slot) {

@@ -146,7 +146,8 @@ private:
     float m_ground_uv_scale = 4.0f;
     // Rebollo 2006: the LoDF slots' indirect commands, when a species has LoDF foliage; the
     // species each slot's commands were written for (k_no_lodf_slot: none).
-    std::unique_ptr<lodf_commands> m_lodf;
+    std::uint32_t m_lodf_clusters = 0;  // the most LoDF clusters of any species; 0: no LoDF
+    std::unique_ptr<lodf_commands> m_lodf;  // created by update_lodf for the world's slots
     std::vector<std::uint32_t> m_lodf_species;
 
     // The representations, in the order the surface passes draw them (passes/pass_context.h).
