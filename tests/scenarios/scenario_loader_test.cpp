@@ -405,7 +405,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "representation, sample_distance_px, splat_factor, splats, fog_weighted_samples, "
          "primitive_budget, "
          "target_frame_ms, "
-         "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder, plant_budget_ms, max_error"},
+         "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder, plant_budget_ms, max_error, lodf_slots"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);
@@ -863,14 +863,16 @@ TEST(scenario_loader, billboard_cloud_fields_load_default_and_round_trip) {
     EXPECT_EQ(d.lod.cloud_distance_m, 30.0f);  // Behrendt 2005 §2.3: "closer than 30 meters"
     EXPECT_EQ(d.lod.lighting, "normal_mapped");
     EXPECT_EQ(d.lod.sh_bands, 3u);
+    EXPECT_EQ(d.lod.lodf_slots, 32u);
     EXPECT_EQ(d.species[0].lighting, "scenario");
 }
 
 TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
     json j = minimal();
-    j["lod"] = {{"lighting", "sh"}, {"sh_bands", 2}, {"sh_interreflection", true}};
+    j["lod"] = {{"lighting", "sh"}, {"sh_bands", 2}, {"sh_interreflection", true}, {"lodf_slots", 1000}};
     j["species"][0]["lighting"] = "pre_lit";
     const scenario s = load(j);
+    EXPECT_EQ(s.lod.lodf_slots, 1000u);
     EXPECT_EQ(s.lod.lighting, "sh");
     EXPECT_EQ(s.lod.sh_bands, 2u);
     EXPECT_TRUE(s.lod.sh_interreflection);
@@ -907,6 +909,8 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
                   "\"shiny\""});
     expect_error(set(minimal(), "/lod/sh_bands", 4),
                  {"/lod/sh_bands", "out of range; expected an integer from 2 to 3", "4"});
+    expect_error(set(minimal(), "/lod/lodf_slots", 0),
+                 {"/lod/lodf_slots", "out of range; expected an integer from 1 to 65536", "0"});
     expect_error(
         set(minimal(), "/species/0/lighting", "sh3"),
         {"/species/0/lighting",
