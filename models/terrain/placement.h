@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
+#include "models/random.h"
 #include "models/terrain/density.h"
 #include "models/terrain/terrain.h"
 
@@ -17,6 +18,10 @@ struct placement {
     std::uint32_t seed = 0;  // per-plant variation seed
     std::uint16_t tint = 0;  // per-plant colour variation, 0..65535
 };
+
+// A plant at `xz` with its scale, yaw, variation seed and tint drawn from `random` in that
+// order (both placement modes and models/terrain/wang_tiles.h).
+placement make_placement(glm::dvec2 xz, float scale_min, float scale_max, rng& random);
 
 // What a population may grow on and how it is spread. area = {x0, z0, x1, z1}, x0 < x1,
 // z0 < z1; points lie in [x0, x1) x [z0, z1).
