@@ -79,7 +79,12 @@
 //     max_slope_deg  number     35           0 .. 90
 //     min_altitude_m number     -1e9         -1e9 .. 1e9; no plants where the terrain is lower
 //     max_altitude_m number     1e9          -1e9 .. 1e9; nor higher; must be >= min_altitude_m
-//     placement      string     "poisson"    "poisson" (dart throwing) or "jittered" (grid)
+//     placement      string     "poisson"    "poisson" (dart throwing), "jittered" (grid) or
+//                                            "wang_tiles" (Behrendt 2005 §3.4: the plants of the
+//                                            scenario's Wang tiling, wang_tiles below, at `count`
+//                                            over the area's density; a tile type is the same
+//                                            plants wherever it lies, so slope, altitude and
+//                                            density rules cannot be given but at their defaults)
 //     density_map    file path  none         greyscale PNG over the area (white: plants kept,
 //                                            black: none; row 0 at z0); not with density
 //     density {                 none         procedural density (models/terrain/density.h)
@@ -134,6 +139,12 @@
 //   render {
 //     shadows   boolean  true
 //     exposure  number   1     0.001 .. 1000
+//   }
+//   wang_tiles {  Behrendt 2005 §3.4 (models/terrain/wang_tiles.h): the tiling every population
+//                 with placement "wang_tiles" shares
+//     tile_size_m  number   32    1 .. 10000; at least 5.41 x the min_spacing_m of each such
+//                                 population (corner squares, edge strips and an interior)
+//     colours      integer  2     2 .. 4 corner colours: colours^4 tiles
 //   }
 //   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true
@@ -236,7 +247,7 @@ inline constexpr std::array<std::string_view, 7> k_tree_generators = {
     "broadleaf", "broadleaf_hd", "conifer", "shrub", "grass", "flower", "fern"};
 
 // How a population is spread (models/terrain/placement.h placement_rules::poisson).
-inline constexpr std::array<std::string_view, 2> k_placement_modes = {"poisson", "jittered"};
+inline constexpr std::array<std::string_view, 3> k_placement_modes = {"poisson", "jittered", "wang_tiles"};
 
 struct terrain_settings {
     double size_m = 400.0;
@@ -383,6 +394,12 @@ struct render_settings {
     bool operator==(const render_settings&) const = default;
 };
 
+struct wang_tile_settings {
+    double tile_size_m = 32.0;
+    std::uint32_t colours = 2;
+    bool operator==(const wang_tile_settings&) const = default;
+};
+
 struct eco_tile_settings {
     bool enabled = true;
     std::uint32_t max_plants_per_tile = 256;
@@ -437,6 +454,7 @@ struct scenario {
     environment_settings environment;
     shadow_settings shadows;
     render_settings render;
+    wang_tile_settings wang_tiles;
     eco_tile_settings eco_tiles;
     lod_settings lod;
     bool operator==(const scenario&) const = default;

@@ -7,6 +7,7 @@
 
 #include "io/input_file.h"
 #include "io/json_nesting.h"
+#include "models/terrain/wang_tile_rules.h"
 #include "scenarios/json_reader.h"
 #include "scenarios/ladder_fields.h"
 #include "scenarios/embedded_files.h"
@@ -214,6 +215,20 @@ const field_table<population_settings>& population_fields() {
                                p.max_altitude_m, false);
                 if (p.density.enabled && !p.density_map.empty())
                     n.find("density")->fail("give either density_map or density, not both");
+                // A rule at its default value is no rule (and is what the writer writes back).
+                static const population_settings no_rules;
+                const bool ruled[] = {p.max_slope_deg != no_rules.max_slope_deg,
+                                      p.min_altitude_m != no_rules.min_altitude_m,
+                                      p.max_altitude_m != no_rules.max_altitude_m, !p.density_map.empty(),
+                                      p.density.enabled};
+                const char* const keys[] = {"max_slope_deg", "min_altitude_m", "max_altitude_m", "density_map",
+                                            "density"};
+                if (p.placement == "wang_tiles")
+                    for (std::size_t k = 0; k < std::size(keys); ++k)
+                        if (ruled[k])
+                            n.find(keys[k])->fail("a population with placement \"wang_tiles\" is its tiles' plants wherever a "
+                                        "tile lies (so a shell of the tile shows exactly them): slope, altitude and "
+                                        "density rules cannot apply to it");
             });
     return table;
 }
@@ -335,6 +350,32 @@ const field_table<render_settings>& render_fields() {
     return table;
 }
 
+const field_table<wang_tile_settings>& wang_tile_fields() {
+    using t = wang_tile_settings;
+    static const auto table = field_table<t>()
+                                  .number("tile_size_m", &t::tile_size_m, {1.0, 10000.0})
+                                  .integer("colours", &t::colours, {2, 4});
+    return table;
+}
+
+// Every population with placement "wang_tiles" fits the scenario's tiles (its spacing leaves the
+// tile an interior; models/terrain/wang_tiles.h wang_rules_problem).
+void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
+    for (std::size_t i = 0; i < s.populations.size(); ++i) {
+        const population_settings& p = s.populations[i];
+        if (p.placement != "wang_tiles") continue;
+        wang_tile_rules rules;
+        rules.tile_size_m = s.wang_tiles.tile_size_m;
+        rules.colours = s.wang_tiles.colours;
+        rules.min_spacing_m = p.min_spacing_m;
+        if (const std::string problem = wang_rules_problem(rules); !problem.empty()) {
+            const json_node population = n.find("populations")->at(i);
+            const auto spacing = population.find("min_spacing_m");
+            (spacing ? *spacing : population).fail(problem + " (wang_tiles.tile_size_m)");
+        }
+    }
+}
+
 const field_table<eco_tile_settings>& eco_tile_fields() {
     using t = eco_tile_settings;
     static const auto table =
@@ -410,8 +451,10 @@ const field_table<scenario>& scenario_fields() {
             .object("environment", &t::environment, environment_fields())
             .object("shadows", &t::shadows, shadow_fields())
             .object("render", &t::render, render_fields())
+            .object("wang_tiles", &t::wang_tiles, wang_tile_fields())
             .object("eco_tiles", &t::eco_tiles, eco_tile_fields())
-            .object("lod", &t::lod, lod_fields());
+            .object("lod", &t::lod, lod_fields())
+            .check(expect_wang_tiles_fit);
     return table;
 }
 

@@ -40,6 +40,7 @@
 #include "resources/shadow_receivers.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/species_models.h"
+#include "setup/wang_populations.h"
 
 namespace sylva {
 namespace {
@@ -371,8 +372,12 @@ std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& as
                                     pop.scale_min,     pop.scale_max,      pop.max_slope_deg,
                                     pop.min_altitude_m, pop.max_altitude_m, pop.placement == "poisson",
                                     density.values.empty() ? nullptr : &density};
-        const auto placed = place_population(assets.terrain, rules, hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
-        if (placed.size() < pop.count)
+        const auto placed = pop.placement == "wang_tiles"
+                                ? place_wang_population(s, p)
+                                : place_population(assets.terrain, rules, hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
+        // Wang tiles place for the density `count` asks, so a few more or fewer come out.
+        const double expected = pop.placement == "wang_tiles" ? 0.9 * double(pop.count) : double(pop.count);
+        if (double(placed.size()) < expected)
             warn_once(fmt::format(
                 "population {} ({}): placed {} of {} plants (spacing, slope, altitude or "
                 "density left no room)",

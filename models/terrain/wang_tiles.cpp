@@ -15,7 +15,6 @@ namespace {
 // its plants easily is always complete, a packed one ends after a bounded time (as
 // models/terrain/placement.cpp).
 constexpr double k_attempts_per_plant = 30.0;
-constexpr std::uint32_t k_max_colours = 4;  // 256 tiles
 
 enum class strip_direction : std::uint64_t { along_x = 1, along_z = 2 };
 
@@ -92,27 +91,6 @@ std::vector<set_point> strip_set(const wang_tile_rules& rules, const wang_margin
 }
 
 }  // namespace
-
-wang_margins wang_margins_for(double min_spacing_m) {
-    const double r = std::max(min_spacing_m, 0.0);
-    const double w = r * (1.0 + 1e-6);
-    return {w, w + r / std::sqrt(2.0) * (1.0 + 1e-6)};
-}
-
-std::string wang_rules_problem(const wang_tile_rules& rules) {
-    if (rules.colours < 2 || rules.colours > k_max_colours)
-        return "corner colours must be 2 to " + std::to_string(k_max_colours) + ", not " + std::to_string(rules.colours);
-    if (!(rules.tile_size_m > 0.0) || !std::isfinite(rules.tile_size_m)) return "the tile size must be positive";
-    if (!(rules.plants_per_m2 >= 0.0) || !std::isfinite(rules.plants_per_m2)) return "the density must be finite and >= 0";
-    if (!(rules.min_spacing_m >= 0.0f)) return "the spacing must be >= 0";
-    const wang_margins g = wang_margins_for(rules.min_spacing_m);
-    const double least = 2.0 * (g.corner + g.strip);
-    if (rules.tile_size_m < least)
-        return "a tile of " + std::to_string(rules.tile_size_m) + " m is too small for a spacing of " +
-               std::to_string(rules.min_spacing_m) + " m: it needs at least " + std::to_string(least) +
-               " m (3.41 x the spacing for the corner squares and edge strips, plus an interior)";
-    return {};
-}
 
 std::array<std::uint32_t, 4> wang_tile_corners(std::uint32_t colours, std::uint32_t index) {
     std::array<std::uint32_t, 4> c{};

@@ -34,29 +34,9 @@
 #include <vector>
 
 #include "models/terrain/placement.h"
+#include "models/terrain/wang_tile_rules.h"
 
 namespace sylva {
-
-struct wang_tile_rules {
-    double tile_size_m = 32.0;  // T
-    std::uint32_t colours = 2;  // C corner colours: C⁴ tiles
-    float min_spacing_m = 3.0f;  // r
-    double plants_per_m2 = 0.02;  // darts are thrown for this density, at most as many as fit
-    float scale_min = 1.0f;
-    float scale_max = 1.0f;
-};
-
-// The regions' sizes for a spacing r: strips of half-width w = r and corner squares of
-// half-side m = w + r/√2 (rounded up by a part in a million against rounding).
-struct wang_margins {
-    double strip = 0.0;   // w
-    double corner = 0.0;  // m
-};
-wang_margins wang_margins_for(double min_spacing_m);
-
-// Why rules cannot make a tile set, or empty: at least 2 colours, at most 16; the tile at least
-// 2m + 2w wide so there is an interior; a positive finite density and tile size.
-std::string wang_rules_problem(const wang_tile_rules& rules);
 
 // A tile's corner colours as an index into the set: sw + C·(se + C·(nw + C·ne)), where sw is at
 // the tile's (x0, z0), se at (x1, z0), nw at (x0, z1) and ne at (x1, z1).

@@ -377,7 +377,7 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
                  {"/sead",
                   "unknown field; expected one of: name, seed, resolution, frames, fps, "
                   "world_offset, terrain, species, populations, camera, sun, environment, shadows, "
-                  "render, eco_tiles, lod",
+                  "render, wang_tiles, eco_tiles, lod",
                   "4"});
 }
 
@@ -669,7 +669,7 @@ TEST(scenario_loader, only_the_first_problem_is_reported) {
     expect_error(j, {"/bogus",
                      "unknown field; expected one of: name, seed, resolution, frames, fps, "
                      "world_offset, terrain, species, populations, camera, sun, environment, "
-                     "shadows, render, eco_tiles, lod",
+                     "shadows, render, wang_tiles, eco_tiles, lod",
                      "1"});
     j.erase("bogus");
     expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
@@ -934,9 +934,34 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(both, {"/lod/target_frame_ms", "give either primitive_budget or target_frame_ms, not both", "30"});
 }
 
+TEST(scenario_loader, wang_tiled_populations_load_round_trip_and_refuse_rules_a_tile_cannot_keep) {
+    json j = minimal();
+    j["populations"][0]["placement"] = "wang_tiles";
+    j["populations"][0]["min_spacing_m"] = 2;
+    j["wang_tiles"] = {{"tile_size_m", 20}, {"colours", 3}};
+    const scenario s = load(j);
+    EXPECT_EQ(s.populations[0].placement, "wang_tiles");
+    EXPECT_EQ(s.wang_tiles.tile_size_m, 20.0);
+    EXPECT_EQ(s.wang_tiles.colours, 3u);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    EXPECT_EQ(load(minimal()).wang_tiles, wang_tile_settings{});
+    const std::string rules_refused = "a population with placement \"wang_tiles\" is its tiles' plants wherever a tile lies (so a shell of the tile shows exactly them): slope, altitude and density rules cannot apply to it";
+    expect_error(set(j, "/populations/0/max_slope_deg", 20), {"/populations/0/max_slope_deg", rules_refused, "20"});
+    expect_error(set(j, "/populations/0/density", json{{"coverage", 0.5}}),
+                 {"/populations/0/density", rules_refused, "{\"coverage\":0.5}"});
+    // 2 m of spacing needs 5.41 x 2 = 10.83 m tiles.
+    expect_error(set(j, "/wang_tiles/tile_size_m", 10),
+                 {"/populations/0/min_spacing_m",
+                  "a tile of 10 m is too small for a spacing of 2 m: it needs at least 10.83 m (5.41 x the spacing: corner "
+                  "squares and edge strips on both sides, and an interior) (wang_tiles.tile_size_m)",
+                  "2"});
+    expect_error(set(j, "/wang_tiles/colours", 5),
+                 {"/wang_tiles/colours", "out of range; expected an integer from 2 to 4", "5"});
+}
+
 TEST(scenario_loader, placement_mode_and_generator_presets_are_choices) {
     expect_error(set(minimal(), "/populations/0/placement", "grid"),
-                 {"/populations/0/placement", "unknown value; expected one of: poisson, jittered",
+                 {"/populations/0/placement", "unknown value; expected one of: poisson, jittered, wang_tiles",
                   "\"grid\""});
     for (const auto generator : k_tree_generators)
         EXPECT_EQ(load(set(minimal(), "/species/0/generator", generator)).species[0].generator,
