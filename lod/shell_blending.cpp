@@ -1,0 +1,39 @@
+#include "lod/shell_blending.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sylva {
+
+glm::vec4 premultiply(const glm::vec4& straight) {
+    return {straight.r * straight.a, straight.g * straight.a, straight.b * straight.a, straight.a};
+}
+
+glm::vec4 blend_standard(const glm::vec4& c, const glm::vec4& frame) { return c * c.a + frame * (1.0f - c.a); }
+
+glm::vec4 blend_premultiplied(const glm::vec4& c, const glm::vec4& frame) { return c + frame * (1.0f - c.a); }
+
+image_rgba8 merge_slices(const image_rgba8& lower, const image_rgba8& upper) {
+    if (lower.width != upper.width || lower.height != upper.height || lower.texels.size() != upper.texels.size())
+        throw std::invalid_argument("merge_slices: the slices differ in size");
+    image_rgba8 out = lower;
+    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
+        const float keep = 1.0f - float(upper.texels[i + 3]) / 255.0f;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const float v = float(upper.texels[i + k]) + float(lower.texels[i + k]) * keep;
+            out.texels[i + k] = std::uint8_t(std::min(255.0f, std::round(v)));
+        }
+    }
+    return out;
+}
+
+std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices) {
+    std::vector<image_rgba8> level;
+    level.reserve((slices.size() + 1) / 2);
+    for (std::size_t k = 0; k + 1 < slices.size(); k += 2) level.push_back(merge_slices(slices[k], slices[k + 1]));
+    if (slices.size() % 2 == 1) level.push_back(slices.back());
+    return level;
+}
+
+}  // namespace sylva
