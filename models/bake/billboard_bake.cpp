@@ -214,6 +214,8 @@ private:
         p.y0 = std::max<std::int64_t>(first_sample(std::min({p.v[0].y, p.v[1].y, p.v[2].y})), 0);
         p.y1 = std::min<std::int64_t>(last_sample(std::max({p.v[0].y, p.v[1].y, p.v[2].y})), m_rows - 1);
         p.nearest = std::max({p.v[0].depth, p.v[1].depth, p.v[2].depth});
+        const float farthest = std::min({p.v[0].depth, p.v[1].depth, p.v[2].depth});
+        if (p.nearest < m_source.slab_min || farthest >= m_source.slab_max) return false;  // outside the slab
         p.triangle = triangle;
         p.alpha_tested = kind == surface::alpha_tested;
         return p.x0 <= p.x1 && p.y0 <= p.y1;
@@ -271,6 +273,7 @@ private:
         const float depth =
             float(l0 * double(t.v[0].depth) + l1 * double(t.v[1].depth) + l2 * double(t.v[2].depth));
         if (!(depth > s.depth)) return;
+        if (depth < m_source.slab_min || depth >= m_source.slab_max) return;
         // Weights of the triangle's own 2nd and 3rd index (v[1] and v[2] were swapped for a
         // front face).
         const float w1 = float(t.front_facing ? l2 : l1);

@@ -8,6 +8,7 @@
 // Written by hand: no Debian library rasterizes into CPU arrays with a custom resolve (albedo
 // average over covered subsamples, nearest-surface normal, coverage as alpha).
 #include <cstdint>
+#include <limits>
 #include <glm/vec3.hpp>
 #include <span>
 #include <vector>
@@ -65,6 +66,11 @@ struct billboard_source {
     // Optional: the mesh's precomputed radiance transfer, one receiver per vertex (Behrendt
     // 2005 §4: "we store the Gouraud-interpolated vectors in an extra texture").
     const radiance_transfer* transfer = nullptr;
+    // Only surfaces whose signed distance along the plane's normal lies in [slab_min, slab_max)
+    // are drawn (a shell's slab, Behrendt 2005 §3.1: models/bake/shell_bake.h); the default
+    // keeps everything.
+    float slab_min = -std::numeric_limits<float>::infinity();
+    float slab_max = std::numeric_limits<float>::infinity();
 };
 
 // Every image is width x height, rows top (along +axis_v) to bottom.

@@ -1,0 +1,133 @@
+// Behrendt 2005 §3.1 (models/bake/shell_bake.h): a tile's plants cut into slabs and rendered
+// from above, by hand on leaf quads, and on a generated plant.
+#include "models/bake/shell_bake.h"
+
+#include <gtest/gtest.h>
+
+#include "models/generate/plant_library.h"
+
+namespace sylva {
+namespace {
+
+image_rgba8 solid(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    image_rgba8 image;
+    image.width = image.height = 2;
+    for (int i = 0; i < 4; ++i)
+        for (std::uint8_t v : {r, g, b, std::uint8_t(255)}) image.texels.push_back(v);
+    return image;
+}
+
+// A horizontal leaf square at height y over [x0, x1] x [z0, z1], facing up.
+void add_leaf(mesh_data& mesh, float x0, float x1, float z0, float z1, float y) {
+    const auto base = std::uint32_t(mesh.vertices.size());
+    for (const auto& [x, z] : {std::pair{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}})
+        mesh.vertices.push_back({{x, y, z}, {0.0f, 1.0f, 0.0f}, {0.5f, 0.5f}});
+    const auto first = std::uint32_t(mesh.indices.size());
+    mesh.indices.insert(mesh.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+    mesh.submeshes.push_back({first, 6, material_kind::leaf});
+}
+
+shell_bake_settings exact(std::uint32_t texels, std::uint32_t slices, float height) {
+    shell_bake_settings s;
+    s.texels = texels;
+    s.slices = slices;
+    s.height_m = height;
+    s.supersampling = 2;
+    s.blur_texels = 0.0f;
+    s.margin_texels = 1;
+    return s;
+}
+
+// A 4 m tile, 8 texels of 0.5 m, 4 slabs of 1 m: a leaf over [1, 3]² at 2.5 m lands in slab 2,
+// on texels 2..5 in x and z, opaque; every other slab and texel is empty.
+TEST(shell_bake, a_leaf_lands_in_its_slab_and_on_its_texels) {
+    mesh_data model;
+    add_leaf(model, -1.0f, 1.0f, -1.0f, 1.0f, 2.5f);
+    const image_rgba8 green = solid(0, 200, 0);
+    const image_rgba8 bark = solid(90, 60, 30);
+    const shell_species species[] = {{&model, &green, &bark}};
+    shell_plant plant;
+    plant.where.xz = {2.0, 2.0};
+    const shell_stack stack = bake_shell_stack(species, std::span(&plant, 1), 4.0, exact(8, 4, 4.0f));
+    ASSERT_EQ(stack.colour.size(), 4u);
+    EXPECT_FLOAT_EQ(stack.slice_height_m, 1.0f);
+    for (std::uint32_t k = 0; k < 4; ++k)
+        for (std::uint32_t z = 0; z < 8; ++z)
+            for (std::uint32_t x = 0; x < 8; ++x) {
+                const bool inside = k == 2 && x >= 2 && x <= 5 && z >= 2 && z <= 5;
+                const std::uint8_t* c = stack.colour[k].at(x, z);
+                EXPECT_EQ(c[3], inside ? 255 : 0) << k << " " << x << " " << z;
+                EXPECT_EQ(c[1], inside ? 200 : 0);
+                if (inside) {
+                    EXPECT_GT(stack.normal[k].at(x, z)[1], 250) << "the leaf faces up";
+                }
+            }
+}
+
+// Within a slab the higher surface is what is seen from above; a neighbour's plant that reaches
+// across the tile's border is baked where it reaches in; a yaw turns the plant as the renderer does.
+TEST(shell_bake, the_higher_surface_wins_and_neighbours_reach_in) {
+    mesh_data low;
+    add_leaf(low, -1.0f, 1.0f, -1.0f, 1.0f, 0.2f);
+    mesh_data high;
+    add_leaf(high, -0.5f, 0.5f, -0.5f, 0.5f, 0.8f);
+    const image_rgba8 red = solid(200, 0, 0);
+    const image_rgba8 blue = solid(0, 0, 200);
+    const image_rgba8 bark = solid(90, 60, 30);
+    const shell_species species[] = {{&low, &red, &bark}, {&high, &blue, &bark}};
+    std::vector<shell_plant> plants(3);
+    plants[0] = {0, {}};
+    plants[0].where.xz = {2.0, 2.0};
+    plants[1] = {1, {}};
+    plants[1].where.xz = {2.0, 2.0};
+    plants[2] = {0, {}};
+    plants[2].where.xz = {-0.5, 2.0};  // a neighbour's, over x in [-1.5, 0.5]
+    const shell_stack stack = bake_shell_stack(species, plants, 4.0, exact(8, 1, 1.0f));
+    EXPECT_EQ(stack.colour[0].at(4, 4)[2], 200) << "blue (higher) over red at the centre";
+    EXPECT_EQ(stack.colour[0].at(4, 4)[0], 0);
+    EXPECT_EQ(stack.colour[0].at(2, 2)[0], 200) << "red where only the low leaf is";
+    EXPECT_EQ(stack.colour[0].at(0, 4)[3], 255) << "the neighbour's leaf reaches texel 0";
+    EXPECT_EQ(stack.colour[0].at(1, 4)[3], 0);
+    // A quarter turn maps +x to −z: a leaf over x in [0, 1], z in [-0.5, 0.5] turned by 90°
+    // covers x in [-0.5, 0.5], z in [-1, 0] around the plant, so texels 3..4 in x, 2..3 in z.
+    mesh_data strip;
+    add_leaf(strip, 0.0f, 1.0f, -0.5f, 0.5f, 0.5f);
+    const shell_species one[] = {{&strip, &red, &bark}};
+    shell_plant turned{0, {}};
+    turned.where.xz = {2.0, 2.0};
+    turned.where.yaw = 1.5707963f;
+    const shell_stack t = bake_shell_stack(one, std::span(&turned, 1), 4.0, exact(8, 1, 1.0f));
+    EXPECT_EQ(t.colour[0].at(4, 2)[3], 255) << "x' = c x + s z, z' = -s x + c z: +x goes to -z";
+    EXPECT_EQ(t.colour[0].at(3, 3)[3], 255);
+    EXPECT_EQ(t.colour[0].at(4, 4)[3], 0) << "nothing on the +z side";
+    EXPECT_EQ(t.colour[0].at(5, 2)[3], 0);
+}
+
+// A generated shrub: its slabs hold its parts from the ground up, the blur spreads coverage
+// without adding any, and the bake is deterministic.
+TEST(shell_bake, a_generated_plant_fills_its_slabs_and_bakes_the_same_twice) {
+    const plant_model plant = generate_plant_model("shrub", 2, 64);
+    const shell_species species[] = {{&plant.lods[1], &plant.leaf_texture, &plant.bark_texture}};
+    shell_plant p;
+    p.where.xz = {4.0, 4.0};
+    shell_bake_settings settings;
+    settings.texels = 32;
+    settings.slices = 6;
+    const shell_stack a = bake_shell_stack(species, std::span(&p, 1), 8.0, settings);
+    const shell_stack b = bake_shell_stack(species, std::span(&p, 1), 8.0, settings);
+    std::uint32_t filled = 0;
+    for (std::size_t k = 0; k < a.colour.size(); ++k) {
+        EXPECT_EQ(a.colour[k].texels, b.colour[k].texels);
+        double coverage = 0.0;
+        for (std::size_t i = 3; i < a.colour[k].texels.size(); i += 4) {
+            coverage += a.colour[k].texels[i];
+            for (std::size_t c = 1; c <= 3; ++c) EXPECT_LE(a.colour[k].texels[i - c], a.colour[k].texels[i]) << "premultiplied";
+        }
+        filled += coverage > 0.0 ? 1u : 0u;
+    }
+    EXPECT_GE(filled, 4u);
+    EXPECT_EQ(a.colour[0].at(0, 0)[3], 0) << "the tile's corner is far from the shrub";
+}
+
+}  // namespace
+}  // namespace sylva
