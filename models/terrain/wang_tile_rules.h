@@ -15,20 +15,24 @@ struct wang_tile_rules {
     double tile_size_m = 32.0;  // T
     std::uint32_t colours = 2;  // C corner colours: C⁴ tiles
     float min_spacing_m = 3.0f;  // r
+    // How far a plant reaches from its position (crown radius times its largest scale): the
+    // edge strips are at least this wide, so only plants the tile's colours fix reach into it
+    // (what its shell bakes, models/bake/shell_bake.h). 0: the spacing.
+    float reach_m = 0.0f;
     double plants_per_m2 = 0.02;  // darts are thrown for this density, at most as many as fit
     float scale_min = 1.0f;
     float scale_max = 1.0f;
 };
 
-// The regions' sizes for a spacing r: strips of half-width w = r and corner squares of
-// half-side m = w + r/√2 (rounded up by a part in a million against rounding).
+// The regions' sizes for a spacing r and a reach: strips of half-width w = max(r, reach) and
+// corner squares of half-side m = w + r/√2 (rounded up by a part in a million against rounding).
 struct wang_margins {
     double strip = 0.0;   // w
     double corner = 0.0;  // m
 };
-inline wang_margins wang_margins_for(double min_spacing_m) {
+inline wang_margins wang_margins_for(double min_spacing_m, double reach_m = 0.0) {
     const double r = std::max(min_spacing_m, 0.0);
-    const double w = r * (1.0 + 1e-6);
+    const double w = std::max(r, reach_m) * (1.0 + 1e-6);
     return {w, w + r / std::sqrt(2.0) * (1.0 + 1e-6)};
 }
 
@@ -42,14 +46,21 @@ inline std::string wang_rules_problem(const wang_tile_rules& rules) {
     if (!(rules.plants_per_m2 >= 0.0) || !std::isfinite(rules.plants_per_m2))
         return "the density must be finite and >= 0";
     if (!(rules.min_spacing_m >= 0.0f)) return "the spacing must be >= 0";
-    const wang_margins g = wang_margins_for(rules.min_spacing_m);
+    if (!(rules.reach_m >= 0.0f)) return "the reach must be >= 0";
+    const wang_margins g = wang_margins_for(rules.min_spacing_m, rules.reach_m);
     const double least = 2.0 * (g.corner + g.strip);
     if (rules.tile_size_m < least) {
-        char text[256];
-        std::snprintf(text, sizeof text,
-                      "a tile of %g m is too small for a spacing of %g m: it needs at least %.2f m (5.41 x the "
-                      "spacing: corner squares and edge strips on both sides, and an interior)",
-                      rules.tile_size_m, double(rules.min_spacing_m), least);
+        char text[320];
+        if (rules.reach_m > rules.min_spacing_m)
+            std::snprintf(text, sizeof text,
+                          "a tile of %g m is too small for plants that reach %g m at a spacing of %g m: it needs "
+                          "at least %.2f m (edge strips as wide as the reach, corner squares, and an interior)",
+                          rules.tile_size_m, double(rules.reach_m), double(rules.min_spacing_m), least);
+        else
+            std::snprintf(text, sizeof text,
+                          "a tile of %g m is too small for a spacing of %g m: it needs at least %.2f m (5.41 x the "
+                          "spacing: corner squares and edge strips on both sides, and an interior)",
+                          rules.tile_size_m, double(rules.min_spacing_m), least);
         return text;
     }
     return {};

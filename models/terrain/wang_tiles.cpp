@@ -116,7 +116,7 @@ wang_tile_set build_wang_tile_set(const wang_tile_rules& rules, std::uint64_t se
         throw std::invalid_argument("Wang tiles: " + problem);
     const std::uint32_t colours = rules.colours;
     const double t = rules.tile_size_m;
-    const wang_margins g = wang_margins_for(rules.min_spacing_m);
+    const wang_margins g = wang_margins_for(rules.min_spacing_m, rules.reach_m);
     std::vector<std::vector<set_point>> corners(colours);
     for (std::uint32_t c = 0; c < colours; ++c) corners[c] = corner_set(rules, g, seed, c);
     // strips[direction][a * C + b]
@@ -131,16 +131,24 @@ wang_tile_set build_wang_tile_set(const wang_tile_rules& rules, std::uint64_t se
     set.rules = rules;
     const std::uint32_t count = colours * colours * colours * colours;
     set.tiles.resize(count);
+    set.reaching.resize(count);
     for (std::uint32_t index = 0; index < count; ++index) {
         const auto [sw, se, nw, ne] = wang_tile_corners(colours, index);
         std::vector<set_point> mine;
-        // The tile's share of each shared set, moved into tile coordinates [0, T)².
+        std::vector<placement>& reaching = set.reaching[index];
+        // The tile's share of each shared set, moved into tile coordinates [0, T)²; the rest of
+        // the set, moved the same way, may reach in.
         const auto take = [&](const std::vector<set_point>& from, auto owns, auto to_tile) {
-            for (const set_point& p : from)
+            for (const set_point& p : from) {
+                const glm::dvec2 at = to_tile(p.at);
                 if (owns(p.at)) {
-                    const glm::dvec2 at = to_tile(p.at);
                     mine.push_back({{below(at.x, t), below(at.y, t)}, p.plant});
+                } else {
+                    placement plant = p.plant;
+                    plant.xz = at;
+                    reaching.push_back(plant);
                 }
+            }
         };
         const auto ahead = [](double v) { return v >= 0.0; };
         take(corners[sw], [&](glm::dvec2 p) { return ahead(p.x) && ahead(p.y); }, [](glm::dvec2 p) { return p; });

@@ -57,6 +57,11 @@ struct wang_tile_set {
     // By tile index, each tile's plants in tile coordinates [0, T)² (x, z from the tile's sw
     // corner), in a fixed order: its corner, strip and interior shares.
     std::vector<std::vector<placement>> tiles;
+    // By tile index, the plants of the neighbouring tiles that the tile's colours fix and that
+    // may reach into it (the rest of its four corner squares and four edge strips), in the same
+    // tile coordinates, so outside [0, T)². With rules.reach_m at least any plant's reach, these
+    // and `tiles` are every plant that can cover the tile, whatever tiles lie around it.
+    std::vector<std::vector<placement>> reaching;
 };
 
 // The complete set of C⁴ tiles. Deterministic in (rules, seed); throws std::invalid_argument

@@ -141,6 +141,35 @@ TEST(wang_tiles, a_tile_type_is_the_same_plants_wherever_it_lies) {
     }
 }
 
+// Every plant of a tiling within the reach of a tile is one its colours fix: its own, or one of
+// its `reaching` (the rest of its corner squares and edge strips), whatever tiles lie around it.
+TEST(wang_tiles, every_plant_that_can_reach_a_tile_is_fixed_by_its_colours) {
+    wang_tile_rules rules = trees();
+    rules.reach_m = 5.0f;
+    rules.tile_size_m = 28.0;  // 2 (m + w) = 2 (5 + 2.12 + 5) = 24.2
+    const wang_tile_set set = build_wang_tile_set(rules, 7);
+    const std::uint64_t seed = 13;
+    const std::vector<placement> all = place_wang_tiles(set, seed, {0.0, 0.0}, {-56.0, -56.0, 112.0, 112.0});
+    std::size_t checked = 0;
+    for (std::int64_t j = 0; j < 3; ++j)
+        for (std::int64_t i = 0; i < 3; ++i) {
+            const std::uint32_t type = wang_tile_at(seed, i, j, 2);
+            const glm::dvec2 corner{28.0 * double(i), 28.0 * double(j)};
+            std::vector<glm::dvec2> fixed;
+            for (const placement& p : set.tiles[type]) fixed.push_back(p.xz);
+            for (const placement& p : set.reaching[type]) fixed.push_back(p.xz);
+            for (const placement& p : all) {
+                const glm::dvec2 local = p.xz - corner;
+                if (local.x < -5.0 || local.x >= 33.0 || local.y < -5.0 || local.y >= 33.0) continue;
+                const bool found = std::any_of(fixed.begin(), fixed.end(),
+                                               [&](glm::dvec2 q) { return glm::length(q - local) < 1e-9; });
+                EXPECT_TRUE(found) << "tile " << i << "," << j << " plant at " << local.x << "," << local.y;
+                ++checked;
+            }
+        }
+    EXPECT_GT(checked, 300u);
+}
+
 TEST(wang_tiles, rules_that_cannot_make_a_set_say_why) {
     wang_tile_rules rules = trees();
     rules.tile_size_m = 10.0;  // needs 2 (m + w) = 2 (5.12 + 3) = 16.24 m for a 3 m spacing
