@@ -373,7 +373,7 @@ std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& as
                                     pop.min_altitude_m, pop.max_altitude_m, pop.placement == "poisson",
                                     density.values.empty() ? nullptr : &density};
         const auto placed = pop.placement == "wang_tiles"
-                                ? place_wang_population(s, p)
+                                ? place_wang_population(s, p, wang_reach_m(s, p, assets))
                                 : place_population(assets.terrain, rules, hash_combine(s.seed, std::uint64_t(p), 0x9147ULL));
         // Wang tiles place for the density `count` asks, so a few more or fewer come out.
         const double expected = pop.placement == "wang_tiles" ? 0.9 * double(pop.count) : double(pop.count);

@@ -31,7 +31,7 @@ TEST(wang_populations, plants_follow_the_count_keep_the_spacing_and_stay_in_the_
     for (std::size_t p = 0; p < 2; ++p) {
         SCOPED_TRACE(p);
         const population_settings& pop = s.populations[p];
-        const std::vector<placement> plants = place_wang_population(s, p);
+        const std::vector<placement> plants = place_wang_population(s, p, 0.0f);
         // Darts are thrown for count over the area: within 10 % when the spacing leaves room.
         EXPECT_NEAR(double(plants.size()), double(pop.count), 0.1 * double(pop.count));
         double nearest = 1e9;
@@ -46,17 +46,30 @@ TEST(wang_populations, plants_follow_the_count_keep_the_spacing_and_stay_in_the_
 }
 
 // Both populations lie on one lattice with one tiling: the same tile types in the same places.
+// Plants that reach farther than the tiles allow are refused with the population named.
+TEST(wang_populations, a_reach_too_wide_for_the_tiles_names_the_population) {
+    const scenario s = wang_meadow();
+    try {
+        wang_tile_set_of(s, 0, 9.0f);  // w = 9, m = 9 + 4/√2: 2 (m + w) = 41.7 m > 25 m
+        ADD_FAILURE() << "built";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/populations/0 (oak): a tile of 25 m is too small for plants that reach 9 m"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(wang_populations, populations_share_the_tiling_and_differ_in_their_sets) {
     const scenario s = wang_meadow();
     EXPECT_EQ(wang_lattice_origin(s), glm::dvec2(-100.0, -100.0));
-    const wang_tile_set oaks = wang_tile_set_of(s, 0);
-    const wang_tile_set bushes = wang_tile_set_of(s, 1);
+    const wang_tile_set oaks = wang_tile_set_of(s, 0, 0.0f);
+    const wang_tile_set bushes = wang_tile_set_of(s, 1, 0.0f);
     EXPECT_EQ(oaks.rules.tile_size_m, bushes.rules.tile_size_m);
     EXPECT_NE(oaks.tiles[0].size(), bushes.tiles[0].size());
     EXPECT_NEAR(oaks.rules.plants_per_m2, 400.0 / (200.0 * 200.0), 1e-12);
     // The oaks of lattice tile (1, 2) are tile type wang_tile_at(seed, 1, 2) moved there.
     const std::uint32_t type = wang_tile_at(wang_tiling_seed(s), 1, 2, 2);
-    const std::vector<placement> all = place_wang_population(s, 0);
+    const std::vector<placement> all = place_wang_population(s, 0, 0.0f);
     std::size_t in_tile = 0;
     for (const placement& p : all) {
         const glm::dvec2 local = p.xz - glm::dvec2(-100.0 + 25.0, -100.0 + 50.0);

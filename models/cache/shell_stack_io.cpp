@@ -1,0 +1,60 @@
+#include "models/cache/shell_stack_io.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "models/cache/bake_cache.h"
+#include "models/cache/mesh_io.h"
+
+namespace sylva {
+namespace {
+constexpr std::uint32_t k_magic = 0x4c4c4853;  // "SHLL"
+}
+
+std::vector<std::byte> serialize_shell_stacks(const std::vector<shell_stack>& stacks) {
+    binary_writer out;
+    out.pod(k_magic);
+    out.pod(k_shell_format);
+    out.pod(std::uint64_t(stacks.size()));
+    for (const shell_stack& s : stacks) {
+        out.pod(s.tile_size_m);
+        out.pod(s.slice_height_m);
+        out.pod(std::uint64_t(s.colour.size()));
+        for (std::size_t k = 0; k < s.colour.size(); ++k) {
+            write_image(out, s.colour[k]);
+            write_image(out, s.normal[k]);
+        }
+    }
+    return std::move(out.bytes());
+}
+
+std::vector<shell_stack> deserialize_shell_stacks(std::span<const std::byte> bytes) {
+    binary_reader in(bytes);
+    if (in.pod<std::uint32_t>() != k_magic) throw std::runtime_error("not a shell texture entry");
+    if (const auto format = in.pod<std::uint32_t>(); format != k_shell_format)
+        throw std::runtime_error("shell texture format " + std::to_string(format) + ", expected " +
+                                 std::to_string(k_shell_format));
+    const auto count = in.pod<std::uint64_t>();
+    if (count > 65536) throw std::runtime_error("shell textures: implausible tile count " + std::to_string(count));
+    std::vector<shell_stack> stacks(count);
+    for (shell_stack& s : stacks) {
+        s.tile_size_m = in.pod<double>();
+        s.slice_height_m = in.pod<float>();
+        const auto slices = in.pod<std::uint64_t>();
+        if (slices == 0 || slices > 256) throw std::runtime_error("shell textures: implausible slice count");
+        for (std::uint64_t k = 0; k < slices; ++k) {
+            s.colour.push_back(read_image(in));
+            s.normal.push_back(read_image(in));
+            const image_rgba8& first = s.colour.front();
+            for (const image_rgba8* i : {&s.colour.back(), &s.normal.back()})
+                if (i->width != first.width || i->height != first.height || i->width == 0)
+                    throw std::runtime_error("shell textures: slices of different sizes");
+        }
+        if (s.colour.front().width != stacks.front().colour.front().width)
+            throw std::runtime_error("shell textures: tiles of different sizes");
+    }
+    if (!in.at_end()) throw std::runtime_error("shell textures: trailing bytes");
+    return stacks;
+}
+
+}  // namespace sylva
