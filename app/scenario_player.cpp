@@ -34,6 +34,7 @@
 #include "systems/select_representation_system.h"
 #include "setup/spawn_scenario.h"
 #include "systems/update_lodf_system.h"
+#include "systems/update_shells_system.h"
 #include "systems/update_point_prefix_system.h"
 #include "systems/update_camera_system.h"
 #include "systems/update_sun_system.h"
@@ -64,6 +65,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<aggregate_eco_tiles_system>();
     schedule.add<update_point_prefix_system>();
     schedule.add<update_lodf_system>();
+    schedule.add<update_shells_system>();
     schedule.add<project_environment_system>();
     schedule.add<fit_shadow_cascades_system>();
     schedule.add<build_draw_list_system>();
@@ -157,7 +159,7 @@ lod_policy player_policy(const scenario& s, const player_options& options) {
 
 // Only what the policy can select is baked (DESIGN §2, "skip what a scene doesn't need").
 scene_needs needs_of(const lod_policy& policy) {
-    return {policy.uses_point_lines(), policy.uses_billboard_clouds(), policy.uses_lodf()};
+    return {policy.uses_point_lines(), policy.uses_billboard_clouds(), policy.uses_lodf(), policy.uses_shells()};
 }
 
 }  // namespace

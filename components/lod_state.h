@@ -28,6 +28,10 @@ enum class representation : std::uint8_t {
     // Rebollo 2006: the full mesh's trunk and branches, and its foliage at a continuous leaf count
     // by LoDF's leaf collapses (lod/lodf.h), drawn cluster by cluster (systems/update_lodf_system.h).
     lodf,
+    // Behrendt 2005 §3: drawn by the shell textures over its terrain (setup/shell_assets.h), not on
+    // its own; only a Wang-tiled plant can be, as its ladder's last rung (the shell shows exactly
+    // the tiling's plants).
+    shell,
     count
 };
 

@@ -40,13 +40,13 @@ inline constexpr float k_max_band = 0.9f;
 // with ("points_lines" is representation::points; "eco_tile_points" is the plant drawn by its eco
 // tile's aggregated sets, Deussen 2002 §6.2, which can only follow points_lines as the last rung:
 // a tile that cannot be drawn as its sets draws its plants as points).
-inline constexpr std::array<std::string_view, 8> k_rung_names{
-    "mesh_full",    "mesh_reduced",      "mesh_far",        "billboard_cloud",
-    "points_lines", "crossed_billboard", "eco_tile_points", "lodf"};
+inline constexpr std::array<std::string_view, 9> k_rung_names{
+    "mesh_full",    "mesh_reduced",      "mesh_far",        "billboard_cloud", "points_lines",
+    "crossed_billboard", "eco_tile_points", "lodf",          "shell"};
 inline constexpr std::array<representation, k_rung_names.size()> k_rungs{
     representation::mesh_full,       representation::mesh_reduced, representation::mesh_far,
     representation::billboard_cloud, representation::points,       representation::crossed_billboard,
-    representation::eco_tile,        representation::lodf};
+    representation::eco_tile,        representation::lodf,         representation::shell};
 
 // "" when `r` is not a rung.
 inline std::string_view rung_name(representation r) {
@@ -102,6 +102,11 @@ inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
         if (i >= 2 && l.below_px[i] * (1.0f + l.band[i]) > l.below_px[i - 1] * (1.0f - l.band[i - 1]))
             return ladder_problem{i, "band", "its band (below_px x (1 +- band)) overlaps the band of the rung before"};
     }
+    for (std::size_t i = 0; i < l.count; ++i)
+        if (l.rungs[i] == representation::shell && (i == 0 || i + 1 != l.count))
+            return ladder_problem{i, "rung",
+                                  "shell must be the last rung, after at least one other (the shell draws the "
+                                  "far field; the plants nearer are drawn on their own)"};
     for (std::size_t i = 0; i < l.count; ++i)
         if (l.rungs[i] == representation::eco_tile && (i == 0 || i + 1 != l.count || l.rungs[i - 1] != representation::points))
             return ladder_problem{i, "rung",

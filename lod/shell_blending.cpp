@@ -36,4 +36,30 @@ std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slic
     return level;
 }
 
+image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upper) {
+    if (lower.width != upper.width || lower.height != upper.height || lower.texels.size() != upper.texels.size())
+        throw std::invalid_argument("merge_normal_slices: the slices differ in size");
+    image_rgba8 out = lower;
+    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
+        const float au = float(upper.texels[i + 3]) / 255.0f;
+        const float al = float(lower.texels[i + 3]) / 255.0f * (1.0f - au);
+        const float a = au + al;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const float v = a > 0.0f ? (float(upper.texels[i + k]) * au + float(lower.texels[i + k]) * al) / a
+                                     : float(upper.texels[i + k]);
+            out.texels[i + k] = std::uint8_t(std::min(255.0f, std::round(v)));
+        }
+        out.texels[i + 3] = std::uint8_t(std::min(255.0f, std::round(a * 255.0f)));
+    }
+    return out;
+}
+
+std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices) {
+    std::vector<image_rgba8> level;
+    level.reserve((slices.size() + 1) / 2);
+    for (std::size_t k = 0; k + 1 < slices.size(); k += 2) level.push_back(merge_normal_slices(slices[k], slices[k + 1]));
+    if (slices.size() % 2 == 1) level.push_back(slices.back());
+    return level;
+}
+
 }  // namespace sylva

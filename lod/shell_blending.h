@@ -32,5 +32,9 @@ glm::vec4 blend_premultiplied(const glm::vec4& c, const glm::vec4& frame);
 // rounding to 8 bits costs at most half a step per merge.
 image_rgba8 merge_slices(const image_rgba8& lower, const image_rgba8& upper);
 std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices);
+// The same for the slices' normal images (rgb n·0.5 + 0.5 straight, a coverage): the normal
+// seen from above, the upper's over the lower's by their coverage, and coverage as alpha merges.
+image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upper);
+std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices);
 
 }  // namespace sylva

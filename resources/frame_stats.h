@@ -7,14 +7,14 @@
 namespace sylva {
 
 struct frame_stats {
-    // shadow, opaque, sky, splats, edges (render::k_gpu_pass_names)
-    std::array<double, 5> gpu_pass_ms{};
+    // shadow, opaque, sky, shells, splats, edges (render::k_gpu_pass_names)
+    std::array<double, 6> gpu_pass_ms{};
     // What each pass made the device do (render::pass_timer::read_work): vertex and fragment
     // shader invocations, primitives entering clipping; counted only where the device can.
     bool work_counted = false;
-    std::array<std::uint64_t, 5> pass_vertices{};
-    std::array<std::uint64_t, 5> pass_primitives{};
-    std::array<std::uint64_t, 5> pass_fragments{};
+    std::array<std::uint64_t, 6> pass_vertices{};
+    std::array<std::uint64_t, 6> pass_primitives{};
+    std::array<std::uint64_t, 6> pass_fragments{};
     double gpu_ms = 0.0;
     double submit_cpu_ms = 0.0;  // issuing the frame's GL commands (includes driver work)
     // Sylva's own part of it: uniforms, instance records and indirect commands written to the

@@ -69,6 +69,8 @@ struct lod_policy {
                ((mode == kind::single || mode == kind::hard_switch) &&
                 (near == representation::lodf || far == representation::lodf));
     }
+    // The same for shells (Behrendt 2005 §3): the scene then bakes the Wang tiles' shell textures.
+    bool uses_shells() const { return any_ladder_reaches(representation::shell); }
     // The same for billboard clouds: the scene then bakes them and uploads their atlases.
     bool uses_billboard_clouds() const {
         return mode == kind::billboard_clouds || any_ladder_reaches(representation::billboard_cloud) ||

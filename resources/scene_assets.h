@@ -12,6 +12,7 @@
 #include "models/mesh.h"
 #include "models/bake/implicit_illumination.h"
 #include "models/bake/lodf_bake.h"
+#include "resources/shell_textures.h"
 #include "models/bake/point_line_model.h"
 #include "models/terrain/terrain.h"
 #include "lighting/environment_map.h"
@@ -178,6 +179,8 @@ struct scene_assets {
     // the population's darkening (§5, setup/population_ambient.h) and the viewer's tuning panel;
     // empty when no species is implicit-lit.
     std::vector<species_density> densities;
+    // Behrendt 2005 §3: the Wang tiles' shell textures, when a ladder reaches the shell rung.
+    shell_textures shells;
 };
 
 }  // namespace sylva

@@ -374,6 +374,24 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
             (spacing ? *spacing : population).fail(problem + " (wang_tiles.tile_size_m)");
         }
     }
+    // Behrendt 2005 §3: the shell rung draws the Wang tiling's plants; a species drawn by it must
+    // be placed by the tiling everywhere, and its rung is chosen by projected size (the budget
+    // solver measures rungs plant by plant, and the shell is the terrain's).
+    for (std::size_t sp = 0; sp < s.species.size(); ++sp) {
+        const bool own = !s.species[sp].ladder.empty();
+        const auto& steps = own ? s.species[sp].ladder : s.lod.ladder;
+        const auto shell = std::find_if(steps.begin(), steps.end(), [](const ladder_step_settings& st) { return st.rung == "shell"; });
+        if (shell == steps.end() || s.lod.representation != "ladder") continue;
+        const json_node ladder = own ? *n.find("species")->at(sp).find("ladder") : *n.find("lod")->find("ladder");
+        const json_node rung = *ladder.at(std::size_t(shell - steps.begin())).find("rung");
+        for (const population_settings& p : s.populations)
+            if (p.species == s.species[sp].name && p.placement != "wang_tiles")
+                rung.fail("species " + s.species[sp].name + " has a population not placed by \"wang_tiles\": the shell "
+                          "shows the Wang tiling's plants, and would lose the others");
+        if (s.lod.plant_budget_ms > 0.0 || s.lod.max_error > 0.0 || s.lod.target_frame_ms > 0.0)
+            rung.fail("the shell rung is chosen by projected size: not with lod.plant_budget_ms, max_error or "
+                      "target_frame_ms");
+    }
 }
 
 const field_table<eco_tile_settings>& eco_tile_fields() {

@@ -31,11 +31,11 @@ shell_bake_settings shell_bake_settings_of(const scenario& s) {
     return settings;
 }
 
-shell_assets build_shell_assets(const scenario& s, const scene_assets& assets, bake_cache* cache) {
+shell_textures build_shell_assets(const scenario& s, const scene_assets& assets, bake_cache* cache) {
     std::vector<std::size_t> tiled;
     for (std::size_t p = 0; p < s.populations.size(); ++p)
         if (s.populations[p].placement == "wang_tiles") tiled.push_back(p);
-    shell_assets out;
+    shell_textures out;
     if (tiled.empty()) return out;
     out.tile_size_m = s.wang_tiles.tile_size_m;
     out.colours = s.wang_tiles.colours;

@@ -11,24 +11,16 @@
 #include "models/bake/shell_bake.h"
 #include "models/cache/bake_cache.h"
 #include "resources/scene_assets.h"
+#include "resources/shell_textures.h"
 #include "scenarios/scenario.h"
 
 namespace sylva {
-
-struct shell_assets {
-    double tile_size_m = 0.0;
-    std::uint32_t colours = 0;
-    std::uint64_t tiling_seed = 0;
-    glm::dvec2 origin{0.0};  // lattice corner (0, 0)
-    std::vector<shell_stack> tiles;  // by Wang tile index (models/terrain/wang_tiles.h)
-    bool empty() const { return tiles.empty(); }
-};
 
 // The bake's settings for a scenario: 16 slices over the tallest plant, 0.25 m texels (at most
 // 256 a tile), 3x3 supersampling, a half-texel Gaussian.
 shell_bake_settings shell_bake_settings_of(const scenario& s);
 
 // `cache` may be null. Empty when no population is Wang-tiled.
-shell_assets build_shell_assets(const scenario& s, const scene_assets& assets, bake_cache* cache);
+shell_textures build_shell_assets(const scenario& s, const scene_assets& assets, bake_cache* cache);
 
 }  // namespace sylva

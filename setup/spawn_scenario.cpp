@@ -16,6 +16,7 @@
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
 #include "components/cluster_changes.h"
+#include "components/shell_tile.h"
 #include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
@@ -29,6 +30,7 @@
 #include "models/random.h"
 #include "models/generate/textures.h"
 #include "resources/lodf_slots.h"
+#include "resources/shell_view.h"
 #include "resources/draw_list.h"
 #include "lod/eco_tiles.h"
 #include "resources/frame_stats.h"
@@ -40,6 +42,7 @@
 #include "resources/shadow_receivers.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/species_models.h"
+#include "setup/shell_assets.h"
 #include "setup/wang_populations.h"
 
 namespace sylva {
@@ -324,6 +327,10 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
     match_cloud_atlas_sizes(assets.cloud_normal);
     match_cloud_atlas_sizes(assets.cloud_pre_lit);
     match_cloud_atlas_sizes(assets.cloud_transfer);
+    if (needs.shells) {
+        if (progress) progress(1.0f, "shell textures");
+        assets.shells = build_shell_assets(s, assets, cache);
+    }
     return assets;
 }
 
@@ -474,6 +481,31 @@ void spawn_viewer_and_sky(ecs::world& world, const scenario& s, const scene_asse
 
 }  // namespace
 
+// Behrendt 2005 §3: with shell textures, one shell_tile entity per terrain tile and the shells'
+// view; an inactive view otherwise.
+void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& assets) {
+    shell_view view;
+    if (!assets.shells.empty()) {
+        view.active = true;
+        view.terrain_origin = s.world_offset;
+        view.slice_height_m = assets.shells.tiles.front().slice_height_m;
+        for (auto n = std::uint32_t(assets.shells.tiles.front().colour.size()); n > 1; n = (n + 1) / 2) ++view.max_level;
+        view.mean_scale.assign(s.species.size(), 1.0f);
+        for (std::size_t k = 0; k < s.species.size(); ++k)
+            for (const population_settings& p : s.populations)
+                if (p.species == s.species[k].name) {
+                    view.mean_scale[k] = 0.5f * (p.scale_min + p.scale_max);
+                    break;
+                }
+        for (std::uint16_t id : assets.terrain_meshes) {
+            const mesh_data& tile = assets.meshes.at(id);
+            const glm::vec3 middle = 0.5f * (tile.bounds_min + tile.bounds_max);
+            world.emplace<shell_tile>(world.create(), {middle, glm::length(tile.bounds_max - middle), {}});
+        }
+    }
+    world.set_resource(std::move(view));
+}
+
 void spawn_lodf_clusters(ecs::world& world, const species_library& library, std::uint32_t slot_count) {
     lodf_slots slots;
     for (const species_entry& species : library.species)
@@ -497,6 +529,7 @@ spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_as
     for (const auto& pop : s.populations) report.requested += pop.count;
     spawn_viewer_and_sky(world, s, assets);
     report.plants = spawn_plants(world, s, assets);
+    spawn_shells(world, s, assets);
     report.population = bake_population_ambient(world, assets);
     if (report.population.receivers > 0)
         spdlog::info("population ambient (Luft 2007 §5): {} receivers, {} neighbour pairs, {} darkened "

@@ -19,6 +19,7 @@ struct scene_needs {
     bool point_lines = false;  // Deussen 2002 points and lines (setup/point_line_assets.h)
     bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/bake/billboard_cloud.h)
     bool lodf = false;  // Rebollo 2006 LoDF foliage (models/bake/lodf_bake.h)
+    bool shells = false;  // Behrendt 2005 §3 shell textures of the Wang tiles (setup/shell_assets.h)
 };
 
 // Called as the species are baked (or read from the cache): the share done, 0..1, and the step.
@@ -43,6 +44,9 @@ spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_as
 // slots resource over them (resources/lodf_slots.h); an empty resource otherwise. Part of
 // spawn_scenario, and for worlds built by hand (tests, benchmarks).
 void spawn_lodf_clusters(ecs::world& world, const species_library& library, std::uint32_t slot_count);
+// Behrendt 2005 §3: with shell textures, a shell_tile entity per terrain tile and the shell_view
+// resource (inactive without shells). Part of spawn_scenario.
+void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& assets);
 
 // Scenario keyframes with heights above the terrain resolved to absolute world positions.
 std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const heightfield& terrain);

@@ -113,7 +113,9 @@ public:
         d.pass_mask = passes_of(t, b, lod);
         // Behrendt 2005 §2.3: the partner is drawn in the view only, faded (select_representation
         // only names one for a visible plant); the primary alone casts.
-        if (lod.visible && fade.partner != representation::none && fade.value > 0.0f) {
+        // Behrendt 2005 §3.3 end: a shell partner is the shell pass's, fading in by distance.
+        if (lod.visible && fade.partner != representation::none && fade.partner != representation::shell &&
+            fade.value > 0.0f) {
             if (fade.partner == representation::points) add_partner_prefixes(parts, prefix, fade.value, d);
             else d.partner_mesh = mesh_of(species, fade.partner);
             d.partnered = true;
@@ -121,7 +123,9 @@ public:
         }
         // Drawn by its eco tile's sets (aggregate_eco_tiles): only the partner, its own prefixes
         // for the share the tile does not draw; nothing casts (the tile lies beyond the shadows).
-        if (lod.current == representation::eco_tile) {
+        // Drawn by the shell textures over its terrain: only the partner, faded (nothing casts:
+        // the shells receive the sun's shadows but cast none).
+        if (lod.current == representation::eco_tile || lod.current == representation::shell) {
             d.pass_mask = 0;
             return d;
         }

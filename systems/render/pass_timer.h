@@ -16,9 +16,9 @@ namespace sylva::render {
 
 // `splats`: soft point splats (visibility and blend), drawn after the sky they composite over.
 // `edges`: the line style's edge pass (render.style "lines"; 0 ms in every other style).
-enum class gpu_pass : int { shadow = 0, opaque, sky, splats, edges, count };
+enum class gpu_pass : int { shadow = 0, opaque, sky, shells, splats, edges, count };
 constexpr std::array<std::string_view, static_cast<int>(gpu_pass::count)> k_gpu_pass_names = {
-    "shadow", "opaque", "sky", "splats", "edges"};
+    "shadow", "opaque", "sky", "shells", "splats", "edges"};
 
 // What one pass made the device do; all 0 where the device cannot count (has_counts()).
 struct pass_work {

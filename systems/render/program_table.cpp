@@ -70,6 +70,11 @@ program_table::program_table(const program_options& options) : m_options(options
         m_shaders.program({"sky.vert", "sky.frag", {}, {}});
     if (options.normals)
         m_screen[std::size_t(screen_program::edges)] = m_shaders.program({"sky.vert", "edges.frag", {}, {}});
+    if (options.shells) {
+        std::vector<std::string> defines;
+        if (options.toon) defines.push_back("STYLE_TOON");
+        m_screen[std::size_t(screen_program::shell)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
+    }
 }
 
 std::size_t program_table::slot_of(pass_kind pass, material_kind material,

@@ -36,7 +36,8 @@ enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splat
 enum class surface_primitive : std::uint8_t { triangles, points, lines, line_quads, count };
 // splat_composite_visibility: the splat layer's visibility IDs and normals into the frame's
 // ID and normal buffers (shaders/splat_layer.frag), built when the frame has either.
-enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_visibility, edges, count };
+// shell: the shell slices over the terrain (passes/shell_pass.h), built when the scene has them.
+enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_visibility, edges, shell, count };
 
 constexpr surface_primitive surface_primitive_of(primitive_kind p, bool line_quads = false) {
     if (p == primitive_kind::lines)
@@ -68,6 +69,7 @@ struct program_options {
     bool fade_dissolve = false;  // renderer_settings::fade_dissolve
     bool toon = false;           // renderer_settings::toon
     bool normals = false;        // renderer_settings::lines: the view writes its normal buffer
+    bool shells = false;         // the scene has shell textures (passes/shell_pass.h)
 };
 
 class program_table {

@@ -44,13 +44,15 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
 
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
     : m_settings(settings),
-      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines}),
+      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines,
+                  !assets.shells.empty()}),
       m_ring(std::size_t(4) << 20),
       m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
       m_textures(assets),
       m_sky(assets),
       m_commands(terrain_tiles_of(assets)),
-      m_ground_uv_scale(assets.ground_uv_scale_m) {
+      m_ground_uv_scale(assets.ground_uv_scale_m),
+      m_shell_pass(assets) {
     for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
         // Scenes built by hand (tests) may leave the library's mesh table empty: normal-lit.
         const lighting_variant lighting = i < assets.library.meshes.size()
@@ -68,7 +70,7 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     if (settings.shadows)
         m_shadow_maps =
             std::make_unique<shadow_maps>(settings.shadow_resolution, settings.cascades);
-    m_static_upload_bytes = m_meshes.uploaded_bytes() + m_textures.uploaded_bytes;
+    m_static_upload_bytes = m_meshes.uploaded_bytes() + m_textures.uploaded_bytes + m_shell_pass.uploaded_bytes();
     m_context.settings = &m_settings;
     m_context.programs = &m_programs;
     m_context.textures = &m_textures;

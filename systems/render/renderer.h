@@ -13,6 +13,7 @@
 
 #include "components/camera.h"
 #include "components/environment.h"
+#include "components/shell_tile.h"
 #include "components/sun.h"
 #include "lighting/shadow_cascades.h"
 #include "lighting/sky_model.h"
@@ -22,6 +23,7 @@
 #include "resources/frame_stats.h"
 #include "resources/lodf_slots.h"
 #include "resources/scene_assets.h"
+#include "resources/shell_view.h"
 #include "systems/render/draw_commands.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/lodf_commands.h"
@@ -33,6 +35,7 @@
 #include "systems/render/passes/mesh_draw.h"
 #include "systems/render/passes/pass_context.h"
 #include "systems/render/passes/sample_draw.h"
+#include "systems/render/passes/shell_pass.h"
 #include "systems/render/passes/sky_pass.h"
 #include "systems/render/passes/soft_splat_pass.h"
 #include "systems/render/passes/surface_pass.h"
@@ -95,6 +98,11 @@ struct frame_view {
     const lodf_slots* lodf = nullptr;
     const cluster_changes* lodf_clusters = nullptr;
     const species_library* library = nullptr;
+    // Behrendt 2005 §3: the shells' view and their tiles (in terrain tile order), when the scene
+    // has shells; null otherwise.
+    const shell_view* shells = nullptr;
+    const shell_tile* shell_tiles = nullptr;
+    std::size_t shell_tile_count = 0;
 
     // Sets the point/line fields above from what the viewer asks; view_camera must be set.
     void set_samples(const point_line_quality& quality);
@@ -160,10 +168,11 @@ private:
     shadow_cascade_pass m_shadow_pass{m_surface_draws};
     opaque_pass m_opaque_pass{m_surface_draws};
     sky_pass m_sky_pass{m_sky};
+    shell_pass m_shell_pass;
     soft_splat_pass m_soft_splat_pass{m_surface_draws};
     edge_pass m_edge_pass;
-    std::array<frame_pass*, 5> m_passes{&m_shadow_pass, &m_opaque_pass, &m_sky_pass, &m_soft_splat_pass,
-                                        &m_edge_pass};
+    std::array<frame_pass*, 6> m_passes{&m_shadow_pass, &m_opaque_pass,      &m_sky_pass,
+                                        &m_shell_pass,  &m_soft_splat_pass, &m_edge_pass};
     pass_context m_context;
 
     std::size_t m_uniform_offset = 0;

@@ -23,6 +23,11 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
         view.lodf_clusters = ctx.read<cluster_changes>().data();
         view.library = &ctx.resource<species_library>();
     }
+    if (const shell_view* shells = ctx.try_resource<shell_view>(); shells && shells->active) {
+        view.shells = shells;
+        view.shell_tiles = ctx.read<shell_tile>().data();
+        view.shell_tile_count = ctx.read<shell_tile>().size();
+    }
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

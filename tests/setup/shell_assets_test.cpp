@@ -26,7 +26,7 @@ scenario shrubland() {
 struct baked {
     scenario s = shrubland();
     scene_assets assets = build_scene_assets(s, nullptr);
-    shell_assets shells = build_shell_assets(s, assets, nullptr);
+    shell_textures shells = build_shell_assets(s, assets, nullptr);
 };
 
 const baked& shared() {

@@ -1,0 +1,23 @@
+#pragma once
+// Behrendt 2005 §3: the scene's shell textures, one slice stack per Wang tile type
+// (models/bake/shell_bake.h), and how the tiling lays them over the terrain
+// (models/terrain/wang_tiles.h). Baked by setup/shell_assets.h when a ladder reaches the shell
+// rung; drawn by the shell pass (systems/render/passes/shell_pass.h).
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <vector>
+
+#include "models/bake/shell_bake.h"
+
+namespace sylva {
+
+struct shell_textures {
+    double tile_size_m = 0.0;
+    std::uint32_t colours = 0;
+    std::uint64_t tiling_seed = 0;
+    glm::dvec2 origin{0.0};  // lattice corner (0, 0)
+    std::vector<shell_stack> tiles;  // by Wang tile index (models/terrain/wang_tiles.h)
+    bool empty() const { return tiles.empty(); }
+};
+
+}  // namespace sylva

@@ -1,0 +1,39 @@
+// Behrendt 2005 §3.3–3.4: a shell slice's fragment finds its Wang tile in the index texture from
+// its terrain position, reads that tile's slice of the current pyramid level (premultiplied
+// colour and the normal seen from above), lights it like the plants (sun with the cascades'
+// shadows, sky, fog) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
+// GL_ONE_MINUS_SRC_ALPHA), bottom slice first. Near the viewer it fades out where the plants'
+// ladder hands over to it (§3.3 end: a linear fade over the band).
+#include "common.glsl"
+#include "shading.glsl"
+in vec3 v_position;
+in vec2 v_local_xz;
+flat in int v_slice;
+
+layout(binding = 2) uniform sampler2DArray u_shell_colour;
+layout(binding = 3) uniform sampler2DArray u_shell_normal;
+layout(binding = 4) uniform usampler2D u_wang_index;
+uniform vec4 u_lattice;  // xy: lattice corner (0, 0), terrain-local; z: tile size; w: 1 / tile size
+uniform int u_layers_per_tile;
+uniform int u_level_first_layer;
+uniform vec2 u_fade;  // the shell is transparent nearer than x metres, whole beyond y
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    vec2 cell_f = (v_local_xz - u_lattice.xy) * u_lattice.w;
+    ivec2 cell = ivec2(floor(cell_f));
+    ivec2 cells = textureSize(u_wang_index, 0);
+    uint tile = texelFetch(u_wang_index, clamp(cell, ivec2(0), cells - 1), 0).r;
+    vec2 uv = cell_f - vec2(cell);
+    float layer = float(int(tile) * u_layers_per_tile + u_level_first_layer + v_slice);
+    // Gradients of the continuous coordinate: the jump of uv at a tile border picks no mip.
+    vec2 dx = dFdx(cell_f);
+    vec2 dy = dFdy(cell_f);
+    vec4 c = textureGrad(u_shell_colour, vec3(uv, layer), dx, dy);
+    float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
+    if (c.a * fade < 0.5 / 255.0) discard;
+    vec3 n = normalize(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
+    vec3 lit = shade_surface(c.rgb / max(c.a, 1e-4), n, v_position, true);
+    out_color = vec4(lit * c.a, c.a) * fade;
+}

@@ -1,0 +1,48 @@
+#pragma once
+// Behrendt 2005 §3: the far vegetation as shell textures over the terrain, drawn after the sky
+// (it writes no depth, so the sky would cover it) with premultiplied blending, tile by terrain
+// tile at the pyramid level its distance asks (lod/shell_levels.h), bottom slice first.
+//
+// On the GPU: the terrain's triangles once more with each triangle's centre per vertex (for the
+// slanting, §3.2; static), the Wang tiles' slice pyramids as two 2-D array textures (colour and
+// normal, layer = tile · layers_per_tile + first layer of the level + slice), and the tiling as
+// an index texture of tile types, one texel per lattice cell (§3.4). Mip levels are each layer's
+// own: a tile's border texels were baked with the plants across it (models/bake/shell_bake.h),
+// so neighbouring tiles' mips agree where their content does.
+#include <cstdint>
+#include <vector>
+
+#include "lod/shell_levels.h"
+#include "resources/scene_assets.h"
+#include "systems/render/gl_objects.h"
+#include "systems/render/passes/pass_context.h"
+
+namespace sylva::render {
+
+class shell_pass final : public frame_pass {
+public:
+    // Nothing is made (and the pass draws nothing) when the scene has no shells.
+    explicit shell_pass(const scene_assets& assets);
+    void draw(pass_context& context) override;
+    bool active() const { return m_slices > 0; }
+    std::uint32_t levels() const { return std::uint32_t(m_level_first_layer.size()); }
+    float slice_height_m() const { return m_slice_height; }
+    std::uint64_t uploaded_bytes() const { return m_uploaded_bytes; }
+
+private:
+    std::uint32_t m_slices = 0;  // level 0's
+    float m_slice_height = 0.0f;
+    std::uint32_t m_layers_per_tile = 0;
+    std::vector<std::uint32_t> m_level_first_layer;
+    std::vector<std::uint32_t> m_level_slices;
+    glm::vec4 m_lattice{0.0f};
+    gl_texture m_colour;
+    gl_texture m_normal;
+    gl_texture m_index;
+    gl_buffer m_vertices;
+    gl_vertex_array m_vertex_array;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_tile_ranges;  // first vertex, count
+    std::uint64_t m_uploaded_bytes = 0;
+};
+
+}  // namespace sylva::render

@@ -1,0 +1,51 @@
+#include "systems/update_shells_system.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+#include "ecs/parallel.h"
+#include "lod/point_line_lod.h"
+
+namespace sylva {
+
+float distance_for_size(float diameter_m, float size_px, double pixel_units) {
+    return float(double(diameter_m) / (double(size_px) * pixel_units));
+}
+
+void update_shells_system::run(ecs::system_context<update_shells_system>& ctx) {
+    shell_view& view = ctx.resource_mut<shell_view>();
+    if (!view.active) return;
+    const camera& cam = ctx.single<camera>();
+    const lod_policy& policy = ctx.resource<lod_policy>();
+    const double pixel = image_plane_units(1.0, double(cam.fov_y), double(cam.viewport_height_px));
+    const auto& species = ctx.resource<species_library>().species;
+    view.below_px = 0.0f;
+    for (std::size_t k = 0; k < policy.ladders.size() && k < species.size(); ++k) {
+        const ladder& l = policy.ladders[k];
+        if (policy.mode != lod_policy::kind::ladder || !l.reaches(representation::shell)) continue;
+        view.below_px = l.below_px[l.count - 1];  // the shell is the last rung
+        view.band = l.band[l.count - 1];
+        view.plant_diameter_m = 2.0f * species[k].bounding_radius * (k < view.mean_scale.size() ? view.mean_scale[k] : 1.0f);
+        break;
+    }
+    // Sizes as select_representation sees them: lod_scale and the ladders' size scale stretch the
+    // handover, so its distances move with them.
+    const double stretch = double(cam.lod_scale) * double(policy.ladder_size_scale);
+    const float diameter = float(double(view.plant_diameter_m) * stretch);
+    // No ladder reaches the shell (a bench configuration without it): the shells draw nothing.
+    view.fade_start_m = view.below_px > 0.0f ? distance_for_size(diameter, view.below_px * (1.0f + view.band), pixel) : 0.0f;
+    view.fade_end_m = view.below_px > 0.0f ? distance_for_size(diameter, view.below_px, pixel) : 0.0f;
+    const glm::vec3 eye = glm::vec3(cam.position - view.terrain_origin);
+    const float pixels_per_radian = float(1.0 / pixel);
+    auto& tiles = ctx.write<shell_tile>();
+    shell_tile* data = tiles.data();
+    ctx.parallel_for(tiles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const float nearest = std::max(glm::length(data[i].centre - eye) - data[i].radius, 1e-3f);
+            data[i].level = shell_level_at(nearest, view.slice_height_m, pixels_per_radian, k_shell_min_spacing_px,
+                                           view.max_level, k_shell_merge_band);
+        }
+    });
+}
+
+}  // namespace sylva
