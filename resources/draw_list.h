@@ -73,6 +73,7 @@ struct draw_list {
     std::vector<std::uint32_t> chunk_offsets;  // build scratch: items per chunk, prefix-summed
     std::vector<std::uint32_t> chunk_point_plants;  // build scratch: plants drawn as prefixes
     std::vector<std::uint32_t> chunk_eco_plants;    // build scratch: seen plants drawn by their tile
+    std::vector<std::uint32_t> chunk_shell_plants;  // build scratch: seen plants drawn by the shells
     // Statistics of the opaque pass (what the viewer sees), for metrics.
     std::array<std::uint32_t, static_cast<std::size_t>(representation::count)> instances_by_representation{};
     std::uint64_t triangles = 0;  // LoDF foliage's included

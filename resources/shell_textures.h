@@ -3,6 +3,7 @@
 // (models/bake/shell_bake.h), and how the tiling lays them over the terrain
 // (models/terrain/wang_tiles.h). Baked by setup/shell_assets.h when a ladder reaches the shell
 // rung; drawn by the shell pass (systems/render/passes/shell_pass.h).
+#include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <vector>
@@ -16,6 +17,9 @@ struct shell_textures {
     std::uint32_t colours = 0;
     std::uint64_t tiling_seed = 0;
     glm::dvec2 origin{0.0};  // lattice corner (0, 0)
+    // Where the tiled populations grow, {x0, z0, x1, z1} terrain-local (they share one area): the
+    // shells are cut to it, as the placement is.
+    std::array<double, 4> area{};
     std::vector<shell_stack> tiles;  // by Wang tile index (models/terrain/wang_tiles.h)
     bool empty() const { return tiles.empty(); }
 };

@@ -374,6 +374,20 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
             (spacing ? *spacing : population).fail(problem + " (wang_tiles.tile_size_m)");
         }
     }
+    // The shells are cut to one area: every tiled population grows on the same.
+    const population_settings* first_tiled = nullptr;
+    for (std::size_t i = 0; i < s.populations.size(); ++i) {
+        const population_settings& p = s.populations[i];
+        if (p.placement != "wang_tiles") continue;
+        if (!first_tiled) first_tiled = &p;
+        else if (p.area != first_tiled->area) {
+            const json_node population = n.find("populations")->at(i);
+            const auto area = population.find("area");
+            (area ? *area : population)
+                .fail("every population with placement \"wang_tiles\" must grow on the same area (its shells "
+                      "cover one area)");
+        }
+    }
     // Behrendt 2005 §3: the shell rung draws the Wang tiling's plants; a species drawn by it must
     // be placed by the tiling everywhere, and its rung is chosen by projected size (the budget
     // solver measures rungs plant by plant, and the shell is the terrain's).

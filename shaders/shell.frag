@@ -17,10 +17,12 @@ uniform vec4 u_lattice;  // xy: lattice corner (0, 0), terrain-local; z: tile si
 uniform int u_layers_per_tile;
 uniform int u_level_first_layer;
 uniform vec2 u_fade;  // the shell is transparent nearer than x metres, whole beyond y
+uniform vec4 u_area;  // x0, z0, x1, z1: where the tiled populations grow (terrain-local)
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
+    if (any(lessThan(v_local_xz, u_area.xy)) || any(greaterThanEqual(v_local_xz, u_area.zw))) discard;
     vec2 cell_f = (v_local_xz - u_lattice.xy) * u_lattice.w;
     ivec2 cell = ivec2(floor(cell_f));
     ivec2 cells = textureSize(u_wang_index, 0);

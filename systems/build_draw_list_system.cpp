@@ -306,6 +306,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
     point_plants.assign(chunks, 0);
     std::vector<std::uint32_t>& eco_plants = list.chunk_eco_plants;
     eco_plants.assign(chunks, 0);
+    std::vector<std::uint32_t>& shell_plants = list.chunk_shell_plants;  // drawn by the shell pass
+    shell_plants.assign(chunks, 0);
     ctx.parallel_for(n, chunk, [&](std::size_t begin, std::size_t end, std::size_t c) {
         std::uint32_t count = 0;
         std::size_t plant = begin;
@@ -324,6 +326,7 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
             const bool points_partner = fade.partner == representation::points && fade.value > 0.0f;
             if ((lod.current == representation::points || points_partner) && lod.visible) ++point_plants[c];
             if (lod.current == representation::eco_tile && lod.visible) ++eco_plants[c];
+            if (lod.current == representation::shell && lod.visible) ++shell_plants[c];
         });
         offsets[c + 1] = count;
     });
@@ -439,6 +442,8 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         list.instances_by_representation[std::size_t(representation::points)] += c;
     for (const std::uint32_t c : eco_plants)
         list.instances_by_representation[std::size_t(representation::eco_tile)] += c;
+    for (const std::uint32_t c : shell_plants)
+        list.instances_by_representation[std::size_t(representation::shell)] += c;
 }
 
 }  // namespace sylva

@@ -54,7 +54,7 @@ TEST(bench_command, writes_table_plot_and_summary) {
     EXPECT_NE(r.output.find("baseline"), std::string::npos);
     // Only the instance counts of representations that exist (no stub figures).
     for (const auto& c : json.at("configurations"))
-        for (const char* stub : {"instances_lines", "instances_shell", "instances_foliage_clusters"})
+        for (const char* stub : {"instances_lines", "instances_foliage_clusters"})
             EXPECT_FALSE(c.at("primitives").contains(stub)) << stub;
 }
 

@@ -955,6 +955,11 @@ TEST(scenario_loader, wang_tiled_populations_load_round_trip_and_refuse_rules_a_
                   "a tile of 10 m is too small for a spacing of 2 m: it needs at least 10.83 m (5.41 x the spacing: corner "
                   "squares and edge strips on both sides, and an interior) (wang_tiles.tile_size_m)",
                   "2"});
+    json two = j;
+    two["populations"].push_back({{"species", "oak"}, {"count", 5}, {"placement", "wang_tiles"}, {"area", {0, 0, 50, 50}}});
+    expect_error(two, {"/populations/1/area",
+                       "every population with placement \"wang_tiles\" must grow on the same area (its shells cover one area)",
+                       "[0,0,50,50]"});
     expect_error(set(j, "/wang_tiles/colours", 5),
                  {"/wang_tiles/colours", "out of range; expected an integer from 2 to 4", "5"});
 }

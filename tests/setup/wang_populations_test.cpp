@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
+#include "components/transform.h"
 #include "scenarios/scenario_loader.h"
+#include "setup/spawn_scenario.h"
 
 namespace sylva {
 namespace {
@@ -20,7 +22,8 @@ scenario wang_meadow() {
         "wang_tiles": {"tile_size_m": 25, "colours": 2},
         "species": [{"name": "oak"}, {"name": "bush", "generator": "shrub"}],
         "populations": [
-            {"species": "oak", "count": 400, "min_spacing_m": 4, "placement": "wang_tiles"},
+            {"species": "oak", "count": 150, "min_spacing_m": 4, "placement": "wang_tiles",
+             "area": [-60, -40, 70, 55]},
             {"species": "bush", "count": 900, "min_spacing_m": 2, "placement": "wang_tiles",
              "area": [-60, -40, 70, 55]}]})",
                               "wang_meadow.json");
@@ -66,13 +69,14 @@ TEST(wang_populations, populations_share_the_tiling_and_differ_in_their_sets) {
     const wang_tile_set bushes = wang_tile_set_of(s, 1, 0.0f);
     EXPECT_EQ(oaks.rules.tile_size_m, bushes.rules.tile_size_m);
     EXPECT_NE(oaks.tiles[0].size(), bushes.tiles[0].size());
-    EXPECT_NEAR(oaks.rules.plants_per_m2, 400.0 / (200.0 * 200.0), 1e-12);
-    // The oaks of lattice tile (1, 2) are tile type wang_tile_at(seed, 1, 2) moved there.
-    const std::uint32_t type = wang_tile_at(wang_tiling_seed(s), 1, 2, 2);
+    EXPECT_NEAR(oaks.rules.plants_per_m2, 150.0 / (130.0 * 95.0), 1e-12);
+    // The oaks of lattice tile (2, 3), inside the area, are tile type wang_tile_at(seed, 2, 3)
+    // moved there.
+    const std::uint32_t type = wang_tile_at(wang_tiling_seed(s), 2, 3, 2);
     const std::vector<placement> all = place_wang_population(s, 0, 0.0f);
     std::size_t in_tile = 0;
     for (const placement& p : all) {
-        const glm::dvec2 local = p.xz - glm::dvec2(-100.0 + 25.0, -100.0 + 50.0);
+        const glm::dvec2 local = p.xz - glm::dvec2(-100.0 + 50.0, -100.0 + 75.0);
         if (local.x >= 0.0 && local.x < 25.0 && local.y >= 0.0 && local.y < 25.0) {
             ASSERT_LT(in_tile, oaks.tiles[type].size());
             EXPECT_NEAR(glm::length(local - oaks.tiles[type][in_tile].xz), 0.0, 1e-9);
@@ -80,6 +84,29 @@ TEST(wang_populations, populations_share_the_tiling_and_differ_in_their_sets) {
         }
     }
     EXPECT_EQ(in_tile, oaks.tiles[type].size());
+}
+
+// The spawned world's plants are the tiling's, position for position.
+TEST(wang_populations, the_spawned_world_holds_the_tilings_plants) {
+    scenario s = load_scenario_text(R"({
+        "seed": 5, "terrain": {"size_m": 120, "resolution": 17, "height_m": 1},
+        "wang_tiles": {"tile_size_m": 60},
+        "species": [{"name": "bush", "generator": "shrub", "height_m": 1.5}],
+        "populations": [{"species": "bush", "count": 40, "min_spacing_m": 6, "placement": "wang_tiles",
+                         "area": [-30, -30, 30, 30]}]})",
+                                    "spawned.json");
+    const scene_assets assets = build_scene_assets(s, nullptr);
+    ecs::world world;
+    spawn_scenario(world, s, assets);
+    std::vector<glm::dvec2> spawned;
+    const auto& transforms = world.table<world_transform>();
+    for (std::size_t i = 0; i < transforms.size(); ++i)
+        spawned.emplace_back(transforms.data()[i].position.x, transforms.data()[i].position.z);
+    const std::vector<placement> tiled = place_wang_population(s, 0, wang_reach_m(s, 0, assets));
+    ASSERT_EQ(spawned.size(), tiled.size());
+    for (const placement& p : tiled)
+        EXPECT_TRUE(std::any_of(spawned.begin(), spawned.end(), [&](glm::dvec2 q) { return glm::length(q - p.xz) < 1e-6; }))
+            << p.xz.x << ", " << p.xz.y;
 }
 
 }  // namespace

@@ -62,9 +62,16 @@ shell_pass::shell_pass(const scene_assets& assets) {
                 std::uint16_t(wang_tile_at(shells.tiling_seed, first_i + i, first_j + j, shells.colours));
     m_index = make_texture(GL_TEXTURE_2D);
     glTextureStorage2D(m_index.id(), 1, GL_R16UI, GLsizei(cells), GLsizei(cells));
+    // An integer texture with GL's default linear filters is incomplete and reads as 0.
+    glTextureParameteri(m_index.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(m_index.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Rows of 2-byte texels: GL's default unpack alignment of 4 would skew every odd-width row.
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
     glTextureSubImage2D(m_index.id(), 0, 0, 0, GLsizei(cells), GLsizei(cells), GL_RED_INTEGER, GL_UNSIGNED_SHORT,
                         index.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     m_uploaded_bytes += index.size() * 2;
+    m_area = {float(shells.area[0]), float(shells.area[1]), float(shells.area[2]), float(shells.area[3])};
     m_lattice = {float(shells.origin.x + double(first_i) * t), float(shells.origin.y + double(first_j) * t), float(t),
                  float(1.0 / t)};
     // The terrain's triangles, each vertex with its triangle's centre (Eq. 2 needs m).
@@ -110,6 +117,7 @@ void shell_pass::draw(pass_context& context) {
     glUniform1f(glGetUniformLocation(program, "u_slice_height"), m_slice_height);
     glUniform1f(glGetUniformLocation(program, "u_slant"), shells.slant);
     glUniform4fv(glGetUniformLocation(program, "u_lattice"), 1, &m_lattice.x);
+    glUniform4fv(glGetUniformLocation(program, "u_area"), 1, &m_area.x);
     glUniform1i(glGetUniformLocation(program, "u_layers_per_tile"), GLint(m_layers_per_tile));
     glUniform2f(glGetUniformLocation(program, "u_fade"), shells.fade_start_m, shells.fade_end_m);
     const GLint level_at = glGetUniformLocation(program, "u_level");

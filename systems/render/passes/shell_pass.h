@@ -36,6 +36,7 @@ private:
     std::vector<std::uint32_t> m_level_first_layer;
     std::vector<std::uint32_t> m_level_slices;
     glm::vec4 m_lattice{0.0f};
+    glm::vec4 m_area{0.0f};
     gl_texture m_colour;
     gl_texture m_normal;
     gl_texture m_index;
