@@ -28,12 +28,22 @@ image_rgba8 merge_slices(const image_rgba8& lower, const image_rgba8& upper) {
     return out;
 }
 
-std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices) {
+namespace {
+
+// Pairs (2k, 2k + 1) merged by `merge`, an odd top slice carried up.
+template <class Merge>
+std::vector<image_rgba8> pair_up(const std::vector<image_rgba8>& slices, const Merge& merge) {
     std::vector<image_rgba8> level;
     level.reserve((slices.size() + 1) / 2);
-    for (std::size_t k = 0; k + 1 < slices.size(); k += 2) level.push_back(merge_slices(slices[k], slices[k + 1]));
+    for (std::size_t k = 0; k + 1 < slices.size(); k += 2) level.push_back(merge(slices[k], slices[k + 1]));
     if (slices.size() % 2 == 1) level.push_back(slices.back());
     return level;
+}
+
+}  // namespace
+
+std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices) {
+    return pair_up(slices, merge_slices);
 }
 
 image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upper) {
@@ -55,11 +65,7 @@ image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upp
 }
 
 std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices) {
-    std::vector<image_rgba8> level;
-    level.reserve((slices.size() + 1) / 2);
-    for (std::size_t k = 0; k + 1 < slices.size(); k += 2) level.push_back(merge_normal_slices(slices[k], slices[k + 1]));
-    if (slices.size() % 2 == 1) level.push_back(slices.back());
-    return level;
+    return pair_up(slices, merge_normal_slices);
 }
 
 }  // namespace sylva

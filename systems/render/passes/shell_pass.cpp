@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 #include "lod/shell_blending.h"
 #include "models/terrain/wang_tiles.h"
@@ -19,6 +20,23 @@ struct shell_vertex {
 static_assert(sizeof(shell_vertex) == 36);
 
 }  // namespace
+
+shell_pass::uniform_locations shell_pass::uniforms_of(GLuint program) {
+    uniform_locations u;
+    u.program = program;
+    u.terrain_position = glGetUniformLocation(program, "u_terrain_position");
+    u.slice_height = glGetUniformLocation(program, "u_slice_height");
+    u.slant = glGetUniformLocation(program, "u_slant");
+    u.lattice = glGetUniformLocation(program, "u_lattice");
+    u.area = glGetUniformLocation(program, "u_area");
+    u.layers_per_tile = glGetUniformLocation(program, "u_layers_per_tile");
+    u.fade = glGetUniformLocation(program, "u_fade");
+    u.level = glGetUniformLocation(program, "u_level");
+    u.merge = glGetUniformLocation(program, "u_merge");
+    u.slices_at_level = glGetUniformLocation(program, "u_slices_at_level");
+    u.level_first_layer = glGetUniformLocation(program, "u_level_first_layer");
+    return u;
+}
 
 shell_pass::shell_pass(const scene_assets& assets) {
     const shell_textures& shells = assets.shells;
@@ -107,34 +125,36 @@ void shell_pass::draw(pass_context& context) {
     context.timer->begin(gpu_pass::shells);
     context.target->draw_ids(false);
     const GLuint program = context.programs->screen(screen_program::shell);
+    if (m_uniforms.program != program) m_uniforms = uniforms_of(program);
+    const uniform_locations& u = m_uniforms;
     glUseProgram(program);
     glBindVertexArray(m_vertex_array.id());
     glBindTextureUnit(2, m_colour.id());
     glBindTextureUnit(3, m_normal.id());
     glBindTextureUnit(4, m_index.id());
     if (context.shadows) glBindTextureUnit(1, context.shadows->texture());
-    glUniform3fv(glGetUniformLocation(program, "u_terrain_position"), 1, &view.terrain_position.x);
-    glUniform1f(glGetUniformLocation(program, "u_slice_height"), m_slice_height);
-    glUniform1f(glGetUniformLocation(program, "u_slant"), shells.slant);
-    glUniform4fv(glGetUniformLocation(program, "u_lattice"), 1, &m_lattice.x);
-    glUniform4fv(glGetUniformLocation(program, "u_area"), 1, &m_area.x);
-    glUniform1i(glGetUniformLocation(program, "u_layers_per_tile"), GLint(m_layers_per_tile));
-    glUniform2f(glGetUniformLocation(program, "u_fade"), shells.fade_start_m, shells.fade_end_m);
-    const GLint level_at = glGetUniformLocation(program, "u_level");
-    const GLint merge_at = glGetUniformLocation(program, "u_merge");
-    const GLint slices_at = glGetUniformLocation(program, "u_slices_at_level");
-    const GLint first_at = glGetUniformLocation(program, "u_level_first_layer");
+    glUniform3fv(u.terrain_position, 1, &view.terrain_position.x);
+    glUniform1f(u.slice_height, m_slice_height);
+    glUniform1f(u.slant, shells.slant);
+    glUniform4fv(u.lattice, 1, &m_lattice.x);
+    glUniform4fv(u.area, 1, &m_area.x);
+    glUniform1i(u.layers_per_tile, GLint(m_layers_per_tile));
+    glUniform2f(u.fade, shells.fade_start_m, shells.fade_end_m);
+    const glm::vec3 eye = -view.terrain_position;  // terrain-local
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // Behrendt 2005 §3.3: c + F·(1 − α)
     for (std::size_t t = 0; t < m_tile_ranges.size() && t < view.shell_tile_count; ++t) {
-        const shell_level level = view.shell_tiles[t].level;
+        const shell_tile& tile = view.shell_tiles[t];
+        // Wholly nearer than the fade: every fragment would be discarded.
+        if (glm::length(tile.centre - eye) + tile.radius < shells.fade_start_m) continue;
+        const shell_level level = tile.level;
         const std::uint32_t l = std::min<std::uint32_t>(level.level, levels() - 1);
-        glUniform1i(level_at, GLint(l));
-        glUniform1f(merge_at, l + 1 < levels() ? level.merge : 0.0f);
-        glUniform1i(slices_at, GLint(m_level_slices[l]));
-        glUniform1i(first_at, GLint(m_level_first_layer[l]));
+        glUniform1i(u.level, GLint(l));
+        glUniform1f(u.merge, l + 1 < levels() ? level.merge : 0.0f);
+        glUniform1i(u.slices_at_level, GLint(m_level_slices[l]));
+        glUniform1i(u.level_first_layer, GLint(m_level_first_layer[l]));
         glDrawArraysInstanced(GL_TRIANGLES, GLint(m_tile_ranges[t].first), GLsizei(m_tile_ranges[t].second),
                               GLsizei(m_level_slices[l]));
         ++context.draw_calls;

@@ -30,6 +30,15 @@ public:
     std::uint64_t uploaded_bytes() const { return m_uploaded_bytes; }
 
 private:
+    // The program's uniforms, asked once (the frame does no string work).
+    struct uniform_locations {
+        GLuint program = 0;
+        GLint terrain_position = -1, slice_height = -1, slant = -1, lattice = -1, area = -1, layers_per_tile = -1,
+              fade = -1, level = -1, merge = -1, slices_at_level = -1, level_first_layer = -1;
+    };
+    static uniform_locations uniforms_of(GLuint program);
+
+    uniform_locations m_uniforms;
     std::uint32_t m_slices = 0;  // level 0's
     float m_slice_height = 0.0f;
     std::uint32_t m_layers_per_tile = 0;
