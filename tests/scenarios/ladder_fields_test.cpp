@@ -87,6 +87,23 @@ TEST(ladder_fields, bad_ladders_name_the_rung_and_the_field) {
                  "/lod/ladder/1/fade", "unknown");
 }
 
+// Behrendt 2005 §3: the shell rung ends a ladder, for Wang-tiled species only, chosen by size.
+TEST(ladder_fields, the_shell_rung_ends_a_ladder_of_a_wang_tiled_species_chosen_by_size) {
+    const json shell_last = json::parse(R"([{"rung": "mesh_full"}, {"rung": "crossed_billboard", "below_px": 40},
+                                            {"rung": "shell", "below_px": 12}])");
+    json tiled = with_ladder(shell_last);
+    tiled["populations"][0]["placement"] = "wang_tiles";
+    EXPECT_EQ(load(tiled).lod.ladder.back().rung, "shell");
+    expect_error(with_ladder(shell_last), "/lod/ladder/2/rung",
+                 "species oak has a population not placed by \"wang_tiles\"");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"}, {"rung": "shell", "below_px": 40},
+                                             {"rung": "crossed_billboard", "below_px": 12}])")),
+                 "/lod/ladder/1/rung", "shell must be the last rung");
+    json budget = tiled;
+    budget["lod"]["plant_budget_ms"] = 5;
+    expect_error(budget, "/lod/ladder/2/rung", "the shell rung is chosen by projected size");
+}
+
 TEST(ladder_fields, a_plant_budget_needs_a_ladder_to_choose_from) {
     json j = with_ladder(k_three);
     j["lod"]["plant_budget_ms"] = 40;
