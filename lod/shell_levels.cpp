@@ -18,6 +18,18 @@ shell_level shell_level_at(float distance_m, float slice_height_m, float pixels_
     return {std::uint32_t(whole), float(t)};
 }
 
+std::uint32_t shell_pyramid_levels(std::uint32_t slices) {
+    if (slices == 0) return 0;
+    std::uint32_t levels = 1;
+    for (std::uint32_t n = slices; n > 1; n = (n + 1) / 2) ++levels;
+    return levels;
+}
+
+std::uint32_t shell_slices_at_level(std::uint32_t slices, std::uint32_t level) {
+    for (std::uint32_t l = 0; l < level && slices > 1; ++l) slices = (slices + 1) / 2;
+    return slices;
+}
+
 float shell_slice_height(std::uint32_t j, std::uint32_t level, float merge, float slice_height_m,
                          std::uint32_t slices_at_level) {
     const float span = std::ldexp(slice_height_m, int(level));  // 2^L·h

@@ -28,6 +28,12 @@ struct shell_level {
 shell_level shell_level_at(float distance_m, float slice_height_m, float pixels_per_radian, float min_spacing_px,
                            std::uint32_t max_level, float band);
 
+// The levels of a pyramid over `slices` bake slices: level L holds ⌈slices / 2^L⌉, the last one
+// (at most 1 + ⌈log2 slices⌉ levels; 0 slices: none).
+std::uint32_t shell_pyramid_levels(std::uint32_t slices);
+// The slices at `level` of that pyramid: ⌈slices / 2^level⌉, pairs merged level by level.
+std::uint32_t shell_slices_at_level(std::uint32_t slices, std::uint32_t level);
+
 // The height above the ground at which slice `j` of level `level` is drawn when its pairs have
 // merged by `merge`: its centre (j + ½)·2^L·h moved by `merge` toward the centre of its pair
 // (2⌊j/2⌋ + 1)·2^L·h. An unpaired top slice (an odd count) does not move.

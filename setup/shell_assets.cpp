@@ -5,6 +5,7 @@
 #include <span>
 
 #include "models/cache/shell_stack_io.h"
+#include "scenarios/species_lookup.h"
 #include "setup/wang_populations.h"
 
 namespace sylva {
@@ -60,9 +61,7 @@ shell_textures build_shell_assets(const scenario& s, const scene_assets& assets,
     key = hash_bytes(std::as_bytes(std::span(&settings, 1)), key);
     for (std::size_t p : tiled) {
         const population_settings& pop = s.populations[p];
-        const std::size_t sp = std::size_t(std::find_if(s.species.begin(), s.species.end(),
-                                                        [&](const species_settings& x) { return x.name == pop.species; }) -
-                                           s.species.begin());
+        const std::size_t sp = species_index_of(s, pop.species);
         const auto known = std::find(species_of.begin(), species_of.end(), sp);
         const auto index = std::uint32_t(known - species_of.begin());
         if (known == species_of.end()) {

@@ -33,6 +33,7 @@
 #include "resources/shell_view.h"
 #include "resources/draw_list.h"
 #include "lod/eco_tiles.h"
+#include "lod/shell_levels.h"
 #include "resources/frame_stats.h"
 #include "lighting/environment_map.h"
 #include "lighting/shadow_cascades.h"
@@ -41,6 +42,7 @@
 #include "setup/point_line_assets.h"
 #include "resources/shadow_receivers.h"
 #include "scenarios/scenario_loader.h"
+#include "scenarios/species_lookup.h"
 #include "setup/species_models.h"
 #include "setup/shell_assets.h"
 #include "setup/wang_populations.h"
@@ -356,12 +358,6 @@ struct planned_plant {
     std::size_t species = 0;
 };
 
-std::size_t species_index_of(const scenario& s, const std::string& name) {
-    return std::size_t(std::find_if(s.species.begin(), s.species.end(),
-                                    [&](const species_settings& sp) { return sp.name == name; }) -
-                       s.species.begin());
-}
-
 // Every population's placements, in population order (deterministic for the scenario seed).
 std::vector<planned_plant> plan_plants(const scenario& s, const scene_assets& assets) {
     std::vector<planned_plant> plants;
@@ -489,7 +485,7 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
         view.active = true;
         view.terrain_origin = s.world_offset;
         view.slice_height_m = assets.shells.tiles.front().slice_height_m;
-        for (auto n = std::uint32_t(assets.shells.tiles.front().colour.size()); n > 1; n = (n + 1) / 2) ++view.max_level;
+        view.max_level = shell_pyramid_levels(std::uint32_t(assets.shells.tiles.front().colour.size())) - 1;
         view.mean_scale.assign(s.species.size(), 1.0f);
         for (std::size_t k = 0; k < s.species.size(); ++k)
             for (const population_settings& p : s.populations)

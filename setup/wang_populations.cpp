@@ -6,6 +6,7 @@
 #include <string>
 
 #include "models/random.h"
+#include "scenarios/species_lookup.h"
 
 namespace sylva {
 
@@ -18,9 +19,7 @@ glm::dvec2 wang_lattice_origin(const scenario& s) {
 
 float wang_reach_m(const scenario& s, std::size_t p, const scene_assets& assets) {
     const population_settings& pop = s.populations.at(p);
-    const auto named = std::find_if(s.species.begin(), s.species.end(),
-                                    [&](const species_settings& sp) { return sp.name == pop.species; });
-    const std::size_t species = std::size_t(named - s.species.begin());
+    const std::size_t species = species_index_of(s, pop.species);
     const mesh_data& full = assets.meshes.at(assets.library.species.at(species).mesh_full);
     float reach = 0.0f;
     for (const vertex& v : full.vertices) reach = std::max(reach, std::hypot(v.position.x, v.position.z));

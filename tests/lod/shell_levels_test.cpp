@@ -44,5 +44,15 @@ TEST(shell_levels, pairs_move_together_until_they_touch_where_their_merge_is_dra
     EXPECT_FLOAT_EQ(shell_slice_height(2, 1, 1.0f, 1.0f, 3), 5.0f) << "unpaired";
 }
 
+// 16 slices: 16, 8, 4, 2, 1 (five levels); 5 slices: 5, 3, 2, 1 (an odd top slice carried up).
+TEST(shell_levels, a_pyramid_halves_its_slices_level_by_level) {
+    EXPECT_EQ(shell_pyramid_levels(16), 5u);
+    EXPECT_EQ(shell_slices_at_level(16, 2), 4u);
+    EXPECT_EQ(shell_pyramid_levels(5), 4u);
+    EXPECT_EQ(shell_slices_at_level(5, 1), 3u);
+    EXPECT_EQ(shell_slices_at_level(5, 3), 1u);
+    EXPECT_EQ(shell_pyramid_levels(1), 1u);
+}
+
 }  // namespace
 }  // namespace sylva

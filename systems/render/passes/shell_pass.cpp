@@ -44,11 +44,10 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_slices = std::uint32_t(shells.tiles.front().colour.size());
     m_slice_height = shells.tiles.front().slice_height_m;
     // Level L holds ⌈S / 2^L⌉ slices, each pair of the level below merged (lod/shell_blending.h).
-    for (std::uint32_t n = m_slices;; n = (n + 1) / 2) {
+    for (std::uint32_t level = 0; level < shell_pyramid_levels(m_slices); ++level) {
         m_level_first_layer.push_back(m_layers_per_tile);
-        m_level_slices.push_back(n);
-        m_layers_per_tile += n;
-        if (n == 1) break;
+        m_level_slices.push_back(shell_slices_at_level(m_slices, level));
+        m_layers_per_tile += m_level_slices.back();
     }
     std::vector<image_rgba8> colour;
     std::vector<image_rgba8> normal;
