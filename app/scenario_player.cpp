@@ -61,11 +61,11 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<adapt_sample_distance_system>();
     schedule.add<adapt_plant_budget_system>();
     schedule.add<cull_system>();
+    schedule.add<update_shells_system>();
     schedule.add<select_representation_system>();
     schedule.add<aggregate_eco_tiles_system>();
     schedule.add<update_point_prefix_system>();
     schedule.add<update_lodf_system>();
-    schedule.add<update_shells_system>();
     schedule.add<project_environment_system>();
     schedule.add<fit_shadow_cascades_system>();
     schedule.add<build_draw_list_system>();
@@ -132,6 +132,9 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
                 policy.ladders.push_back(!species.ladder.empty() ? ladder_of(species.ladder)
                                          : !s.lod.ladder.empty() ? ladder_of(s.lod.ladder)
                                                                  : papers_ladder());
+        if (policy.without_shells)
+            for (ladder& l : policy.ladders)
+                if (l.count > 1 && l.rungs[l.count - 1] == representation::shell) --l.count;
         if (policy.lodf_for_reduced)
             for (ladder& l : policy.ladders)
                 for (std::size_t i = 0; i < l.count; ++i)
@@ -144,12 +147,14 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
     return policy;
 }
 
-// The scenario a player with `options` plays: options.lighting lights every species.
-scenario lit_as_asked(scenario s, const player_options& options) {
+// The scenario a player with `options` plays: options.lighting lights every species, and
+// options.shell_slant slants the shells.
+scenario as_asked(scenario s, const player_options& options) {
     if (!options.lighting.empty()) {
         s.lod.lighting = options.lighting;
         for (species_settings& species : s.species) species.lighting = "scenario";
     }
+    if (options.shell_slant >= 0.0) s.shells.slant = options.shell_slant;
     return s;
 }
 
@@ -166,7 +171,7 @@ scene_needs needs_of(const lod_policy& policy) {
 
 scene_assets build_player_assets(const scenario& s, const player_options& options, bake_cache* cache,
                                  const bake_progress& progress) {
-    const scenario lit = lit_as_asked(s, options);
+    const scenario lit = as_asked(s, options);
     return build_scene_assets(lit, cache, needs_of(player_policy(lit, options)), progress);
 }
 
@@ -182,7 +187,7 @@ std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
 
 scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache,
                                  player_options options)
-    : m_scenario(lit_as_asked(std::move(s), options)), m_executor(resolve_threads(threads)) {
+    : m_scenario(as_asked(std::move(s), options)), m_executor(resolve_threads(threads)) {
     const auto start = clock_type::now();
     const lod_policy policy = player_policy(m_scenario, options);
     m_assets = options.assets ? std::move(*options.assets) : build_scene_assets(m_scenario, cache, needs_of(policy));
@@ -234,6 +239,8 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         seen_pixels seen;
         seen.wanted = m_world.resource<rung_budget>().active();
         m_world.set_resource(std::move(seen));
+        m_info.static_upload_bytes = m_renderer->static_upload_bytes();
+        m_info.shell_bytes = m_renderer->shell_bytes();
         m_info.gl_renderer = context->renderer();
         m_info.gl_version = context->version();
         m_info.backend = context->backend_name();

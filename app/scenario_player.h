@@ -67,6 +67,8 @@ struct player_options {
     // scenario's.
     double target_frame_ms = 0.0;
     double max_error = 0.0;
+    // Behrendt 2005 Eq. 2's f for the shells (scenario shells.slant); negative: the scenario's.
+    double shell_slant = -1.0;
     // Assets already built for this scenario and these options (build_player_assets), moved
     // from: the viewer re-bakes a tuned species in the background and swaps the player.
     std::shared_ptr<scene_assets> assets;

@@ -21,6 +21,16 @@ ladder_choice choose_rung(const ladder& l, float size_px) {
     return {l.rungs[l.count - 1]};
 }
 
+ladder_choice choose_rung_with_shell(const ladder& l, float size_px, float shell_fade) {
+    if (l.count < 2 || l.rungs[l.count - 1] != representation::shell) return choose_rung(l, size_px);
+    ladder nearer = l;
+    --nearer.count;
+    const ladder_choice plant = choose_rung(nearer, size_px);
+    if (!(shell_fade >= 0.5f)) return plant;
+    if (shell_fade >= 1.0f) return {representation::shell};
+    return {representation::shell, plant.primary, 2.0f * (1.0f - shell_fade)};
+}
+
 float projected_size_px(float radius_m, float distance_m, float fov_y, float viewport_height_px) {
     return projected_size_px(radius_m, distance_m, image_plane_units(1.0, double(fov_y), double(viewport_height_px)));
 }

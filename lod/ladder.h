@@ -128,6 +128,15 @@ struct ladder_choice {
 // The choice at `size_px` (a NaN size takes the farthest rung, as a NaN distance does elsewhere).
 ladder_choice choose_rung(const ladder& l, float size_px);
 
+// Behrendt 2005 §3.3 end: the shell is one layer over the terrain that fades in by distance
+// (resources/shell_view.h shell_fade_at), the same for all its plants, so a ladder's step into
+// its shell rung follows the shell's fade `shell_fade` (0 nearer than its band .. 1 beyond), not
+// the plant's size: below ½ the plant keeps what the rest of its ladder chooses by size (the
+// shell shows through by its own fade; nothing of the plant is drawn twice), from ½ it is on the
+// shell, its nearer rung's partner fading out as 2(1 − shell_fade). A ladder without a shell
+// rung: choose_rung.
+ladder_choice choose_rung_with_shell(const ladder& l, float size_px, float shell_fade);
+
 // How far a plant is into its ladder's last step, points_lines -> eco_tile_points, as the share
 // its eco tile's sets may draw of it (0 .. 1), from what choose_rung chose (lod_state and
 // fade_alpha after select_representation). Deussen 2002 §5.3's blend is complementary: the tile

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace sylva {
 
@@ -16,6 +17,13 @@ shell_level shell_level_at(float distance_m, float slice_height_m, float pixels_
     const double b = std::clamp(double(band), 1e-6, 1.0);
     const double t = std::clamp((into - (1.0 - b)) / b, 0.0, 1.0);
     return {std::uint32_t(whole), float(t)};
+}
+
+float shell_level_distance(const glm::vec3& eye_to_point) {
+    const double d = glm::length(glm::dvec3(eye_to_point));
+    const double horizontal = std::hypot(double(eye_to_point.x), double(eye_to_point.z));
+    if (!(d > 0.0)) return 0.0f;
+    return float(d * d / std::max(horizontal, 1e-3 * d));
 }
 
 std::uint32_t shell_pyramid_levels(std::uint32_t slices) {

@@ -13,6 +13,7 @@
 // level L moves by t toward its common centre, the centre of slice k of level L + 1, which
 // replaces the pair where t reaches 1 (λ crosses the next integer) at the same height.
 #include <cstdint>
+#include <glm/vec3.hpp>
 
 namespace sylva {
 
@@ -27,6 +28,14 @@ struct shell_level {
 // (in λ) over which its pairs move together. At max_level the merge stays 0.
 shell_level shell_level_at(float distance_m, float slice_height_m, float pixels_per_radian, float min_spacing_px,
                            std::uint32_t max_level, float band);
+
+// The distance to give shell_level_at for a point of a slice seen along `eye_to_point`: a
+// vertical offset Δy there shows as Δy·sin θ / d on screen (θ between the ray and the vertical),
+// so slices seen from above lie closer on screen and merge sooner: d / sin θ, with sin θ at
+// least 1/1000 (straight down, one slice shows exactly what the stack would: the merged pyramid
+// levels are exact where slices project onto each other). The shell vertex shader decides each
+// triangle's level with it (shaders/shell.vert).
+float shell_level_distance(const glm::vec3& eye_to_point);
 
 // The levels of a pyramid over `slices` bake slices: level L holds ⌈slices / 2^L⌉, the last one
 // (at most 1 + ⌈log2 slices⌉ levels; 0 slices: none).

@@ -1,5 +1,6 @@
 #include "lod/shell_slanting.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -12,11 +13,24 @@ float slant_shift_exact(const glm::vec3& vertex, const glm::vec3& centre, const 
     return along / v.y;
 }
 
-float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer, float f) {
+float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer, float f, float reach) {
     const glm::vec3 v = viewer - centre;
     const float length = glm::length(v);
     if (!(length > 0.0f)) return 0.0f;
-    return f * glm::dot(v, centre - vertex) / length;
+    const float limit = f * reach;
+    return std::clamp(f * glm::dot(v, centre - vertex) / length, -limit, limit);
+}
+
+float shell_slant_reach(std::span<const mesh_data> tiles) {
+    float reach = 0.0f;
+    for (const mesh_data& tile : tiles)
+        for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
+            const glm::vec3 a = tile.vertices[tile.indices[k]].position, b = tile.vertices[tile.indices[k + 1]].position,
+                            c = tile.vertices[tile.indices[k + 2]].position;
+            const glm::vec3 m = (a + b + c) / 3.0f;
+            reach = std::max({reach, glm::length(a - m), glm::length(b - m), glm::length(c - m)});
+        }
+    return reach;
 }
 
 }  // namespace sylva

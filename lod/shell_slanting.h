@@ -12,6 +12,10 @@
 // uses f = 1). The shell vertex shader (shaders/shell.vert) computes the same; these are its
 // reference for tests.
 #include <glm/vec3.hpp>
+#include <limits>
+#include <span>
+
+#include "models/mesh.h"
 
 namespace sylva {
 
@@ -19,7 +23,16 @@ namespace sylva {
 // infinite shift (the reason for the limit).
 float slant_shift_exact(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer);
 
-// Eq. 2 limited by f (0: no slanting). A viewer at the centre gives 0.
-float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer, float f);
+// Eq. 2 limited by f (0: no slanting). A viewer at the centre gives 0. The shift is held within
+// ±f·reach: Sylva draws far shells on coarser grids of the ground (components/shell_tile.h),
+// whose triangles turned by Eq. 2 alone would stand as tall as they are wide and smear the
+// slices over tens of metres; held to what a triangle of the ground's own grid (reach: the
+// largest distance of its vertices from their centre) would shift, a big triangle turns less.
+float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer, float f,
+                  float reach = std::numeric_limits<float>::infinity());
+
+// The largest distance of a triangle's vertex from its centre over `tiles` (their indexed
+// triangles): the reach slant_shift holds every grid to, taken on the ground's own.
+float shell_slant_reach(std::span<const mesh_data> tiles);
 
 }  // namespace sylva

@@ -146,6 +146,10 @@
 //                                 population (corner squares, edge strips and an interior)
 //     colours      integer  2     2 .. 4 corner colours: colours^4 tiles
 //   }
+//   shells {      Behrendt 2005 §3.2-3.3, how the shell rung draws (passes/shell_pass.h)
+//     slant            number   1     0 .. 4: f of the limited Eq. 2 (0: flat slices)
+//     half_resolution  boolean  true  slices blended at half the frame's resolution
+//   }
 //   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true
 //     max_plants_per_tile  integer  256   1 .. 1000000; a tile holding more is split in four
@@ -400,6 +404,12 @@ struct wang_tile_settings {
     bool operator==(const wang_tile_settings&) const = default;
 };
 
+struct shell_settings {
+    double slant = 1.0;  // Behrendt 2005 Eq. 2's f; the paper's 1
+    bool half_resolution = true;
+    bool operator==(const shell_settings&) const = default;
+};
+
 struct eco_tile_settings {
     bool enabled = true;
     std::uint32_t max_plants_per_tile = 256;
@@ -455,6 +465,7 @@ struct scenario {
     shadow_settings shadows;
     render_settings render;
     wang_tile_settings wang_tiles;
+    shell_settings shells;
     eco_tile_settings eco_tiles;
     lod_settings lod;
     bool operator==(const scenario&) const = default;

@@ -358,6 +358,14 @@ const field_table<wang_tile_settings>& wang_tile_fields() {
     return table;
 }
 
+const field_table<shell_settings>& shell_fields() {
+    using t = shell_settings;
+    static const auto table = field_table<t>()
+                                  .number("slant", &t::slant, {0.0, 4.0})
+                                  .boolean("half_resolution", &t::half_resolution);
+    return table;
+}
+
 // Every population with placement "wang_tiles" fits the scenario's tiles (its spacing leaves the
 // tile an interior; models/terrain/wang_tiles.h wang_rules_problem).
 void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
@@ -484,6 +492,7 @@ const field_table<scenario>& scenario_fields() {
             .object("shadows", &t::shadows, shadow_fields())
             .object("render", &t::render, render_fields())
             .object("wang_tiles", &t::wang_tiles, wang_tile_fields())
+            .object("shells", &t::shells, shell_fields())
             .object("eco_tiles", &t::eco_tiles, eco_tile_fields())
             .object("lod", &t::lod, lod_fields())
             .check(expect_wang_tiles_fit);

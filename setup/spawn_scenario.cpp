@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 #include <mutex>
@@ -34,6 +35,8 @@
 #include "resources/draw_list.h"
 #include "lod/eco_tiles.h"
 #include "lod/shell_levels.h"
+#include "lod/shell_slanting.h"
+#include "models/terrain/terrain.h"
 #include "resources/frame_stats.h"
 #include "lighting/environment_map.h"
 #include "lighting/shadow_cascades.h"
@@ -485,6 +488,8 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
         view.active = true;
         view.terrain_origin = s.world_offset;
         view.slice_height_m = assets.shells.tiles.front().slice_height_m;
+        view.slant = float(s.shells.slant);
+        view.half_resolution = s.shells.half_resolution;
         view.max_level = shell_pyramid_levels(std::uint32_t(assets.shells.tiles.front().colour.size())) - 1;
         view.mean_scale.assign(s.species.size(), 1.0f);
         for (std::size_t k = 0; k < s.species.size(); ++k)
@@ -493,10 +498,30 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
                     view.mean_scale[k] = 0.5f * (p.scale_min + p.scale_max);
                     break;
                 }
-        for (std::uint16_t id : assets.terrain_meshes) {
-            const mesh_data& tile = assets.meshes.at(id);
-            const glm::vec3 middle = 0.5f * (tile.bounds_min + tile.bounds_max);
-            world.emplace<shell_tile>(world.create(), {middle, glm::length(tile.bounds_max - middle), {}});
+        const float stack_m = view.slice_height_m * float(assets.shells.tiles.front().colour.size());
+        // The slices' grids (components/shell_tile.h): strides 1, 2, 4, ... while a tile has cells
+        // to merge, with each tile's vertical error.
+        const std::uint32_t tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
+        const std::uint32_t cells = assets.terrain.resolution - 1;
+        std::vector<std::vector<float>> errors;
+        for (std::uint32_t g = 0; g < shell_grid_count(cells / tiles_per_side); ++g)
+            errors.push_back(terrain_tile_errors(assets.terrain, tiles_per_side, 1u << g));
+        // The slices rise up to the stack's height and Eq. 2 moves a vertex vertically by at most
+        // f times its distance from its triangle's centre on the terrain's own grid, which the
+        // shader holds every grid to (shaders/shell.vert; lod/shell_slanting.h).
+        const float slant_reach = shell_slant_reach(terrain_tile_meshes(assets.terrain, tiles_per_side, 1.0f, 1));
+        view.slant_reach_m = slant_reach;
+        for (std::size_t t = 0; t < assets.terrain_meshes.size(); ++t) {
+            const mesh_data& tile = assets.meshes.at(assets.terrain_meshes[t]);
+            shell_tile entity;
+            const float lift = view.slant * slant_reach;
+            const glm::vec3 top = tile.bounds_max + glm::vec3(0.0f, stack_m + lift, 0.0f);
+            const glm::vec3 bottom = tile.bounds_min - glm::vec3(0.0f, lift, 0.0f);
+            entity.centre = 0.5f * (bottom + top);
+            entity.radius = glm::length(top - entity.centre);
+            entity.grids = std::uint8_t(errors.size());
+            for (std::size_t g = 0; g < errors.size(); ++g) entity.grid_error_m[g] = errors[g].at(t);
+            world.emplace<shell_tile>(world.create(), entity);
         }
     }
     world.set_resource(std::move(view));

@@ -3,23 +3,27 @@
 // colour and the normal seen from above), lights it like the plants (sun with the cascades'
 // shadows, sky, fog) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
 // GL_ONE_MINUS_SRC_ALPHA), bottom slice first. Near the viewer it fades out where the plants'
-// ladder hands over to it (§3.3 end: a linear fade over the band).
+// ladder hands over to it (§3.3 end: a linear fade over the band). Drawn into the shell layer
+// (systems/render/shell_layer.h), it also writes its window depth for the layer's composite.
 #include "common.glsl"
 #include "shading.glsl"
+// The depth test before the shader: a slice behind the ground or a plant costs no shading (the
+// pass writes no depth, so testing first changes nothing else).
+layout(early_fragment_tests) in;
 in vec3 v_position;
 in vec2 v_local_xz;
-flat in int v_slice;
+flat in int v_layer;  // in the tile's stack: the level's first layer + the slice
 
 layout(binding = 2) uniform sampler2DArray u_shell_colour;
 layout(binding = 3) uniform sampler2DArray u_shell_normal;
 layout(binding = 4) uniform usampler2D u_wang_index;
 uniform vec4 u_lattice;  // xy: lattice corner (0, 0), terrain-local; z: tile size; w: 1 / tile size
 uniform int u_layers_per_tile;
-uniform int u_level_first_layer;
 uniform vec2 u_fade;  // the shell is transparent nearer than x metres, whole beyond y
 uniform vec4 u_area;  // x0, z0, x1, z1: where the tiled populations grow (terrain-local)
 
 layout(location = 0) out vec4 out_color;
+layout(location = 1) out float out_nearest;  // the shell layer's nearest slice (MIN-blended)
 
 void main() {
     if (any(lessThan(v_local_xz, u_area.xy)) || any(greaterThanEqual(v_local_xz, u_area.zw))) discard;
@@ -28,7 +32,7 @@ void main() {
     ivec2 cells = textureSize(u_wang_index, 0);
     uint tile = texelFetch(u_wang_index, clamp(cell, ivec2(0), cells - 1), 0).r;
     vec2 uv = cell_f - vec2(cell);
-    float layer = float(int(tile) * u_layers_per_tile + u_level_first_layer + v_slice);
+    float layer = float(int(tile) * u_layers_per_tile + v_layer);
     // Gradients of the continuous coordinate: the jump of uv at a tile border picks no mip.
     vec2 dx = dFdx(cell_f);
     vec2 dy = dFdy(cell_f);
@@ -38,4 +42,5 @@ void main() {
     vec3 n = normalize(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
     vec3 lit = shade_surface(c.rgb / max(c.a, 1e-4), n, v_position, true);
     out_color = vec4(lit * c.a, c.a) * fade;
+    out_nearest = gl_FragCoord.z;
 }

@@ -146,6 +146,7 @@ void select_representation_system::run(ecs::system_context<select_representation
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
     const double pixel = image_plane_units(1.0, double(cam.fov_y), double(cam.viewport_height_px));
+    const shell_view* shells = ctx.try_resource<shell_view>();  // none: a world without shells
     auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
         plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
@@ -164,7 +165,8 @@ void select_representation_system::run(ecs::system_context<select_representation
                 // every switch distance (the reference's 1e6 keeps every plant on its first rung).
                 const float size = projected_size_px(species.bounding_radius * t.scale, distance, pixel) *
                                    cam.lod_scale * policy.ladder_size_scale;
-                choice = choose_rung(policy.ladders[static_cast<std::size_t>(p.species)], size);
+                choice = choose_rung_with_shell(policy.ladders[static_cast<std::size_t>(p.species)], size,
+                                                shells ? shell_fade_at(*shells, distance) : 0.0f);
             } else if (policy.mode == lod_policy::kind::billboard_clouds) {
                 choice = choose_cloud_lod(species, policy.cloud_distance_m, distance, t.scale, cam.lod_scale);
             } else {

@@ -8,7 +8,9 @@
 // measured rung tables (resources/rung_budget.h) a ladder's rung is instead the one the budget
 // solver picks (lod/rung_solver.h), each plant's error weighed by the share of it the last
 // frame showed (resources/seen_pixels.h), and a plant that changes rung dissolves its old one
-// over a few frames. Records the previous choice so measurements can count switches.
+// over a few frames. A ladder ending in the shell hands its plants over to it by the shell's fade
+// distance (resources/shell_view.h, written by update_shells before this runs). Records the
+// previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -20,13 +22,15 @@
 #include "resources/rung_budget.h"
 #include "resources/scene_assets.h"
 #include "resources/seen_pixels.h"
+#include "resources/shell_view.h"
 
 namespace sylva {
 
 struct select_representation_system {
     static constexpr std::string_view k_name = "select_representation";
     static constexpr ecs::phase k_phase = ecs::phase::select;
-    using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy, seen_pixels>;
+    using reads = ecs::reads<camera, world_transform, plant_instance, species_library, lod_policy, seen_pixels,
+                             shell_view>;
     using writes = ecs::writes<lod_state, fade_alpha, rung_budget>;
     static void run(ecs::system_context<select_representation_system>& ctx);
 };

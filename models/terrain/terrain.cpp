@@ -103,18 +103,30 @@ namespace {
 
 // The grid mesh over vertex columns [c0, c1] and rows [r0, r1] (inclusive). Every vertex is a
 // function of (field, column, row) only, so two grids sharing an edge repeat it bit for bit.
+// The samples a grid over [first, last] at `stride` uses: every stride-th from the first, and the
+// last (so neighbouring grids of one stride share their edge).
+std::vector<std::uint32_t> grid_samples(std::uint32_t first, std::uint32_t last, std::uint32_t stride) {
+    std::vector<std::uint32_t> samples;
+    for (std::uint32_t i = first; i < last; i += stride) samples.push_back(i);
+    samples.push_back(last);
+    return samples;
+}
+
 mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1, std::uint32_t r0,
-                    std::uint32_t r1, float uv_scale_m) {
+                    std::uint32_t r1, float uv_scale_m, std::uint32_t stride = 1) {
     const double spacing = field.spacing();
     const double half = 0.5 * field.size_m;
     const float uv_per_m = uv_scale_m > 0.0f ? 1.0f / uv_scale_m : 1.0f;
-    const std::uint32_t columns = c1 - c0 + 1;
+    const std::vector<std::uint32_t> column_samples = grid_samples(c0, c1, stride);
+    const std::vector<std::uint32_t> row_samples = grid_samples(r0, r1, stride);
+    const auto columns = std::uint32_t(column_samples.size());
+    const auto rows = std::uint32_t(row_samples.size());
     mesh_data mesh;
-    mesh.vertices.reserve(std::size_t(columns) * (r1 - r0 + 1));
+    mesh.vertices.reserve(std::size_t(columns) * rows);
     glm::vec3 lo(std::numeric_limits<float>::max());
     glm::vec3 hi(std::numeric_limits<float>::lowest());
-    for (std::uint32_t row = r0; row <= r1; ++row) {
-        for (std::uint32_t column = c0; column <= c1; ++column) {
+    for (std::uint32_t row : row_samples) {
+        for (std::uint32_t column : column_samples) {
             const double x = column * spacing - half;
             const double z = row * spacing - half;
             vertex v;
@@ -126,8 +138,8 @@ mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1
             mesh.vertices.push_back(v);
         }
     }
-    mesh.indices.reserve(std::size_t(columns - 1) * (r1 - r0) * 6);
-    for (std::uint32_t row = 0; row < r1 - r0; ++row) {
+    mesh.indices.reserve(std::size_t(columns - 1) * (rows - 1) * 6);
+    for (std::uint32_t row = 0; row + 1 < rows; ++row) {
         for (std::uint32_t column = 0; column + 1 < columns; ++column) {
             const std::uint32_t i = row * columns + column;
             const std::uint32_t n = columns;
@@ -173,6 +185,59 @@ std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32
         }
     }
     return meshes;
+}
+
+std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
+                                           float uv_scale_m, std::uint32_t stride) {
+    if (field.resolution < 2) throw std::invalid_argument("terrain_tile_meshes: empty heightfield");
+    if (stride == 0) throw std::invalid_argument("terrain_tile_meshes: stride must be at least 1");
+    const std::uint32_t cells = field.resolution - 1;
+    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);
+    std::vector<mesh_data> meshes;
+    meshes.reserve(std::size_t(tiles) * tiles);
+    for (std::uint32_t tz = 0; tz < tiles; ++tz)
+        for (std::uint32_t tx = 0; tx < tiles; ++tx)
+            meshes.push_back(grid_mesh(field, tile_start(cells, tiles, tx), tile_start(cells, tiles, tx + 1),
+                                       tile_start(cells, tiles, tz), tile_start(cells, tiles, tz + 1), uv_scale_m,
+                                       stride));
+    return meshes;
+}
+
+std::vector<float> terrain_tile_errors(const heightfield& field, std::uint32_t tiles_per_side, std::uint32_t stride) {
+    if (field.resolution < 2) throw std::invalid_argument("terrain_tile_errors: empty heightfield");
+    if (stride == 0) throw std::invalid_argument("terrain_tile_errors: stride must be at least 1");
+    const std::uint32_t cells = field.resolution - 1;
+    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);
+    std::vector<float> errors;
+    errors.reserve(std::size_t(tiles) * tiles);
+    for (std::uint32_t tz = 0; tz < tiles; ++tz) {
+        for (std::uint32_t tx = 0; tx < tiles; ++tx) {
+            const std::vector<std::uint32_t> columns = grid_samples(tile_start(cells, tiles, tx),
+                                                                    tile_start(cells, tiles, tx + 1), stride);
+            const std::vector<std::uint32_t> rows = grid_samples(tile_start(cells, tiles, tz),
+                                                                 tile_start(cells, tiles, tz + 1), stride);
+            float worst = 0.0f;
+            // Each coarse cell's samples against its two triangles (grid_mesh's diagonal runs from
+            // (column + 1, row) to (column, row + 1)).
+            for (std::size_t j = 0; j + 1 < rows.size(); ++j) {
+                for (std::size_t i = 0; i + 1 < columns.size(); ++i) {
+                    const std::uint32_t ca = columns[i], cb = columns[i + 1], ra = rows[j], rb = rows[j + 1];
+                    const float h00 = field.at(ca, ra), h10 = field.at(cb, ra), h01 = field.at(ca, rb),
+                                h11 = field.at(cb, rb);
+                    for (std::uint32_t r = ra; r <= rb; ++r) {
+                        for (std::uint32_t c = ca; c <= cb; ++c) {
+                            const float u = float(c - ca) / float(cb - ca), v = float(r - ra) / float(rb - ra);
+                            const float coarse = u + v <= 1.0f ? h00 + u * (h10 - h00) + v * (h01 - h00)
+                                                               : h11 + (1.0f - u) * (h01 - h11) + (1.0f - v) * (h10 - h11);
+                            worst = std::max(worst, std::abs(field.at(c, r) - coarse));
+                        }
+                    }
+                }
+            }
+            errors.push_back(worst);
+        }
+    }
+    return errors;
 }
 
 heightfield load_heightmap(const std::filesystem::path& path, double size_m, float height_m) {

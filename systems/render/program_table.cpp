@@ -74,6 +74,10 @@ program_table::program_table(const program_options& options) : m_options(options
         std::vector<std::string> defines;
         if (options.toon) defines.push_back("STYLE_TOON");
         m_screen[std::size_t(screen_program::shell)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
+        m_screen[std::size_t(screen_program::shell_layer_depth)] =
+            m_shaders.program({"sky.vert", "shell_layer_depth.frag", {}, {}});
+        m_screen[std::size_t(screen_program::shell_composite)] =
+            m_shaders.program({"sky.vert", "shell_composite.frag", {}, {}});
     }
 }
 

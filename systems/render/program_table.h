@@ -36,8 +36,19 @@ enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splat
 enum class surface_primitive : std::uint8_t { triangles, points, lines, line_quads, count };
 // splat_composite_visibility: the splat layer's visibility IDs and normals into the frame's
 // ID and normal buffers (shaders/splat_layer.frag), built when the frame has either.
-// shell: the shell slices over the terrain (passes/shell_pass.h), built when the scene has them.
-enum class screen_program : std::uint8_t { sky, splat_composite, splat_composite_visibility, edges, shell, count };
+// shell: the shell slices over the terrain (passes/shell_pass.h), built when the scene has them,
+// with shell_layer_depth and shell_composite, which fill the shell layer's depth and draw it over
+// the frame (systems/render/shell_layer.h).
+enum class screen_program : std::uint8_t {
+    sky,
+    splat_composite,
+    splat_composite_visibility,
+    edges,
+    shell,
+    shell_layer_depth,
+    shell_composite,
+    count
+};
 
 constexpr surface_primitive surface_primitive_of(primitive_kind p, bool line_quads = false) {
     if (p == primitive_kind::lines)

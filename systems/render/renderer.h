@@ -129,6 +129,7 @@ public:
     void present(int window_width, int window_height) const;
     std::size_t programs_compiled() const { return m_programs.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
+    std::uint64_t shell_bytes() const { return m_shell_pass.uploaded_bytes(); }
     // Uploads a mesh after construction (its id follows the scene's meshes) and builds the
     // programs it is drawn with; draw lists may then name it. Used by the primitive-cost
     // calibration.

@@ -84,6 +84,21 @@ TEST(shell_gl, wang_tiled_plants_on_the_shell_rung_are_drawn_by_the_shells_where
     ASSERT_LT(in_b, a.size() * 7 / 10) << "and leave ground around them";
     // 0.64 as built; 0.47 with the slices flat at y = 0, 0.24 with the Wang index misread.
     EXPECT_GT(double(both) / double(either), 0.55) << both << " of " << either;
+    // Blended straight into the frame instead of the half-resolution layer: the same plants.
+    scenario full = shrubs_from_above(true);
+    full.shells.half_resolution = false;
+    const std::vector<bool> c = plant_mask(play(full, 2).image, bare.image);
+    std::size_t same = 0, any = 0, both_full = 0, either_full = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        same += a[i] && c[i];
+        any += a[i] || c[i];
+        both_full += b[i] && c[i];
+        either_full += b[i] || c[i];
+    }
+    // 0.83 and 0.65 as built (0.58 for the layer against the meshes above); the layer read
+    // upside down: 0.16 and 0.22.
+    EXPECT_GT(double(same) / double(any), 0.75) << "the layer against the shells drawn straight in";
+    EXPECT_GT(double(both_full) / double(either_full), 0.6) << "the shells drawn straight in against the meshes";
 }
 
 TEST(shell_gl, the_shell_frame_is_the_same_for_any_thread_count) {

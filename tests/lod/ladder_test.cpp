@@ -66,6 +66,29 @@ TEST(ladder, a_zero_band_is_a_hard_switch_and_one_rung_is_every_size) {
     expect_choice(choose_rung(ladder{}, 10.0f), representation::none, representation::none, 0.0f);
 }
 
+// Behrendt 2005 §3.3 end: the step into a shell rung follows the shell's fade by distance, the
+// rest of the ladder the plant's size. three_rungs with a shell after the crossed billboard.
+TEST(ladder, the_step_into_the_shell_follows_the_shells_fade_not_the_size) {
+    ladder l = three_rungs();
+    l.count = 4;
+    l.rungs[3] = representation::shell;
+    l.below_px[3] = 10.0f;
+    l.band[3] = 0.5f;
+    // Shell fade below 1/2: what the rest chooses by size, whatever the shell rung's own size.
+    expect_choice(choose_rung_with_shell(l, 5.0f, 0.0f), representation::crossed_billboard, representation::none, 0.0f);
+    expect_choice(choose_rung_with_shell(l, 210.0f, 0.4f), representation::mesh_full, representation::billboard_cloud,
+                  0.5f);
+    // From 1/2 the shell is primary, the nearer rung fading out as 2 (1 - fade): 0.7 -> 0.6.
+    expect_choice(choose_rung_with_shell(l, 45.0f, 0.7f), representation::shell, representation::crossed_billboard,
+                  0.6f);
+    expect_choice(choose_rung_with_shell(l, 45.0f, 0.5f), representation::shell, representation::crossed_billboard,
+                  1.0f);
+    expect_choice(choose_rung_with_shell(l, 500.0f, 1.0f), representation::shell, representation::none, 0.0f);
+    // A ladder without a shell rung: choose_rung.
+    expect_choice(choose_rung_with_shell(three_rungs(), 45.0f, 1.0f), representation::crossed_billboard,
+                  representation::billboard_cloud, 0.5f);
+}
+
 TEST(ladder, projected_size_is_the_diameter_over_a_pixel_on_the_image_plane) {
     // fov 90°: the image plane at distance 1 is 2 units high; at 500 px a pixel is 1/250 of a
     // unit. A 5 m radius at 50 m spans 10 / 50 = 0.2 units: 50 px.

@@ -1,6 +1,8 @@
 // Behrendt 2005 §3.3's level of detail on shells (lod/shell_levels.h), by hand.
 #include "lod/shell_levels.h"
 
+#include "components/shell_tile.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,6 +30,16 @@ TEST(shell_levels, the_level_follows_the_slice_spacing_on_screen) {
     EXPECT_EQ(at(500.0f).level, 2u);
 }
 
+// A vertical offset shows as Δy·sin θ / d: a level is chosen at d / sin θ. Looking 30 across
+// and 40 down (d = 50, sin θ = 30 / 50): 50 / 0.6 = 83.33 m; level (no height to hide): 50 m;
+// straight down, sin θ is held at 1/1000: 10 m → 10 km.
+TEST(shell_levels, slices_seen_from_above_merge_sooner) {
+    EXPECT_NEAR(shell_level_distance({30.0f, -40.0f, 0.0f}), 83.333f, 1e-3f);
+    EXPECT_NEAR(shell_level_distance({40.0f, 0.0f, 30.0f}), 50.0f, 1e-4f);
+    EXPECT_NEAR(shell_level_distance({0.0f, -10.0f, 0.0f}), 10000.0f, 1e-1f);
+    EXPECT_EQ(shell_level_distance({0.0f, 0.0f, 0.0f}), 0.0f);
+}
+
 // h = 1: level 1's slices are 2 m slabs drawn at 1, 3, 5 m; at merge 0.5 slices 0 and 1 move
 // half way to their common centre 2 (1.5 and 2.5), and at merge 1 both are at 2, the centre of
 // level 2's slice 0 ((0 + ½)·4 = 2): the replacement is drawn where the pair met. An unpaired
@@ -52,6 +64,16 @@ TEST(shell_levels, a_pyramid_halves_its_slices_level_by_level) {
     EXPECT_EQ(shell_slices_at_level(5, 1), 3u);
     EXPECT_EQ(shell_slices_at_level(5, 3), 1u);
     EXPECT_EQ(shell_pyramid_levels(1), 1u);
+}
+
+// A tile's slice grids: strides 1, 2, 4, ... up to the first that leaves one cell (32 cells:
+// 1 .. 32, six grids; 4 cells: 1, 2, 4; one cell: the terrain's own), at most eight.
+TEST(shell_levels, a_tile_has_a_grid_per_stride_down_to_one_cell) {
+    EXPECT_EQ(shell_grid_count(32), 6u);
+    EXPECT_EQ(shell_grid_count(4), 3u);
+    EXPECT_EQ(shell_grid_count(5), 4u);  // 1, 2, 4, 8: stride 8 leaves one (short) cell
+    EXPECT_EQ(shell_grid_count(1), 1u);
+    EXPECT_EQ(shell_grid_count(100000), k_shell_grid_strides);
 }
 
 }  // namespace

@@ -54,5 +54,24 @@ TEST(shell_slanting, the_limit_holds_as_the_view_grazes) {
     EXPECT_EQ(slant_shift(x1, m, m, 1.0f), 0.0f) << "a viewer at the centre";
 }
 
+// On a coarser grid the shift is held to f times the ground's own reach: the same grazing view
+// (1.0 unlimited) held to 0.5 at f = 1, to 0.25 at f = 0.5; within the reach nothing changes.
+// A right triangle (0,0,0), (3,0,0), (0,0,3): centre (1,0,1), vertices √2, √5, √5 from it.
+TEST(shell_slanting, coarse_triangles_shift_no_more_than_the_grounds_own) {
+    const glm::vec3 x1{0, 0, 0};
+    const glm::vec3 m{1, 0, 1};
+    EXPECT_FLOAT_EQ(slant_shift(x1, m, {1, 0, 100}, 1.0f, 0.5f), 0.5f);
+    EXPECT_FLOAT_EQ(slant_shift(x1, m, {1, 0, 100}, 0.5f, 0.5f), 0.25f);
+    EXPECT_FLOAT_EQ(slant_shift(x1, m, {1, 0, 100}, 1.0f, 2.0f), 1.0f);
+    EXPECT_FLOAT_EQ(slant_shift(m + (m - x1), m, {1, 0, 100}, 1.0f, 0.5f), -0.5f);
+    mesh_data tile;
+    tile.vertices.resize(3);
+    tile.vertices[1].position = {3, 0, 0};
+    tile.vertices[2].position = {0, 0, 3};
+    tile.indices = {0, 1, 2};
+    EXPECT_FLOAT_EQ(shell_slant_reach(std::span(&tile, 1)), std::sqrt(5.0f));
+    EXPECT_EQ(shell_slant_reach({}), 0.0f);
+}
+
 }  // namespace
 }  // namespace sylva

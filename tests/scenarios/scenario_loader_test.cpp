@@ -377,7 +377,7 @@ TEST(scenario_loader, unknown_top_level_field_lists_the_known_ones) {
                  {"/sead",
                   "unknown field; expected one of: name, seed, resolution, frames, fps, "
                   "world_offset, terrain, species, populations, camera, sun, environment, shadows, "
-                  "render, wang_tiles, eco_tiles, lod",
+                  "render, wang_tiles, shells, eco_tiles, lod",
                   "4"});
 }
 
@@ -669,7 +669,7 @@ TEST(scenario_loader, only_the_first_problem_is_reported) {
     expect_error(j, {"/bogus",
                      "unknown field; expected one of: name, seed, resolution, frames, fps, "
                      "world_offset, terrain, species, populations, camera, sun, environment, "
-                     "shadows, render, wang_tiles, eco_tiles, lod",
+                     "shadows, render, wang_tiles, shells, eco_tiles, lod",
                      "1"});
     j.erase("bogus");
     expect_error(j, {"/frames", "out of range; expected an integer from 1 to 1000000", "0"});
@@ -962,6 +962,15 @@ TEST(scenario_loader, wang_tiled_populations_load_round_trip_and_refuse_rules_a_
                        "[0,0,50,50]"});
     expect_error(set(j, "/wang_tiles/colours", 5),
                  {"/wang_tiles/colours", "out of range; expected an integer from 2 to 4", "5"});
+    // How the shells draw: Eq. 2's f and the half-resolution layer, both round trip.
+    json shells = j;
+    shells["shells"] = {{"slant", 0.25}, {"half_resolution", false}};
+    const scenario with = load(shells);
+    EXPECT_EQ(with.shells.slant, 0.25);
+    EXPECT_FALSE(with.shells.half_resolution);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(with), k_source), with);
+    EXPECT_EQ(load(minimal()).shells, shell_settings{});
+    expect_error(set(j, "/shells/slant", 5), {"/shells/slant", "out of range; expected a number from 0 to 4", "5"});
 }
 
 TEST(scenario_loader, placement_mode_and_generator_presets_are_choices) {

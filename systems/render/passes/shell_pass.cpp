@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <glm/geometric.hpp>
 
 #include "lod/shell_blending.h"
+#include "models/terrain/terrain.h"
 #include "models/terrain/wang_tiles.h"
 #include "systems/render/renderer.h"
 #include "systems/render/textures.h"
@@ -14,10 +17,9 @@ namespace {
 
 struct shell_vertex {
     glm::vec3 position;
-    glm::vec3 normal;
     glm::vec3 centre;
 };
-static_assert(sizeof(shell_vertex) == 36);
+static_assert(sizeof(shell_vertex) == 24);
 
 }  // namespace
 
@@ -27,13 +29,15 @@ shell_pass::uniform_locations shell_pass::uniforms_of(GLuint program) {
     u.terrain_position = glGetUniformLocation(program, "u_terrain_position");
     u.slice_height = glGetUniformLocation(program, "u_slice_height");
     u.slant = glGetUniformLocation(program, "u_slant");
+    u.slant_reach = glGetUniformLocation(program, "u_slant_reach");
     u.lattice = glGetUniformLocation(program, "u_lattice");
     u.area = glGetUniformLocation(program, "u_area");
     u.layers_per_tile = glGetUniformLocation(program, "u_layers_per_tile");
     u.fade = glGetUniformLocation(program, "u_fade");
     u.level = glGetUniformLocation(program, "u_level");
-    u.merge = glGetUniformLocation(program, "u_merge");
-    u.slices_at_level = glGetUniformLocation(program, "u_slices_at_level");
+    u.max_level = glGetUniformLocation(program, "u_max_level");
+    u.level_criterion = glGetUniformLocation(program, "u_level_criterion");
+    u.level_slices = glGetUniformLocation(program, "u_level_slices");
     u.level_first_layer = glGetUniformLocation(program, "u_level_first_layer");
     return u;
 }
@@ -44,10 +48,13 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_slices = std::uint32_t(shells.tiles.front().colour.size());
     m_slice_height = shells.tiles.front().slice_height_m;
     // Level L holds ⌈S / 2^L⌉ slices, each pair of the level below merged (lod/shell_blending.h).
+    // The vertex shader's level arrays hold 16 (shaders/shell.vert k_max_levels): 32,768 slices.
+    if (shell_pyramid_levels(m_slices) > 16)
+        throw std::runtime_error("shell textures of " + std::to_string(m_slices) + " slices: at most 32768");
     for (std::uint32_t level = 0; level < shell_pyramid_levels(m_slices); ++level) {
-        m_level_first_layer.push_back(m_layers_per_tile);
-        m_level_slices.push_back(shell_slices_at_level(m_slices, level));
-        m_layers_per_tile += m_level_slices.back();
+        m_level_first_layer.push_back(GLint(m_layers_per_tile));
+        m_level_slices.push_back(GLint(shell_slices_at_level(m_slices, level)));
+        m_layers_per_tile += std::uint32_t(m_level_slices.back());
     }
     std::vector<image_rgba8> colour;
     std::vector<image_rgba8> normal;
@@ -91,18 +98,26 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_area = {float(shells.area[0]), float(shells.area[1]), float(shells.area[2]), float(shells.area[3])};
     m_lattice = {float(shells.origin.x + double(first_i) * t), float(shells.origin.y + double(first_j) * t), float(t),
                  float(1.0 / t)};
-    // The terrain's triangles, each vertex with its triangle's centre (Eq. 2 needs m).
+    // The terrain's triangles on every grid of components/shell_tile.h, each vertex with its
+    // triangle's centre (Eq. 2 needs m), grid by grid within each tile.
     std::vector<shell_vertex> vertices;
-    for (std::uint16_t id : assets.terrain_meshes) {
-        const mesh_data& tile = assets.meshes.at(id);
-        const auto first = std::uint32_t(vertices.size());
-        for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
-            const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
-                                  &tile.vertices[tile.indices[k + 2]]};
-            const glm::vec3 centre = (v[0]->position + v[1]->position + v[2]->position) / 3.0f;
-            for (const vertex* p : v) vertices.push_back({p->position, p->normal, centre});
+    const auto tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
+    const std::uint32_t ground_cells = assets.terrain.resolution - 1;
+    const std::size_t grids = shell_grid_count(ground_cells / std::max(tiles_per_side, 1u));
+    m_tile_ranges.assign(assets.terrain_meshes.size(), {});
+    for (std::size_t g = 0; g < grids; ++g) {
+        const std::vector<mesh_data> meshes = terrain_tile_meshes(ground, tiles_per_side, 1.0f, 1u << g);
+        for (std::size_t t = 0; t < meshes.size() && t < m_tile_ranges.size(); ++t) {
+            const mesh_data& tile = meshes[t];
+            const auto first = std::uint32_t(vertices.size());
+            for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
+                const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
+                                      &tile.vertices[tile.indices[k + 2]]};
+                const glm::vec3 centre = (v[0]->position + v[1]->position + v[2]->position) / 3.0f;
+                for (const vertex* p : v) vertices.push_back({p->position, centre});
+            }
+            m_tile_ranges[t].push_back({first, std::uint32_t(vertices.size()) - first});
         }
-        m_tile_ranges.emplace_back(first, std::uint32_t(vertices.size()) - first);
     }
     m_vertices = make_buffer();
     glNamedBufferStorage(m_vertices.id(), GLsizeiptr(vertices.size() * sizeof(shell_vertex)), vertices.data(), 0);
@@ -110,7 +125,7 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_vertex_array = make_vertex_array();
     const GLuint vao = m_vertex_array.id();
     glVertexArrayVertexBuffer(vao, 0, m_vertices.id(), 0, sizeof(shell_vertex));
-    for (GLuint a = 0; a < 3; ++a) {
+    for (GLuint a = 0; a < 2; ++a) {
         glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 12);
         glVertexArrayAttribBinding(vao, a, 0);
         glEnableVertexArrayAttrib(vao, a);
@@ -135,32 +150,69 @@ void shell_pass::draw(pass_context& context) {
     glUniform3fv(u.terrain_position, 1, &view.terrain_position.x);
     glUniform1f(u.slice_height, m_slice_height);
     glUniform1f(u.slant, shells.slant);
+    glUniform1f(u.slant_reach, shells.slant_reach_m);
     glUniform4fv(u.lattice, 1, &m_lattice.x);
     glUniform4fv(u.area, 1, &m_area.x);
     glUniform1i(u.layers_per_tile, GLint(m_layers_per_tile));
     glUniform2f(u.fade, shells.fade_start_m, shells.fade_end_m);
+    glUniform1i(u.max_level, GLint(levels() - 1));
+    glUniform3f(u.level_criterion, shells.pixels_per_radian, k_shell_min_spacing_px, k_shell_merge_band);
+    glUniform1iv(u.level_slices, GLsizei(levels()), m_level_slices.data());
+    glUniform1iv(u.level_first_layer, GLsizei(levels()), m_level_first_layer.data());
     const glm::vec3 eye = -view.terrain_position;  // terrain-local
+    if (shells.half_resolution) begin_layer(context);
+    glUseProgram(program);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // Behrendt 2005 §3.3: c + F·(1 − α)
+    if (shells.half_resolution) {
+        glBlendEquationi(1, GL_MIN);  // the layer's nearest slice depth
+        glBlendFunci(1, GL_ONE, GL_ONE);
+    }
     for (std::size_t t = 0; t < m_tile_ranges.size() && t < view.shell_tile_count; ++t) {
         const shell_tile& tile = view.shell_tiles[t];
-        // Wholly nearer than the fade: every fragment would be discarded.
+        // Outside the view, or wholly nearer than the fade (every fragment would be discarded).
+        if (!tile.visible || m_tile_ranges[t].empty()) continue;
         if (glm::length(tile.centre - eye) + tile.radius < shells.fade_start_m) continue;
-        const shell_level level = tile.level;
-        const std::uint32_t l = std::min<std::uint32_t>(level.level, levels() - 1);
+        // The tile's level: its triangles merge further by their own distance (shaders/shell.vert).
+        const std::uint32_t l = std::min<std::uint32_t>(tile.level.level, levels() - 1);
         glUniform1i(u.level, GLint(l));
-        glUniform1f(u.merge, l + 1 < levels() ? level.merge : 0.0f);
-        glUniform1i(u.slices_at_level, GLint(m_level_slices[l]));
-        glUniform1i(u.level_first_layer, GLint(m_level_first_layer[l]));
-        glDrawArraysInstanced(GL_TRIANGLES, GLint(m_tile_ranges[t].first), GLsizei(m_tile_ranges[t].second),
-                              GLsizei(m_level_slices[l]));
+        const auto& [first, count] = m_tile_ranges[t][std::min<std::size_t>(tile.grid, m_tile_ranges[t].size() - 1)];
+        glDrawArraysInstanced(GL_TRIANGLES, GLint(first), GLsizei(count), GLsizei(m_level_slices[l]));
+        ++context.draw_calls;
+    }
+    if (shells.half_resolution) {
+        glBlendEquationi(1, GL_FUNC_ADD);
+        // The layer over the frame (premultiplied, the same equation), cut by the frame's depth.
+        context.target->bind();
+        context.target->draw_ids(false);
+        glUseProgram(context.programs->screen(screen_program::shell_composite));
+        glBindTextureUnit(0, m_layer->color());
+        glBindTextureUnit(1, m_layer->nearest_depth());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
         ++context.draw_calls;
     }
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     context.timer->end();
+}
+
+void shell_pass::begin_layer(pass_context& context) {
+    const int width = context.target->width(), height = context.target->height();
+    if (!m_layer || m_layer->width() != (width + 1) / 2 || m_layer->height() != (height + 1) / 2)
+        m_layer.emplace(width, height);
+    m_layer->begin();
+    // Its depth: the farthest of each 2x2 of the frame's (shaders/shell_layer_depth.frag).
+    glUseProgram(context.programs->screen(screen_program::shell_layer_depth));
+    glBindTextureUnit(0, context.target->depth_texture());
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_ALWAYS);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++context.draw_calls;
+    glDepthFunc(GL_LEQUAL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace sylva::render

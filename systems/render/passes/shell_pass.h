@@ -9,13 +9,20 @@
 // an index texture of tile types, one texel per lattice cell (§3.4). Mip levels are each layer's
 // own: a tile's border texels were baked with the plants across it (models/bake/shell_bake.h),
 // so neighbouring tiles' mips agree where their content does.
+//
+// By default the slices are blended into a half-resolution layer that is then drawn over the
+// frame (systems/render/shell_layer.h: why, and how depth is kept both ways); scenario
+// shells.half_resolution false blends them straight into the frame.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "components/shell_tile.h"
 #include "lod/shell_levels.h"
 #include "resources/scene_assets.h"
 #include "systems/render/gl_objects.h"
 #include "systems/render/passes/pass_context.h"
+#include "systems/render/shell_layer.h"
 
 namespace sylva::render {
 
@@ -33,17 +40,20 @@ private:
     // The program's uniforms, asked once (the frame does no string work).
     struct uniform_locations {
         GLuint program = 0;
-        GLint terrain_position = -1, slice_height = -1, slant = -1, lattice = -1, area = -1, layers_per_tile = -1,
-              fade = -1, level = -1, merge = -1, slices_at_level = -1, level_first_layer = -1;
+        GLint terrain_position = -1, slice_height = -1, slant = -1, slant_reach = -1, lattice = -1, area = -1, layers_per_tile = -1,
+              fade = -1, level = -1, max_level = -1, level_criterion = -1, level_slices = -1, level_first_layer = -1;
     };
     static uniform_locations uniforms_of(GLuint program);
+    // Binds the half-resolution layer (made or resized for the frame), cleared, with its depth
+    // taken from the frame's.
+    void begin_layer(pass_context& context);
 
     uniform_locations m_uniforms;
     std::uint32_t m_slices = 0;  // level 0's
     float m_slice_height = 0.0f;
     std::uint32_t m_layers_per_tile = 0;
-    std::vector<std::uint32_t> m_level_first_layer;
-    std::vector<std::uint32_t> m_level_slices;
+    std::vector<GLint> m_level_first_layer;  // by level, as the vertex shader's uniform arrays
+    std::vector<GLint> m_level_slices;
     glm::vec4 m_lattice{0.0f};
     glm::vec4 m_area{0.0f};
     gl_texture m_colour;
@@ -51,8 +61,10 @@ private:
     gl_texture m_index;
     gl_buffer m_vertices;
     gl_vertex_array m_vertex_array;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_tile_ranges;  // first vertex, count
+    // By terrain tile, by grid (components/shell_tile.h): first vertex, count.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> m_tile_ranges;
     std::uint64_t m_uploaded_bytes = 0;
+    std::optional<shell_layer> m_layer;  // made when the shells are first drawn at half resolution
 };
 
 }  // namespace sylva::render

@@ -238,5 +238,36 @@ TEST(terrain_tiles, neighbours_share_their_edge_exactly) {
     EXPECT_FLOAT_EQ(meshes[1].bounds_max.x, 0.0f);
 }
 
+// Coarser grids for far surfaces (the shells' slices): a 5 x 5 field, 4 cells, flat but for a
+// 3 m peak at its centre sample. Stride 2 keeps the centre (samples 0, 2, 4): the coarse
+// triangles then reach 1.5 m half way to it, where the field is 0 (e.g. column 2, row 1:
+// u = 1, v = 1/2 on the upper triangle, 3 + (1 - 1/2)(0 - 3) = 1.5). Stride 4 keeps the corners
+// only: flat, 3 m under the peak. Stride 3: samples 0, 3 and the last, 4.
+TEST(terrain_tiles, coarser_grids_keep_every_stride_th_sample_and_say_how_far_they_stray) {
+    heightfield f;
+    f.resolution = 5;
+    f.size_m = 4.0;
+    f.heights.assign(25, 0.0f);
+    f.heights[2 * 5 + 2] = 3.0f;
+    f.max_height = 3.0f;
+    EXPECT_EQ(terrain_tile_meshes(f, 1, 1.0f, 1)[0].vertices.size(), 25u);
+    EXPECT_EQ(terrain_tile_meshes(f, 1, 1.0f, 2)[0].vertices.size(), 9u);
+    EXPECT_EQ(terrain_tile_meshes(f, 1, 1.0f, 2)[0].triangle_count(), 8u);
+    EXPECT_EQ(terrain_tile_meshes(f, 1, 1.0f, 4)[0].triangle_count(), 2u);
+    const mesh_data three = terrain_tile_meshes(f, 1, 1.0f, 3)[0];
+    ASSERT_EQ(three.vertices.size(), 9u);
+    EXPECT_FLOAT_EQ(three.vertices[1].position.x, 1.0f);  // column 3 of 0..4, x from -2
+    EXPECT_FLOAT_EQ(three.vertices[2].position.x, 2.0f);
+    EXPECT_FLOAT_EQ(terrain_tile_errors(f, 1, 1)[0], 0.0f);
+    EXPECT_FLOAT_EQ(terrain_tile_errors(f, 1, 2)[0], 1.5f);
+    EXPECT_FLOAT_EQ(terrain_tile_errors(f, 1, 4)[0], 3.0f);
+    // Two tiles per side, stride 2: each tile is one coarse cell whose far corner is the peak.
+    const std::vector<float> quarters = terrain_tile_errors(f, 2, 2);
+    ASSERT_EQ(quarters.size(), 4u);
+    for (float e : quarters) EXPECT_FLOAT_EQ(e, 1.5f);
+    EXPECT_THROW(terrain_tile_meshes(f, 1, 1.0f, 0), std::invalid_argument);
+    EXPECT_THROW(terrain_tile_errors(f, 1, 0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace sylva
