@@ -151,6 +151,33 @@ bench_configuration_spec ladder_lodf() {
     return c;
 }
 
+// Behrendt 2005 §3: the shell rung against what it replaces. `ladder_no_shells`: each species'
+// ladder with its shell rung dropped, so the rung before draws the far field (the same
+// Wang-tiled plants, one by one); `ladder_shells_f<f>`: the shells slanted by f (Eq. 2; the
+// scenario's own is in `ladder`). On a scenario without shells each is `ladder` again.
+bench_configuration_spec ladder_without_shells() {
+    bench_configuration_spec c = ladder_configuration();
+    c.name = "ladder_no_shells";
+    c.family = "shells";
+    c.description = "each species' ladder with its shell rung dropped: the far field's plants drawn one by one by "
+                    "the rung before (Behrendt 2005 §3's alternative)";
+    c.options.policy.without_shells = true;
+    return c;
+}
+
+bench_configuration_spec ladder_shells_slanted(double slant) {
+    bench_configuration_spec c = ladder_configuration();
+    std::ostringstream value;
+    value << slant;
+    c.name = "ladder_shells_f" + value.str();
+    c.family = "shells";
+    c.description = "each species' ladder, its shells slanted toward the viewer by f = " + value.str() +
+                    " (Behrendt 2005 Eq. 2, limited; 0: flat slices)";
+    c.quality = slant;
+    c.options.shell_slant = slant;
+    return c;
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
@@ -257,6 +284,8 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
         if (factor == 1.0) list.push_back(lit_implicitly(ladder_configuration(factor)));
     }
     list.push_back(ladder_lodf());
+    list.push_back(ladder_without_shells());
+    for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
     for (double budget_ms : {4.0, 8.0, 15.0, 30.0, 45.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0})
         list.push_back(auto_ladder(budget_ms));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) {
@@ -291,6 +320,12 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(lit_by_transfer(points_lines(1.0f)));
     list.push_back(lit_by_transfer(points_lines(2.0f)));
     return list;
+}
+
+bool applies_to(const bench_configuration_spec& c, const scenario& s) {
+    if (c.family != "shells") return true;
+    return std::any_of(s.populations.begin(), s.populations.end(),
+                       [](const population_settings& p) { return p.placement == "wang_tiles"; });
 }
 
 std::optional<bench_configuration_spec> command_line_configuration(const scenario& s,

@@ -63,6 +63,10 @@ bench_configuration_spec reference_configuration(const scenario& s, const std::s
 // and the SH-lit twins of brute force, the baseline sweep and the main configurations.
 std::vector<bench_configuration_spec> default_bench_configurations();
 
+// Whether `c` measures anything on `s` that another configuration does not: the shells family
+// only where a population is Wang-tiled (elsewhere each of its configurations draws `ladder`).
+bool applies_to(const bench_configuration_spec& c, const scenario& s);
+
 // What the representation options on the command line (--representation, --sample-distance,
 // --splats, --primitive-budget, --target-frame-ms) ask the bench to measure besides its own
 // configurations: the configuration `sylva play` with the same options draws, named as the

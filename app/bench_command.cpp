@@ -95,6 +95,10 @@ int bench(const bench_options& o) {
     const scenario& s = *loaded;
     // The representation options ask for one more configuration: what `play` draws with them.
     std::vector<std::string> only = o.only;
+    // Configurations that would draw what another does on this scenario are left out unless named.
+    std::erase_if(specs, [&](const bench_configuration_spec& c) {
+        return !applies_to(c, s) && std::find(only.begin(), only.end(), c.name) == only.end();
+    });
     try {
         if (const auto extra = command_line_configuration(s, so)) {
             const bool known = std::any_of(specs.begin(), specs.end(), [&](const auto& c) { return c.name == extra->name; });

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/process_memory.h"
 #include "io/atomic_file.h"
 
 namespace sylva {
@@ -126,6 +127,9 @@ nlohmann::json summary_json(const run_info& info, const std::vector<frame_record
             {"plants", info.plants},
             {"source_triangles", info.source_triangles},
             {"setup_ms", info.setup_ms},
+            {"static_upload_bytes", info.static_upload_bytes},
+            {"shell_bytes", info.shell_bytes},
+            {"peak_memory_mb", peak_resident_mb()},
             {"mode", info.mode},
             {"samples_per_pixel", info.samples_per_pixel},
             {"median_frame_ms", med(&frame_record::frame_ms)},

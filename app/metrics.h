@@ -74,6 +74,8 @@ struct run_info {
     std::size_t plants = 0;
     std::uint64_t source_triangles = 0;
     double setup_ms = 0.0;  // building assets, world and GPU resources
+    std::uint64_t static_upload_bytes = 0;  // meshes, textures and shells uploaded once at start
+    std::uint64_t shell_bytes = 0;          // of which the shells' (textures, index, slice grids)
     std::string mode = "lod";  // lod, full_geometry or reference
     std::uint32_t samples_per_pixel = 1;
     // An interrupted run (app/interrupt.h) keeps the frames it finished: partial is true,

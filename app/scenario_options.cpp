@@ -13,7 +13,7 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
     command.add_option(
         "scenario", options.path,
         "Scenario JSON file (format: docs/scenario_format.md), or the name of a bundled "
-        "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day); default: "
+        "scenario (default, tiny, single_tree, forest, meadow, landscape, time_of_day, valley); default: "
         "the bundled default");
     command.add_option("--frames", options.frames, "Number of frames to play (overrides the scenario)")
         ->check(CLI::Range(1u, 1000000u));

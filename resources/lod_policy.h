@@ -46,6 +46,9 @@ struct lod_policy {
     // Every ladder's mesh_reduced rung drawn as LoDF (Rebollo 2006) instead: the bench's
     // ladder_lodf, the scenario's own ladders with the foliage thinned continuously there.
     bool lodf_for_reduced = false;
+    // Every ladder's shell rung dropped, so the rung before it draws the far field: the bench's
+    // ladder_no_shells, what the same plants cost without Behrendt 2005's shells.
+    bool without_shells = false;
     // Multiplies every projected size the ladders see (ladder only): below 1 every rung switches
     // nearer, so the bench sweeps a ladder's cost without moving the draw distances, which
     // lod_scale would.

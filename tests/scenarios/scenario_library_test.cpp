@@ -36,6 +36,9 @@ TEST(scenario_library, sizes_match_what_each_scenario_promises) {
     EXPECT_GE(plants_requested(library("forest"), "oak spruce"), 10000u);
     EXPECT_GE(plants_requested(library("meadow")), 100000u);
     EXPECT_GE(plants_requested(library("landscape")), 50000u);
+    // Issue 24: at least 20,000 trees and a dense understorey, Wang-tiled for the shells.
+    EXPECT_GE(plants_requested(library("valley"), "oak spruce"), 20000u);
+    EXPECT_GE(plants_requested(library("valley"), "hazel"), 20000u);
 }
 
 }  // namespace

@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Measures the shell rung (Behrendt 2005 §3; issue 24) and writes docs/results/shells.md.
+
+- Far field: `valley`'s Wang-tiled oaks, spruces and hazels on a flat-ish 800 m terrain, all of
+  them 280 m or more from the camera, seen from 5°, 10° and 20° above the canopy. One bench per
+  angle (`sylva bench`, its own reference): the shells (Eq. 2's f = 1, the paper's; 0.25; 0 =
+  flat slices) against the same plants drawn one by one as crossed billboards (the ladder without
+  its shell rung, and every plant as one), billboard clouds, and points and lines with eco-tile
+  point sets. Frame times are compared only within one bench (timing rounds side by side).
+- Plant count: the 10° view with four times the plants (spacings halved) against the base, shells
+  and crossed billboards, the two played in alternation, `--rounds` times each.
+- Memory: `valley` itself, with its shells and without (the ladder without the shell rung): the
+  shells' bytes, everything uploaded at start, the process's peak resident memory, frame time.
+
+Usage: docs/measure_shells.py [--frames 3] [--timing-rounds 3] [--rounds 3] [--width 480 --height 270]
+"""
+import argparse
+import copy
+import datetime
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import measure_meta
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
+ANGLES = [5, 10, 20]
+FAR_CONFIGURATIONS = ["ladder", "ladder_shells_f0.25", "ladder_shells_f0", "ladder_no_shells",
+                      "crossed_billboard_only", "billboard_cloud_only", "points_lines", "points_lines_d2"]
+
+
+def run(cmd):
+    print("[shells] " + " ".join(cmd), file=sys.stderr)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+
+
+def valley():
+    with open(os.path.join(ROOT, "scenarios", "valley.json")) as f:
+        return json.load(f)
+
+
+def far_field(angle_deg, density=1.0):
+    """`valley`'s plants at its densities on [-400, -400, 400, 100] of a flat-ish 800 m terrain,
+    the camera 280 m beyond the area's edge looking at 8 m above the ground 630 m away from
+    `angle_deg` above, dollying 10 m; `density` multiplies the plant counts (spacings / √density)."""
+    s = valley()
+    s["name"] = f"shell_far_{angle_deg}deg" + (f"_x{density:g}" if density != 1.0 else "")
+    s["terrain"] = {"size_m": 800, "resolution": 129, "height_m": 4, "octaves": 3, "frequency": 0.004,
+                    "seed": 5, "tiles_per_side": 4}
+    area = [-400, -400, 400, 100]
+    share = (area[2] - area[0]) * (area[3] - area[1]) / (1400.0 * 1400.0)
+    for p in s["populations"]:
+        p["area"] = area
+        p["count"] = int(round(p["count"] * share * density))
+        p["min_spacing_m"] = p["min_spacing_m"] / math.sqrt(density)
+    y = 8 + 630 * math.tan(math.radians(angle_deg))
+    s["camera"] = {"far_m": 3000, "keyframes": [
+        {"t": 0.0, "position": [0, y, 380], "target": [0, 8, -250]},
+        {"t": 0.5, "position": [0, y, 370], "target": [0, 8, -260]}]}
+    return s
+
+
+def without_shells(s):
+    s = copy.deepcopy(s)
+    s["name"] += "_no_shells"
+    s["lod"]["ladder"] = [r for r in s["lod"]["ladder"] if r["rung"] != "shell"]
+    return s
+
+
+def write(folder, s):
+    path = os.path.join(folder, s["name"] + ".json")
+    with open(path, "w") as f:
+        json.dump(s, f, indent=1)
+    return path
+
+
+def bench(folder, path, args):
+    out = os.path.join(folder, os.path.basename(path)[:-5])
+    run([SYLVA, "bench", path, "--only", ",".join(FAR_CONFIGURATIONS), "--frames", str(args.frames),
+         "--timing-rounds", str(args.timing_rounds), "--width", str(args.width), "--height", str(args.height),
+         "--out", out])
+    with open(os.path.join(out, "bench.json")) as f:
+        return json.load(f)
+
+
+def play(folder, path, args, frames):
+    out = os.path.join(folder, "play_" + os.path.basename(path)[:-5])
+    run([SYLVA, "play", path, "--frames", str(frames), "--width", str(args.width), "--height", str(args.height),
+         "--out", out])
+    with open(os.path.join(out, "metrics.json")) as f:
+        return json.load(f)
+
+
+def fmt(v, digits=3):
+    return "n/a" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.{digits}f}"
+
+
+def far_field_table(report):
+    rows = {c["name"]: c for c in report["configurations"]}
+    ladder_ms = rows["ladder_no_shells"]["frame_ms"]["median"]
+    lines = ["| configuration | frame ms (median) | time vs ladder_no_shells | SSIM | FLIP | coverage IoU | popping |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
+    for name in FAR_CONFIGURATIONS:
+        c = rows.get(name)
+        if not c:
+            continue
+        e = c["error"]
+        ms = c["frame_ms"]["median"]
+        lines.append(f"| `{name}` | {ms:.1f} | {ms / ladder_ms:.2f} | {fmt(e.get('ssim'))} | {fmt(e.get('perceptual'))} | "
+                     f"{fmt(e.get('coverage_iou'))} | {fmt(e.get('popping'), 2)} |")
+    return lines, rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--frames", type=int, default=3)
+    parser.add_argument("--timing-rounds", type=int, default=3)
+    parser.add_argument("--rounds", type=int, default=3, help="alternating plays for the plant-count comparison")
+    parser.add_argument("--width", type=int, default=480)
+    parser.add_argument("--height", type=int, default=270)
+    args = parser.parse_args()
+    page = []
+    with tempfile.TemporaryDirectory() as tmp:
+        far = {}
+        for angle in ANGLES:
+            far[angle] = bench(tmp, write(tmp, far_field(angle)), args)
+        # Plant count: base and four times the plants, in alternation.
+        pairs = {"shells": (far_field(10), far_field(10, 4.0)),
+                 "crossed billboards": (without_shells(far_field(10)), without_shells(far_field(10, 4.0)))}
+        density = {}
+        for label, (base, dense) in pairs.items():
+            paths = (write(tmp, base), write(tmp, dense))
+            times = ([], [])
+            plants = [0, 0]
+            for _ in range(args.rounds):
+                for k in (0, 1):
+                    m = play(tmp, paths[k], args, args.frames)
+                    times[k].append(m["summary"]["median_gpu_ms"])
+                    plants[k] = m["summary"]["plants"]
+            density[label] = (statistics.median(times[0]), statistics.median(times[1]), plants)
+        # Memory: valley with and without its shells.
+        memory = {}
+        for label, s in (("shells", valley()), ("no shells", without_shells(valley()))):
+            memory[label] = play(tmp, write(tmp, s), args, args.frames)["summary"]
+
+    page += [f"# Shells (Behrendt 2005 §3)", "",
+             f"Generated by `docs/measure_shells.py --frames {args.frames} --timing-rounds {args.timing_rounds} "
+             f"--rounds {args.rounds} --width {args.width} --height {args.height}` on "
+             f"{datetime.date.today().isoformat()}, {measure_meta.machine()}, commit {measure_meta.commit()}. "
+             "What the shells are and how they are drawn: [representations/shells.md](../representations/shells.md).", ""]
+    page += ["## Far field", "",
+             f"`valley`'s Wang-tiled plants on [-400, -400, 400, 100] of a flat-ish 800 m terrain, every one 280 m "
+             f"or more from the camera, {args.width}x{args.height}, {args.frames} frames of a 10 m dolly. Errors "
+             "against each angle's own reference (every plant at full geometry, 3x3 samples); times only within "
+             "one angle's bench, as ratios to the ladder without its shell rung (crossed billboards beyond the "
+             "band, the engine's own far rung).", ""]
+    for angle in ANGLES:
+        lines, _ = far_field_table(far[angle])
+        page += [f"### {angle}° above the canopy", ""] + lines + [""]
+    page += ["## Plant count", "",
+             f"The 10° view with four times the plants (spacings halved), medians of {args.rounds} alternating "
+             f"plays of {args.frames} frames (GPU ms per frame):", "",
+             "| drawn as | plants | GPU ms | 4x plants | GPU ms | change |", "|---|---:|---:|---:|---:|---:|"]
+    for label, (base, dense, plants) in density.items():
+        page.append(f"| {label} | {plants[0]:,} | {base:.1f} | {plants[1]:,} | {dense:.1f} | {100 * (dense / base - 1):+.0f} % |")
+    page += ["", "## Memory (`valley`)", "",
+             "| | shell bytes | uploaded at start | peak resident | median frame ms |", "|---|---:|---:|---:|---:|"]
+    for label, m in memory.items():
+        page.append(f"| {label} | {m['shell_bytes'] / 2**20:.1f} MiB | {m['static_upload_bytes'] / 2**20:.1f} MiB | "
+                    f"{m['peak_memory_mb']:.0f} MB | {m['median_frame_ms']:.1f} |")
+    out = os.path.join(ROOT, "docs", "results", "shells.md")
+    with open(out, "w") as f:
+        f.write("\n".join(page) + "\n")
+    print(f"[shells] wrote {out}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
