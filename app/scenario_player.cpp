@@ -379,6 +379,7 @@ std::vector<std::uint32_t> scenario_player::capture_plant_ids(std::uint32_t samp
             // tile's samples count as its first plant's.
             const std::uint32_t instance = instance_of_id(id, draws);
             if (instance != k_no_draw_item) plants[y * width + x] = plant_of(instance) + 1;
+            if (id == k_shell_id) plants[y * width + x] = k_shell_id;  // plants the shells show
         }
     return plants;
 }

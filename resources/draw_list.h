@@ -93,11 +93,14 @@ void build_batches(draw_list& list, const species_library& library);
 void radix_sort_draw_items(std::vector<draw_item>& items, std::vector<draw_item>& scratch);
 
 inline constexpr std::uint32_t k_no_draw_item = 0xffffffffu;
+// The ID the shells write where their layer covers at least half a pixel (passes/shell_pass.h):
+// no instance's (instance_of_id gives k_no_draw_item), but a plant pixel to the coverage metric.
+inline constexpr std::uint32_t k_shell_id = 0xffffffffu;
 
 // What a value of the renderer's ID buffer names: the instance records are the LoDF slots'
 // (lodf_instances) and then the items', so ID − 1 is a slot, then an item; the terrain's record
 // follows them. Returns the draw item's `instance` (a plant's dense index with its partner or
-// tile bits), a slot's plant, or k_no_draw_item for 0, a free slot and the terrain.
+// tile bits), a slot's plant, or k_no_draw_item for 0, a free slot, the terrain and the shells.
 inline std::uint32_t instance_of_id(std::uint32_t id, const draw_list& list) {
     if (id == 0) return k_no_draw_item;
     const std::size_t i = id - 1, slots = list.lodf_plants.size();

@@ -171,23 +171,6 @@ mesh_data terrain_mesh(const heightfield& field, float uv_scale_m) {
 }
 
 std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
-                                           float uv_scale_m) {
-    if (field.resolution < 2) throw std::invalid_argument("terrain_tile_meshes: empty heightfield");
-    const std::uint32_t cells = field.resolution - 1;
-    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);
-    std::vector<mesh_data> meshes;
-    meshes.reserve(std::size_t(tiles) * tiles);
-    for (std::uint32_t tz = 0; tz < tiles; ++tz) {
-        for (std::uint32_t tx = 0; tx < tiles; ++tx) {
-            meshes.push_back(grid_mesh(
-                field, tile_start(cells, tiles, tx), tile_start(cells, tiles, tx + 1),
-                tile_start(cells, tiles, tz), tile_start(cells, tiles, tz + 1), uv_scale_m));
-        }
-    }
-    return meshes;
-}
-
-std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
                                            float uv_scale_m, std::uint32_t stride) {
     if (field.resolution < 2) throw std::invalid_argument("terrain_tile_meshes: empty heightfield");
     if (stride == 0) throw std::invalid_argument("terrain_tile_meshes: stride must be at least 1");

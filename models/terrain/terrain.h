@@ -53,15 +53,13 @@ heightfield load_heightmap(const std::filesystem::path& path, double size_m, flo
 // same samples), so the surface has no cracks. Each tile's bounds are its own. tiles_per_side
 // is clamped to 1 .. resolution-1 (a tile holds at least one cell). Together the tiles have
 // exactly the triangles of terrain_mesh.
+//
+// With `stride` > 1 the same tiles on a coarser grid, every stride-th sample of each tile and its
+// last (so tiles of one stride share their edges; where strides differ the edges meet at
+// T-junctions), for far surfaces that need not follow every sample (the shells' slices,
+// systems/render/passes/shell_pass.h). Throws std::invalid_argument for stride 0.
 std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
-                                           float uv_scale_m);
-
-// The same tiles on a coarser grid, every `stride`-th sample of each tile and its last (so
-// tiles of one stride share their edges; where strides differ the edges meet at T-junctions).
-// Stride 1 is terrain_tile_meshes. For far surfaces that need not follow every sample (the
-// shells' slices, systems/render/passes/shell_pass.h). Throws std::invalid_argument for 0.
-std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
-                                           float uv_scale_m, std::uint32_t stride);
+                                           float uv_scale_m, std::uint32_t stride = 1);
 
 // By tile (terrain_tile_meshes order), the largest vertical distance between a height sample
 // and that tile's grid at `stride`: how far the coarse surface strays from the terrain.

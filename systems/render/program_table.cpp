@@ -78,6 +78,9 @@ program_table::program_table(const program_options& options) : m_options(options
             m_shaders.program({"sky.vert", "shell_layer_depth.frag", {}, {}});
         m_screen[std::size_t(screen_program::shell_composite)] =
             m_shaders.program({"sky.vert", "shell_composite.frag", {}, {}});
+        if (options.id_buffer)
+            m_screen[std::size_t(screen_program::shell_composite_ids)] =
+                m_shaders.program({"sky.vert", "shell_composite.frag", {"WRITE_ID"}, {}});
     }
 }
 

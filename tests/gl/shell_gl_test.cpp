@@ -7,6 +7,7 @@
 
 #include "app/scenario_player.h"
 #include "gl_test_support.h"
+#include "resources/draw_list.h"
 #include "scenarios/scenario_loader.h"
 
 namespace sylva {
@@ -99,6 +100,29 @@ TEST(shell_gl, wang_tiled_plants_on_the_shell_rung_are_drawn_by_the_shells_where
     // upside down: 0.16 and 0.22.
     EXPECT_GT(double(same) / double(any), 0.75) << "the layer against the shells drawn straight in";
     EXPECT_GT(double(both_full) / double(either_full), 0.6) << "the shells drawn straight in against the meshes";
+}
+
+// The coverage metric sees the shells: with an ID buffer the layer writes the shells' ID where
+// it covers half a pixel, and those pixels are where the shell frame shows plants.
+TEST(shell_gl, the_shells_write_their_id_where_they_cover_the_frame) {
+    SYLVA_REQUIRE_GL();
+    player_options options;
+    options.id_buffer = true;
+    scenario_player player(shrubs_from_above(true), 2, testing::shared_gl_context(), nullptr, options);
+    player.step();
+    const std::vector<std::uint32_t> ids = player.capture_plant_ids(1);
+    const std::vector<bool> shown = plant_mask(player.capture(), play(shrubs_from_above(false, true), 2).image);
+    ASSERT_EQ(ids.size(), shown.size());
+    std::size_t both = 0, either = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const bool id = ids[i] == k_shell_id;
+        both += id && shown[i];
+        either += id || shown[i];
+    }
+    ASSERT_GT(either, ids.size() / 10);
+    // 0.84 as built; with the IDs written where the layer is less than half covered instead:
+    // 0.11.
+    EXPECT_GT(double(both) / double(either), 0.7) << both << " of " << either;
 }
 
 TEST(shell_gl, the_shell_frame_is_the_same_for_any_thread_count) {

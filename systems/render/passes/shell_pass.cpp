@@ -192,6 +192,17 @@ void shell_pass::draw(pass_context& context) {
         glBindTextureUnit(1, m_layer->nearest_depth());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         ++context.draw_calls;
+        if (context.target->has_id_buffer()) {
+            // The shells' ID where the layer covers half a pixel or more (k_shell_id), colour kept.
+            glDisable(GL_BLEND);
+            context.target->draw_ids(true);
+            glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glUseProgram(context.programs->screen(screen_program::shell_composite_ids));
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            ++context.draw_calls;
+            glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            context.target->draw_ids(false);
+        }
     }
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
