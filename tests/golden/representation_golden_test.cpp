@@ -9,7 +9,8 @@
 // Scenes (tests/golden/data/): grove.json, three oaks and three spruces 16 to 27 m away;
 // meadow.json, grass tufts a few metres away, whose blades are lines at d' = 1.5 px;
 // distant_stand.json, a hundred trees about 170 m away seen through a 15 degree lens, far
-// enough to be drawn as their eco tiles' aggregated sets. SYLVA_UPDATE_GOLDEN=1 rewrites the
+// enough to be drawn as their eco tiles' aggregated sets; shell_stand.json, Wang-tiled shrubs
+// all drawn by the shells (Behrendt 2005 §3), from above (frame 0) and grazing (frame 1). SYLVA_UPDATE_GOLDEN=1 rewrites the
 // goldens (look at each before committing it).
 #include <gtest/gtest.h>
 
@@ -197,6 +198,20 @@ TEST(representation_golden, sh_mesh_levels) {
     EXPECT_EQ(drawn_total(frame.record), k_grove_plants);
     expect_lit(frame, lighting_variant::sh);
     testing::expect_matches_golden(frame.image, "grove_sh_mesh_levels.png");
+}
+
+// Behrendt 2005 §3: the shells from above, where every slice lies over the one below, and at a
+// grazing angle (4 m up, 62 m away), where the slanted slices stand toward the viewer. Every
+// plant is on the shell rung, so the frame is terrain and shells only.
+TEST(representation_golden, shells_from_above_and_grazing) {
+    SYLVA_REQUIRE_GL();
+    for (const std::uint64_t frame : {0u, 1u}) {
+        const auto f = testing::render_frame(scene("shell_stand.json"), frame);
+        EXPECT_GT(drawn(f.record, representation::shell), 100u);
+        EXPECT_EQ(drawn_total(f.record), drawn(f.record, representation::shell));
+        EXPECT_EQ(f.record.triangles, 0u);
+        testing::expect_matches_golden(f.image, frame == 0 ? "shells_from_above.png" : "shells_grazing.png");
+    }
 }
 
 }  // namespace
