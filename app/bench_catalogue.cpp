@@ -178,6 +178,18 @@ bench_configuration_spec ladder_shells_slanted(double slant) {
     return c;
 }
 
+// §3.3's claim, measured: the same ladder with the shells' pyramid built and blended with the
+// standard equation, which shifts colours where a level replaces its slices.
+bench_configuration_spec ladder_shells_standard_blending() {
+    bench_configuration_spec c = ladder_configuration();
+    c.name = "ladder_shells_standard_blending";
+    c.family = "shells";
+    c.description = "each species' ladder, its shells' slice pyramid merged and blended with the standard equation "
+                    "instead of Behrendt 2005 §3.3's premultiplied one (measurement only)";
+    c.options.shell_blending = "standard";
+    return c;
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
@@ -286,6 +298,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(ladder_lodf());
     list.push_back(ladder_without_shells());
     for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
+    list.push_back(ladder_shells_standard_blending());
     for (double budget_ms : {4.0, 8.0, 15.0, 30.0, 45.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0})
         list.push_back(auto_ladder(budget_ms));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) {

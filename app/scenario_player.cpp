@@ -148,13 +148,14 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
 }
 
 // The scenario a player with `options` plays: options.lighting lights every species, and
-// options.shell_slant slants the shells.
+// options.shell_slant and shell_blending draw the shells.
 scenario as_asked(scenario s, const player_options& options) {
     if (!options.lighting.empty()) {
         s.lod.lighting = options.lighting;
         for (species_settings& species : s.species) species.lighting = "scenario";
     }
     if (options.shell_slant >= 0.0) s.shells.slant = options.shell_slant;
+    if (!options.shell_blending.empty()) s.shells.blending = options.shell_blending;
     return s;
 }
 

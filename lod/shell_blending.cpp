@@ -64,6 +64,36 @@ image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upp
     return out;
 }
 
+image_rgba8 unpremultiply_slice(const image_rgba8& premultiplied) {
+    image_rgba8 out = premultiplied;
+    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
+        const float a = float(out.texels[i + 3]);
+        for (std::size_t k = 0; k < 3; ++k)
+            out.texels[i + k] =
+                a > 0.0f ? std::uint8_t(std::min(255.0f, std::round(float(out.texels[i + k]) * 255.0f / a))) : 0;
+    }
+    return out;
+}
+
+image_rgba8 merge_slices_standard(const image_rgba8& lower, const image_rgba8& upper) {
+    if (lower.width != upper.width || lower.height != upper.height || lower.texels.size() != upper.texels.size())
+        throw std::invalid_argument("merge_slices_standard: the slices differ in size");
+    image_rgba8 out = lower;
+    const auto texel = [](const image_rgba8& image, std::size_t i) {
+        return glm::vec4(image.texels[i], image.texels[i + 1], image.texels[i + 2], image.texels[i + 3]) / 255.0f;
+    };
+    for (std::size_t i = 0; i < out.texels.size(); i += 4) {
+        const glm::vec4 merged = blend_standard(texel(upper, i), blend_standard(texel(lower, i), glm::vec4(0.0f)));
+        for (std::size_t k = 0; k < 4; ++k)
+            out.texels[i + k] = std::uint8_t(std::clamp(std::round(merged[int(k)] * 255.0f), 0.0f, 255.0f));
+    }
+    return out;
+}
+
+std::vector<image_rgba8> next_pyramid_level_standard(const std::vector<image_rgba8>& slices) {
+    return pair_up(slices, merge_slices_standard);
+}
+
 std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices) {
     return pair_up(slices, merge_normal_slices);
 }

@@ -32,6 +32,14 @@ glm::vec4 blend_premultiplied(const glm::vec4& c, const glm::vec4& frame);
 // rounding to 8 bits costs at most half a step per merge.
 image_rgba8 merge_slices(const image_rgba8& lower, const image_rgba8& upper);
 std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices);
+// For measurement only: the pyramid a renderer with the standard equation would build, each pair
+// blended onto a cleared target, upper • (lower • 0), from straight-colour slices (unpremultiply
+// the bake's), and then drawn with • too. (upper • (lower • 0)) • F is not upper • (lower • F):
+// where the slices are partly transparent the merged slice shows less of what lies behind and
+// darkens the colour, so colours shift where a level replaces its slices (§3.3's reason for ∘).
+image_rgba8 unpremultiply_slice(const image_rgba8& premultiplied);
+image_rgba8 merge_slices_standard(const image_rgba8& lower, const image_rgba8& upper);
+std::vector<image_rgba8> next_pyramid_level_standard(const std::vector<image_rgba8>& slices);
 // The same for the slices' normal images (rgb n·0.5 + 0.5 straight, a coverage): the normal
 // seen from above, the upper's over the lower's by their coverage, and coverage as alpha merges.
 image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upper);

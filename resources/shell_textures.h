@@ -21,6 +21,9 @@ struct shell_textures {
     // shells are cut to it, as the placement is.
     std::array<double, 4> area{};
     std::vector<shell_stack> tiles;  // by Wang tile index (models/terrain/wang_tiles.h)
+    // Measurement only (scenario shells.blending "standard"): the renderer builds the pyramid and
+    // blends with the standard equation (lod/shell_blending.h merge_slices_standard).
+    bool standard_blending = false;
     bool empty() const { return tiles.empty(); }
 };
 

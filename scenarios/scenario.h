@@ -149,6 +149,8 @@
 //   shells {      Behrendt 2005 §3.2-3.3, how the shell rung draws (passes/shell_pass.h)
 //     slant            number   1     0 .. 4: f of the limited Eq. 2 (0: flat slices)
 //     half_resolution  boolean  true  slices blended at half the frame's resolution
+//     blending         string   "premultiplied"  or "standard" (measurement only: §3.3's pyramid
+//                                    and blending with the standard equation, which pops)
 //   }
 //   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true
@@ -404,9 +406,12 @@ struct wang_tile_settings {
     bool operator==(const wang_tile_settings&) const = default;
 };
 
+inline constexpr std::array<std::string_view, 2> k_shell_blendings{"premultiplied", "standard"};
+
 struct shell_settings {
     double slant = 1.0;  // Behrendt 2005 Eq. 2's f; the paper's 1
     bool half_resolution = true;
+    std::string blending = "premultiplied";  // one of k_shell_blendings
     bool operator==(const shell_settings&) const = default;
 };
 

@@ -362,7 +362,8 @@ const field_table<shell_settings>& shell_fields() {
     using t = shell_settings;
     static const auto table = field_table<t>()
                                   .number("slant", &t::slant, {0.0, 4.0})
-                                  .boolean("half_resolution", &t::half_resolution);
+                                  .boolean("half_resolution", &t::half_resolution)
+                                  .choice("blending", &t::blending, k_shell_blendings);
     return table;
 }
 

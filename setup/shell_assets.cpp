@@ -43,6 +43,7 @@ shell_textures build_shell_assets(const scenario& s, const scene_assets& assets,
     out.tiling_seed = wang_tiling_seed(s);
     out.origin = wang_lattice_origin(s);
     out.area = s.populations[tiled.front()].area;
+    out.standard_blending = s.shells.blending == "standard";
     shell_bake_settings settings = shell_bake_settings_of(s);
     // One slice height for every tile (the slices are offset surfaces of the whole terrain):
     // the stack is as tall as the tallest plant any tiled population can have.

@@ -20,6 +20,7 @@ layout(binding = 4) uniform usampler2D u_wang_index;
 uniform vec4 u_lattice;  // xy: lattice corner (0, 0), terrain-local; z: tile size; w: 1 / tile size
 uniform int u_layers_per_tile;
 uniform vec2 u_fade;  // the shell is transparent nearer than x metres, whole beyond y
+uniform int u_premultiplied;  // 0: straight colour, the standard equation (measurement only)
 uniform vec4 u_area;  // x0, z0, x1, z1: where the tiled populations grow (terrain-local)
 
 layout(location = 0) out vec4 out_color;
@@ -40,7 +41,7 @@ void main() {
     float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
     if (c.a * fade < 0.5 / 255.0) discard;
     vec3 n = normalize(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
-    vec3 lit = shade_surface(c.rgb / max(c.a, 1e-4), n, v_position, true);
-    out_color = vec4(lit * c.a, c.a) * fade;
+    vec3 lit = shade_surface(u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb, n, v_position, true);
+    out_color = u_premultiplied != 0 ? vec4(lit * c.a, c.a) * fade : vec4(lit, c.a * fade);
     out_nearest = gl_FragCoord.z;
 }

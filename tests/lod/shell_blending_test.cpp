@@ -70,5 +70,32 @@ TEST(shell_blending, a_pyramid_level_merges_pairs_within_one_step) {
     }
 }
 
+// The pyramid a standard-equation renderer builds (measurement only): straight red at α 0.5
+// under straight green at α 0.5, blended onto a cleared target: red • 0 = (0.5, 0, 0, 0.25), then
+// green • that = (0, 0.5, 0, 0.25) + (0.5, 0, 0, 0.25)·0.5 = (0.25, 0.5, 0, 0.375), in 8 bits
+// (64, 128, 0, 96). Over blue it shows (0.094, 0.19, 0.63), where the two slices one by one show
+// (0.25, 0.5, 0.25): the colour shift §3.3 avoids with premultiplied slices.
+TEST(shell_blending, the_standard_equations_pyramid_shifts_colours) {
+    image_rgba8 lower, upper;
+    lower.width = lower.height = upper.width = upper.height = 1;
+    lower.texels = {255, 0, 0, 128};
+    upper.texels = {0, 255, 0, 128};
+    const image_rgba8 merged = merge_slices_standard(lower, upper);
+    EXPECT_EQ(merged.texels, (std::vector<std::uint8_t>{64, 128, 0, 96}));
+    const glm::vec4 blue{0.0f, 0.0f, 1.0f, 1.0f};
+    const glm::vec4 m = glm::vec4(merged.texels[0], merged.texels[1], merged.texels[2], merged.texels[3]) / 255.0f;
+    const glm::vec4 at_once = blend_standard(m, blue);
+    const glm::vec4 one_by_one = blend_standard({0.0f, 1.0f, 0.0f, 128.0f / 255.0f}, blend_standard({1.0f, 0.0f, 0.0f, 128.0f / 255.0f}, blue));
+    EXPECT_NEAR(at_once.b, 0.624f, 0.01f);
+    EXPECT_NEAR(one_by_one.b, 0.249f, 0.01f);
+    EXPECT_NEAR(one_by_one.r, 0.249f, 0.01f);
+    // Straight colour back from the bake's premultiplied: (128, 0, 0, 128) is pure red.
+    image_rgba8 pre = lower;
+    pre.texels = {128, 0, 0, 128};
+    EXPECT_EQ(unpremultiply_slice(pre).texels, (std::vector<std::uint8_t>{255, 0, 0, 128}));
+    pre.texels = {0, 0, 0, 0};
+    EXPECT_EQ(unpremultiply_slice(pre).texels, (std::vector<std::uint8_t>{0, 0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace sylva

@@ -971,6 +971,9 @@ TEST(scenario_loader, wang_tiled_populations_load_round_trip_and_refuse_rules_a_
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(with), k_source), with);
     EXPECT_EQ(load(minimal()).shells, shell_settings{});
     expect_error(set(j, "/shells/slant", 5), {"/shells/slant", "out of range; expected a number from 0 to 4", "5"});
+    EXPECT_EQ(load(set(j, "/shells/blending", "standard")).shells.blending, "standard");
+    expect_error(set(j, "/shells/blending", "additive"),
+                 {"/shells/blending", "unknown value; expected one of: premultiplied, standard", "\"additive\""});
 }
 
 TEST(scenario_loader, placement_mode_and_generator_presets_are_choices) {

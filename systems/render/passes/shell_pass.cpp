@@ -30,6 +30,7 @@ shell_pass::uniform_locations shell_pass::uniforms_of(GLuint program) {
     u.slice_height = glGetUniformLocation(program, "u_slice_height");
     u.slant = glGetUniformLocation(program, "u_slant");
     u.slant_reach = glGetUniformLocation(program, "u_slant_reach");
+    u.premultiplied = glGetUniformLocation(program, "u_premultiplied");
     u.lattice = glGetUniformLocation(program, "u_lattice");
     u.area = glGetUniformLocation(program, "u_area");
     u.layers_per_tile = glGetUniformLocation(program, "u_layers_per_tile");
@@ -58,14 +59,17 @@ shell_pass::shell_pass(const scene_assets& assets) {
     }
     std::vector<image_rgba8> colour;
     std::vector<image_rgba8> normal;
+    m_standard_blending = shells.standard_blending;
     for (const shell_stack& stack : shells.tiles) {
         std::vector<image_rgba8> c = stack.colour;
+        if (m_standard_blending)
+            for (image_rgba8& slice : c) slice = unpremultiply_slice(slice);
         std::vector<image_rgba8> n = stack.normal;
         for (;;) {
             colour.insert(colour.end(), c.begin(), c.end());
             normal.insert(normal.end(), n.begin(), n.end());
             if (c.size() == 1) break;
-            c = next_pyramid_level(c);
+            c = m_standard_blending ? next_pyramid_level_standard(c) : next_pyramid_level(c);
             n = next_normal_pyramid_level(n);
         }
     }
@@ -151,6 +155,7 @@ void shell_pass::draw(pass_context& context) {
     glUniform1f(u.slice_height, m_slice_height);
     glUniform1f(u.slant, shells.slant);
     glUniform1f(u.slant_reach, shells.slant_reach_m);
+    glUniform1i(u.premultiplied, m_standard_blending ? 0 : 1);
     glUniform4fv(u.lattice, 1, &m_lattice.x);
     glUniform4fv(u.area, 1, &m_area.x);
     glUniform1i(u.layers_per_tile, GLint(m_layers_per_tile));
@@ -165,7 +170,11 @@ void shell_pass::draw(pass_context& context) {
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // Behrendt 2005 §3.3: c + F·(1 − α)
+    // Behrendt 2005 §3.3: c + F·(1 − α); measured against the standard c·α + F·(1 − α).
+    if (m_standard_blending)
+        glBlendFunci(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    else
+        glBlendFunci(0, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     if (shells.half_resolution) {
         glBlendEquationi(1, GL_MIN);  // the layer's nearest slice depth
         glBlendFunci(1, GL_ONE, GL_ONE);
@@ -184,6 +193,7 @@ void shell_pass::draw(pass_context& context) {
     }
     if (shells.half_resolution) {
         glBlendEquationi(1, GL_FUNC_ADD);
+        glBlendFunci(0, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         // The layer over the frame (premultiplied, the same equation), cut by the frame's depth.
         context.target->bind();
         context.target->draw_ids(false);
@@ -204,6 +214,7 @@ void shell_pass::draw(pass_context& context) {
             context.target->draw_ids(false);
         }
     }
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     context.timer->end();

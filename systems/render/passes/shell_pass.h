@@ -40,7 +40,7 @@ private:
     // The program's uniforms, asked once (the frame does no string work).
     struct uniform_locations {
         GLuint program = 0;
-        GLint terrain_position = -1, slice_height = -1, slant = -1, slant_reach = -1, lattice = -1, area = -1, layers_per_tile = -1,
+        GLint terrain_position = -1, slice_height = -1, slant = -1, slant_reach = -1, premultiplied = -1, lattice = -1, area = -1, layers_per_tile = -1,
               fade = -1, level = -1, max_level = -1, level_criterion = -1, level_slices = -1, level_first_layer = -1;
     };
     static uniform_locations uniforms_of(GLuint program);
@@ -52,6 +52,7 @@ private:
     std::uint32_t m_slices = 0;  // level 0's
     float m_slice_height = 0.0f;
     std::uint32_t m_layers_per_tile = 0;
+    bool m_standard_blending = false;  // shell_textures::standard_blending
     std::vector<GLint> m_level_first_layer;  // by level, as the vertex shader's uniform arrays
     std::vector<GLint> m_level_slices;
     glm::vec4 m_lattice{0.0f};
