@@ -24,16 +24,14 @@ struct shell_view {
     std::uint32_t max_level = 0;  // the pyramid's top level (one slice)
     float slant = 1.0f;           // f of Eq. 2 (the paper's 1; scenario shells.slant)
     float slant_reach_m = 0.0f;   // the ground's own triangles' reach: every grid's shift within f times it
-    bool half_resolution = true;  // blended in the half-size shell layer (systems/render/shell_layer.h)
+    bool half_resolution = true;  // blended in the half-size shell layer (passes/shell_pass.h)
     // By species, the mean scale of its plants' populations (the plant size the fade assumes).
     std::vector<float> mean_scale;
-    // The handover from the plants' ladder (§3.3 end), this frame: the shell rung's switch size S
-    // and band h of the species whose ladder hands over farthest, and that species' plant
-    // diameter at its mean scale. A plant of that size would hand over between sizes S(1 + h)
-    // and S; the shell fades in over those distances, and every plant on a ladder ending in the
-    // shell hands over there (lod/ladder.h choose_rung_with_shell).
-    float below_px = 0.0f;
-    float band = 0.0f;
+    // The handover from the plants' ladder (§3.3 end), this frame: the plant diameter (at its
+    // mean scale) of the species whose ladder hands over farthest. A plant of that size crosses
+    // its shell rung's band (sizes S(1 + h) to S) between fade_start_m and fade_end_m; the shell
+    // fades in over those distances, and every plant on a ladder ending in the shell hands over
+    // there (lod/ladder.h choose_rung_with_shell).
     float plant_diameter_m = 0.0f;
     float pixels_per_radian = 0.0f;  // this frame's viewport height over the field of view
     // This frame's fade: the shell is transparent nearer than start, whole beyond end.

@@ -509,7 +509,9 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
         // The slices rise up to the stack's height and Eq. 2 moves a vertex vertically by at most
         // f times its distance from its triangle's centre on the terrain's own grid, which the
         // shader holds every grid to (shaders/shell.vert; lod/shell_slanting.h).
-        const float slant_reach = shell_slant_reach(terrain_tile_meshes(assets.terrain, tiles_per_side, 1.0f, 1));
+        float slant_reach = 0.0f;
+        for (std::uint16_t id : assets.terrain_meshes)
+            slant_reach = std::max(slant_reach, shell_slant_reach(std::span(&assets.meshes.at(id), 1)));
         view.slant_reach_m = slant_reach;
         for (std::size_t t = 0; t < assets.terrain_meshes.size(); ++t) {
             const mesh_data& tile = assets.meshes.at(assets.terrain_meshes[t]);

@@ -4,7 +4,7 @@
 // shadows, sky, fog) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
 // GL_ONE_MINUS_SRC_ALPHA), bottom slice first. Near the viewer it fades out where the plants'
 // ladder hands over to it (§3.3 end: a linear fade over the band). Drawn into the shell layer
-// (systems/render/shell_layer.h), it also writes its window depth for the layer's composite.
+// (systems/render/passes/shell_pass.h), it also writes its window depth for the layer's composite.
 #include "common.glsl"
 #include "shading.glsl"
 // The depth test before the shader: a slice behind the ground or a plant costs no shading (the

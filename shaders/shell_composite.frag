@@ -1,4 +1,4 @@
-// Draws the shells' layer (systems/render/shell_layer.h) over the frame: its premultiplied
+// Draws the shells' layer (systems/render/passes/shell_pass.h) over the frame: its premultiplied
 // colour filtered up (blended with ONE, ONE_MINUS_SRC_ALPHA, Behrendt 2005 §3.3's modified
 // equation once more), at the nearest slice depth of the 2x2 texels the filter reads, so the
 // frame's depth test keeps what lies in front of the shells. WRITE_ID: the pass after it, which

@@ -1,4 +1,4 @@
-// The shell layer's depth (systems/render/shell_layer.h): the farthest of the 2x2 frame depths
+// The shell layer's depth (systems/render/passes/shell_pass.h): the farthest of the 2x2 frame depths
 // under each layer texel, so a slice is hidden only where the terrain or a plant covers all four.
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_frame_depth;

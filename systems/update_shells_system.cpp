@@ -27,7 +27,6 @@ void update_shells_system::run(ecs::system_context<update_shells_system>& ctx) {
     // The shell is one layer over the terrain, so its handover is one distance band for all its
     // plants: the farthest any species' ladder asks (a species whose plants hand over nearer keeps
     // its previous rung out to there; none vanishes before the shell shows it).
-    view.below_px = 0.0f;
     view.fade_start_m = 0.0f;
     view.fade_end_m = 0.0f;
     for (std::size_t k = 0; k < policy.ladders.size() && k < species.size(); ++k) {
@@ -39,8 +38,6 @@ void update_shells_system::run(ecs::system_context<update_shells_system>& ctx) {
         const float diameter = float(double(2.0f * species[k].bounding_radius * scale) * stretch);
         const float end = distance_for_size(diameter, below, pixel);
         if (end <= view.fade_end_m) continue;
-        view.below_px = below;
-        view.band = band;
         view.plant_diameter_m = 2.0f * species[k].bounding_radius * scale;
         view.fade_start_m = distance_for_size(diameter, below * (1.0f + band), pixel);
         view.fade_end_m = end;

@@ -170,56 +170,61 @@ mesh_data terrain_mesh(const heightfield& field, float uv_scale_m) {
     return mesh;
 }
 
-std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
-                                           float uv_scale_m, std::uint32_t stride) {
-    if (field.resolution < 2) throw std::invalid_argument("terrain_tile_meshes: empty heightfield");
-    if (stride == 0) throw std::invalid_argument("terrain_tile_meshes: stride must be at least 1");
+namespace {
+
+// Calls visit(c0, c1, r0, r1) for every tile of the terrain split into tiles_per_side^2 (row-major),
+// with its first and last vertex column and row; checks the arguments both tile functions take.
+template <class Visit>
+void for_each_tile(const char* caller, const heightfield& field, std::uint32_t tiles_per_side, std::uint32_t stride,
+                   const Visit& visit) {
+    if (field.resolution < 2) throw std::invalid_argument(std::string(caller) + ": empty heightfield");
+    if (stride == 0) throw std::invalid_argument(std::string(caller) + ": stride must be at least 1");
     const std::uint32_t cells = field.resolution - 1;
     const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);
-    std::vector<mesh_data> meshes;
-    meshes.reserve(std::size_t(tiles) * tiles);
     for (std::uint32_t tz = 0; tz < tiles; ++tz)
         for (std::uint32_t tx = 0; tx < tiles; ++tx)
-            meshes.push_back(grid_mesh(field, tile_start(cells, tiles, tx), tile_start(cells, tiles, tx + 1),
-                                       tile_start(cells, tiles, tz), tile_start(cells, tiles, tz + 1), uv_scale_m,
-                                       stride));
+            visit(tile_start(cells, tiles, tx), tile_start(cells, tiles, tx + 1), tile_start(cells, tiles, tz),
+                  tile_start(cells, tiles, tz + 1));
+}
+
+}  // namespace
+
+std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
+                                           float uv_scale_m, std::uint32_t stride) {
+    std::vector<mesh_data> meshes;
+    for_each_tile("terrain_tile_meshes", field, tiles_per_side, stride,
+                  [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
+                      meshes.push_back(grid_mesh(field, c0, c1, r0, r1, uv_scale_m, stride));
+                  });
     return meshes;
 }
 
 std::vector<float> terrain_tile_errors(const heightfield& field, std::uint32_t tiles_per_side, std::uint32_t stride) {
-    if (field.resolution < 2) throw std::invalid_argument("terrain_tile_errors: empty heightfield");
-    if (stride == 0) throw std::invalid_argument("terrain_tile_errors: stride must be at least 1");
-    const std::uint32_t cells = field.resolution - 1;
-    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);
     std::vector<float> errors;
-    errors.reserve(std::size_t(tiles) * tiles);
-    for (std::uint32_t tz = 0; tz < tiles; ++tz) {
-        for (std::uint32_t tx = 0; tx < tiles; ++tx) {
-            const std::vector<std::uint32_t> columns = grid_samples(tile_start(cells, tiles, tx),
-                                                                    tile_start(cells, tiles, tx + 1), stride);
-            const std::vector<std::uint32_t> rows = grid_samples(tile_start(cells, tiles, tz),
-                                                                 tile_start(cells, tiles, tz + 1), stride);
-            float worst = 0.0f;
-            // Each coarse cell's samples against its two triangles (grid_mesh's diagonal runs from
-            // (column + 1, row) to (column, row + 1)).
-            for (std::size_t j = 0; j + 1 < rows.size(); ++j) {
-                for (std::size_t i = 0; i + 1 < columns.size(); ++i) {
-                    const std::uint32_t ca = columns[i], cb = columns[i + 1], ra = rows[j], rb = rows[j + 1];
-                    const float h00 = field.at(ca, ra), h10 = field.at(cb, ra), h01 = field.at(ca, rb),
-                                h11 = field.at(cb, rb);
-                    for (std::uint32_t r = ra; r <= rb; ++r) {
-                        for (std::uint32_t c = ca; c <= cb; ++c) {
-                            const float u = float(c - ca) / float(cb - ca), v = float(r - ra) / float(rb - ra);
-                            const float coarse = u + v <= 1.0f ? h00 + u * (h10 - h00) + v * (h01 - h00)
-                                                               : h11 + (1.0f - u) * (h01 - h11) + (1.0f - v) * (h10 - h11);
-                            worst = std::max(worst, std::abs(field.at(c, r) - coarse));
-                        }
+    for_each_tile("terrain_tile_errors", field, tiles_per_side, stride,
+                  [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
+        const std::vector<std::uint32_t> columns = grid_samples(c0, c1, stride);
+        const std::vector<std::uint32_t> rows = grid_samples(r0, r1, stride);
+        float worst = 0.0f;
+        // Each coarse cell's samples against its two triangles (grid_mesh's diagonal runs from
+        // (column + 1, row) to (column, row + 1)).
+        for (std::size_t j = 0; j + 1 < rows.size(); ++j) {
+            for (std::size_t i = 0; i + 1 < columns.size(); ++i) {
+                const std::uint32_t ca = columns[i], cb = columns[i + 1], ra = rows[j], rb = rows[j + 1];
+                const float h00 = field.at(ca, ra), h10 = field.at(cb, ra), h01 = field.at(ca, rb),
+                            h11 = field.at(cb, rb);
+                for (std::uint32_t r = ra; r <= rb; ++r) {
+                    for (std::uint32_t c = ca; c <= cb; ++c) {
+                        const float u = float(c - ca) / float(cb - ca), v = float(r - ra) / float(rb - ra);
+                        const float coarse = u + v <= 1.0f ? h00 + u * (h10 - h00) + v * (h01 - h00)
+                                                           : h11 + (1.0f - u) * (h01 - h11) + (1.0f - v) * (h10 - h11);
+                        worst = std::max(worst, std::abs(field.at(c, r) - coarse));
                     }
                 }
             }
-            errors.push_back(worst);
         }
-    }
+        errors.push_back(worst);
+    });
     return errors;
 }
 

@@ -38,7 +38,7 @@ enum class surface_primitive : std::uint8_t { triangles, points, lines, line_qua
 // ID and normal buffers (shaders/splat_layer.frag), built when the frame has either.
 // shell: the shell slices over the terrain (passes/shell_pass.h), built when the scene has them,
 // with shell_layer_depth and shell_composite, which fill the shell layer's depth and draw it over
-// the frame (systems/render/shell_layer.h), and with an ID buffer shell_composite_ids, which
+// the frame (passes/shell_pass.h), and with an ID buffer shell_composite_ids, which
 // writes the shells' ID where the layer covers a pixel.
 enum class screen_program : std::uint8_t {
     sky,

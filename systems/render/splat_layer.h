@@ -1,7 +1,8 @@
 #pragma once
 // The soft splats' own layer (lod/point_line_lod.h soft splats), at half the frame's
 // resolution: the visibility pass and the Gaussians are drawn into it, and it is then drawn over
-// the frame through bilinear filtering.
+// the frame through bilinear filtering. The shell pass (passes/shell_pass.h) blends its slices
+// into one of its own, without IDs or normals, the same way (its depth filled from the frame's).
 //
 // Why a layer. Composited over each other and cut per pixel by the visibility pass's depth
 // test, soft splats leave hard pixel-sized edges that move as the camera does. Blurring the
@@ -40,6 +41,8 @@ public:
     GLuint nearest_depth() const { return m_nearest.id(); }
     GLuint ids() const { return m_ids.id(); }          // 0 without an ID buffer
     GLuint normals() const { return m_normals.id(); }  // 0 without a normal buffer
+    int width() const { return m_width; }
+    int height() const { return m_height; }
     // Window size of the layer relative to the frame's: every splat is drawn this many times
     // its frame size.
     static constexpr float k_scale = 0.5f;

@@ -110,9 +110,11 @@ shell_pass::shell_pass(const scene_assets& assets) {
     const std::size_t grids = shell_grid_count(ground_cells / std::max(tiles_per_side, 1u));
     m_tile_ranges.assign(assets.terrain_meshes.size(), {});
     for (std::size_t g = 0; g < grids; ++g) {
-        const std::vector<mesh_data> meshes = terrain_tile_meshes(ground, tiles_per_side, 1.0f, 1u << g);
-        for (std::size_t t = 0; t < meshes.size() && t < m_tile_ranges.size(); ++t) {
-            const mesh_data& tile = meshes[t];
+        // Grid 0 is the terrain's own tiles, already in the assets.
+        const std::vector<mesh_data> coarser = g > 0 ? terrain_tile_meshes(ground, tiles_per_side, 1.0f, 1u << g)
+                                                     : std::vector<mesh_data>{};
+        for (std::size_t t = 0; t < m_tile_ranges.size() && (g == 0 || t < coarser.size()); ++t) {
+            const mesh_data& tile = g == 0 ? assets.meshes.at(assets.terrain_meshes[t]) : coarser[t];
             const auto first = std::uint32_t(vertices.size());
             for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
                 const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
@@ -223,7 +225,7 @@ void shell_pass::draw(pass_context& context) {
 void shell_pass::begin_layer(pass_context& context) {
     const int width = context.target->width(), height = context.target->height();
     if (!m_layer || m_layer->width() != (width + 1) / 2 || m_layer->height() != (height + 1) / 2)
-        m_layer.emplace(width, height);
+        m_layer.emplace(width, height, false, false);
     m_layer->begin();
     // Its depth: the farthest of each 2x2 of the frame's (shaders/shell_layer_depth.frag).
     glUseProgram(context.programs->screen(screen_program::shell_layer_depth));
@@ -235,6 +237,7 @@ void shell_pass::begin_layer(pass_context& context) {
     ++context.draw_calls;
     glDepthFunc(GL_LEQUAL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    m_layer->draw_blend();  // the slices write colour and their nearest depth
 }
 
 }  // namespace sylva::render

@@ -10,9 +10,24 @@
 // own: a tile's border texels were baked with the plants across it (models/bake/shell_bake.h),
 // so neighbouring tiles' mips agree where their content does.
 //
-// By default the slices are blended into a half-resolution layer that is then drawn over the
-// frame (systems/render/shell_layer.h: why, and how depth is kept both ways); scenario
-// shells.half_resolution false blends them straight into the frame.
+// By default the slices are blended into a half-resolution layer (systems/render/splat_layer.h,
+// colour and nearest depth) that is then drawn over the frame; scenario shells.half_resolution
+// false blends them straight into the frame.
+//
+// Why a layer. A shell pixel is many slices deep (every slice of its level, and more where the
+// slanted triangles of Behrendt 2005 Eq. 2 stand up toward a grazing view), each a lit fragment,
+// so on a rasteriser without fill to spare (llvmpipe) the shells cost their covered pixels times
+// their depth: 23 M fragments and over a second at 480x270 on `valley`. The far field they draw
+// holds no detail a half-resolution layer loses (beyond the fade band a texel of the tiles is
+// under a pixel and the fog washes it), and at half size the slices cost a quarter of the fill.
+// (The same reasoning as "off-screen particles", Cantlay 2007, GPU Gems 3 ch. 23.)
+//
+// Depth, both ways. Before the slices, the layer's depth buffer takes the farthest of each 2x2
+// of the frame's depths (shaders/shell_layer_depth.frag): a slice behind the terrain or a plant
+// in all four pixels is hidden there, and one behind only some of them is kept. The slices write
+// their nearest window depth (R32F, MIN-blended), and the composite (shaders/shell_composite.frag)
+// is drawn at the nearest of the 2x2 texels its filter reads, so the frame's depth test cuts the
+// layer pixel by pixel where a plant or the ground lies in front.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -22,7 +37,7 @@
 #include "resources/scene_assets.h"
 #include "systems/render/gl_objects.h"
 #include "systems/render/passes/pass_context.h"
-#include "systems/render/shell_layer.h"
+#include "systems/render/splat_layer.h"
 
 namespace sylva::render {
 
@@ -65,7 +80,7 @@ private:
     // By terrain tile, by grid (components/shell_tile.h): first vertex, count.
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> m_tile_ranges;
     std::uint64_t m_uploaded_bytes = 0;
-    std::optional<shell_layer> m_layer;  // made when the shells are first drawn at half resolution
+    std::optional<splat_layer> m_layer;  // made when the shells are first drawn at half resolution
 };
 
 }  // namespace sylva::render
