@@ -22,6 +22,8 @@ command_runner add_bake_command(CLI::App& app);
 command_runner add_stress_command(CLI::App& app);
 command_runner add_bench_command(CLI::App& app);
 command_runner add_calibrate_command(CLI::App& app);
+command_runner add_merge_command(CLI::App& app);
+command_runner add_farm_command(CLI::App& app);
 
 constexpr int k_exit_ok = 0;
 constexpr int k_exit_failure = 1;

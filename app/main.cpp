@@ -82,6 +82,12 @@ int run(int argc, char** argv) {
     auto* calibrate = app.add_subcommand(
         "calibrate", "Measure what a triangle, a point and a line cost on this GL device, and cache it");
     commands.emplace_back(calibrate, sylva::add_calibrate_command(*calibrate));
+    auto* merge = app.add_subcommand(
+        "merge", "Join the outputs of shards of one run (--frame-range) into what the whole run writes");
+    commands.emplace_back(merge, sylva::add_merge_command(*merge));
+    auto* farm = app.add_subcommand(
+        "farm", "Run a play or bench as a Slurm array job of frame shards, merged when all succeeded");
+    commands.emplace_back(farm, sylva::add_farm_command(*farm));
     auto* stress = app.add_subcommand("stress", "Run the numerical stress suite and print a table of its checks");
     commands.emplace_back(stress, sylva::add_stress_command(*stress));
     try {

@@ -83,14 +83,35 @@ struct run_info {
     bool partial = false;
     std::string interrupted_by;
     std::uint64_t frames_planned = 0;
+    // A shard (app/frame_range.h): the frames [first, end) of a camera path of path_frames
+    // frames, and what reaching its first frame cost (all 0 for a run from frame 0).
+    std::array<std::uint64_t, 2> frame_range{0, 0};
+    std::uint64_t path_frames = 0;
+    std::uint64_t replay_cpu_frames = 0;
+    std::uint64_t replay_rendered_frames = 0;
+    double replay_ms = 0.0;
+    double peak_memory_mb = -1.0;  // resident high-water mark; negative: this process's when written
+    std::string host;  // where it ran (timings of different hosts are never compared)
+    // Merged shards (sylva merge): one entry per shard, in frame order; empty for one run.
+    std::vector<run_info> shards;
 };
 
 std::string_view representation_name(representation r);
 std::string describe_machine();
 double median(std::vector<double> values);
 
+std::string host_name();
+
 // Writes metrics.json atomically (temporary file, then rename); throws naming the path.
 void write_metrics_json(const std::filesystem::path& path, const run_info& info,
                         const std::vector<frame_record>& frames);
+
+// Reads what write_metrics_json wrote (sylva merge); throws std::runtime_error naming the
+// path and the field that is missing or wrong.
+struct metrics_file {
+    run_info info;
+    std::vector<frame_record> frames;
+};
+metrics_file read_metrics_json(const std::filesystem::path& path);
 
 }  // namespace sylva

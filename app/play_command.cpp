@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "app/frame_range.h"
 #include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
@@ -22,6 +23,8 @@ struct play_options {
     bool headless = false;
     bool reference = false;      // full geometry, k_reference_samples² samples per pixel
     bool full_geometry = false;  // full geometry, one sample per pixel (brute force)
+    std::string frame_range;     // "A:B": a shard (app/frame_range.h); empty: every frame
+    std::string shard;           // "K/N": the same, as shard K of N
 };
 
 // Samples per pixel along each axis in --reference (issue 4 asks for at least 3x3).
@@ -34,16 +37,17 @@ std::filesystem::path frame_path(const play_options& o, std::uint64_t frame) {
     return std::filesystem::path(o.out_dir) / name;
 }
 
-// Plays the frames, stopping after the current one when interrupted (app/interrupt.h).
-void play_frames(scenario_player& player, const play_options& o, const scenario& s,
-                 std::uint32_t samples, std::vector<frame_record>& frames) {
-    for (std::uint32_t f = 0; f < s.frames && !interrupt_requested(); ++f) {
+// Plays the frames of `range`, stopping after the current one when interrupted
+// (app/interrupt.h).
+void play_frames(scenario_player& player, const play_options& o, frame_range range, std::uint32_t samples,
+                 std::vector<frame_record>& frames) {
+    for (std::uint32_t f = range.first; f < range.end && !interrupt_requested(); ++f) {
         frame_record record = player.step();
         const image_rgba8 image = box_downsample(player.capture(), samples);
         record.image_hash = fnv1a(image.texels.data(), image.texels.size());
         write_image(image, frame_path(o, record.frame));
-        std::fprintf(stderr, "\r[sylva] frame %u/%u  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ",
-                     f + 1, s.frames, record.frame_ms, record.cpu_ms, record.gpu_ms,
+        std::fprintf(stderr, "\r[sylva] frame %u (%u/%u)  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ", f,
+                     f - range.first + 1, range.count(), record.frame_ms, record.cpu_ms, record.gpu_ms,
                      static_cast<unsigned long long>(record.triangles));
         frames.push_back(std::move(record));
     }
@@ -54,6 +58,13 @@ int play(const play_options& o) {
     const std::optional<scenario> loaded = load_or_report(o.scenario);
     if (!loaded) return k_exit_bad_input;
     scenario s = *loaded;
+    frame_range range{0, s.frames};
+    try {
+        if (!o.frame_range.empty() || !o.shard.empty()) range = range_asked(o.frame_range, o.shard, s.frames);
+    } catch (const std::invalid_argument& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
+    }
     const std::uint32_t samples = o.reference ? k_reference_samples : 1;
     s.width *= samples;  // the reference renders supersampled and resolves with a box filter
     s.height *= samples;
@@ -72,6 +83,12 @@ int play(const play_options& o) {
         // Every file the scenario names is read here, before the output folder exists: a bad one
         // is bad input (exit 2) with nothing written.
         scenario_player player(s, o.scenario.threads, context.get(), &cache, mode);
+        if (const std::string why = player.unreproducible_reason(); !why.empty() && range.count() != s.frames) {
+            spdlog::error("--frame-range {}: {}, so no two runs of it are equal and a shard cannot equal the whole "
+                          "run; play it whole",
+                          to_string(range), why);
+            return k_exit_bad_input;
+        }
         std::error_code ec;
         std::filesystem::create_directories(o.out_dir, ec);
         if (ec) {
@@ -83,10 +100,21 @@ int play(const play_options& o) {
         info.height /= samples;
         info.mode = o.reference ? "reference" : (o.full_geometry ? "full_geometry" : "lod");
         info.samples_per_pixel = samples * samples;
-        info.frames_planned = s.frames;
+        info.frames_planned = range.count();
+        info.frame_range = {range.first, range.end};
+        info.path_frames = s.frames;
         spdlog::info("{} plants, {} source triangles, set up in {:.0f} ms, {} threads", info.plants,
                      info.source_triangles, info.setup_ms, info.threads);
-        play_frames(player, o, s, samples, frames);
+        if (range.first > 0) {
+            spdlog::info("reaching frame {} (the shard {} of {} frames)", range.first, to_string(range), s.frames);
+            const replay_cost cost = player.replay_to(range.first);
+            info.replay_cpu_frames = cost.cpu_frames;
+            info.replay_rendered_frames = cost.rendered_frames;
+            info.replay_ms = cost.ms;
+            spdlog::info("reached frame {} in {:.0f} ms: {} frames' systems alone, {} rendered", range.first,
+                         cost.ms, cost.cpu_frames, cost.rendered_frames);
+        }
+        play_frames(player, o, range, samples, frames);
         const std::size_t written = frames.size();
         info.partial = interrupt_requested();
         info.interrupted_by = interrupt_signal_name();
@@ -96,7 +124,7 @@ int play(const play_options& o) {
         for (const auto& f : frames) frame_ms.push_back(f.frame_ms);
         if (info.partial) {
             spdlog::warn("interrupted by {}: wrote {} of {} frames and {} (marked partial)",
-                         info.interrupted_by, written, s.frames, metrics.string());
+                         info.interrupted_by, written, range.count(), metrics.string());
             return interrupt_exit_code();
         }
         spdlog::info("wrote {} frames and {} (median frame {:.1f} ms)", written, metrics.string(),
@@ -131,6 +159,16 @@ command_runner add_play_command(CLI::App& app) {
     app.add_flag("--full-geometry", options->full_geometry,
                  "Brute force: every plant at full geometry, one sample per pixel")
         ->excludes(reference);
+    app.add_option("--frame-range", options->frame_range,
+                   "Play only frames FIRST to END - 1 of the camera path (FIRST:END; FIRST: runs to the "
+                   "end), exactly as a whole run plays them: the frames before are replayed without "
+                   "rendering to reach FIRST's state. `sylva merge` joins shards into the whole run's "
+                   "output; `sylva farm` runs them as a Slurm array job")
+        ->type_name("FIRST:END");
+    app.add_option("--shard", options->shard,
+                   "The same as shard K (from 0) of N: N contiguous frame ranges, the first ones a frame "
+                   "longer when N does not divide the path (what `sylva farm`'s array tasks pass)")
+        ->type_name("K/N");
     app.add_flag("--headless", options->headless,
                  "Render offscreen with OSMesa even when a display is available (the default "
                  "without a display)");

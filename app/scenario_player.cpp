@@ -193,6 +193,7 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     const lod_policy policy = player_policy(m_scenario, options);
     m_assets = options.assets ? std::move(*options.assets) : build_scene_assets(m_scenario, cache, needs_of(policy));
     const spawn_report report = spawn_scenario(m_world, m_scenario, m_assets);
+    m_built_meshes = m_assets.meshes.size();
     // Deussen 2002 §6.2: the eco tiles' aggregated point sets (only with points and lines, or a
     // ladder that reaches them).
     const bool tile_sets = (policy.mode == lod_policy::kind::points_lines && policy.tile_sets) ||
@@ -212,6 +213,7 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         camera& cam = m_world.single<camera>();
         cam.full_geometry = true;
         cam.lod_scale = 1e6f;  // no distance is far enough to switch or cull
+        m_full_geometry = true;
     }
     m_world.set_chunk_size(options.chunk_size);
     register_frame_systems(m_schedule);
@@ -253,6 +255,7 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
     m_info.scenario = m_scenario.name;
     m_info.source = m_scenario.source;
     m_info.machine = describe_machine();
+    m_info.host = host_name();
     m_info.threads = m_executor.threads();
     m_info.width = m_scenario.width;
     m_info.height = m_scenario.height;
@@ -266,7 +269,67 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
 
 scenario_player::~scenario_player() = default;
 
+scene_assets scenario_player::assets_as_built() const {
+    scene_assets copy = m_assets;
+    copy.meshes.resize(m_built_meshes);  // setup/point_line_assets.h add_sample_mesh appends to both
+    copy.library.meshes.resize(m_built_meshes);
+    return copy;
+}
+
 void scenario_player::set_frame(std::uint64_t frame) { m_frame = frame; }
+
+std::string scenario_player::unreproducible_reason() const {
+    const rung_budget& ladder = m_world.resource<rung_budget>();
+    if (ladder.active() && ladder.target_frame_ms > 0.0 && !(ladder.max_error > 0.0))
+        return fmt::format("the auto ladder holds a frame-time target (lod.target_frame_ms {:g}), adapting to the "
+                           "device's measured time",
+                           ladder.target_frame_ms);
+    const sample_distance_budget& budget = m_world.resource<sample_distance_budget>();
+    if (m_world.resource<lod_policy>().mode == lod_policy::kind::points_lines && !(budget.primitives > 0.0) &&
+        budget.frame_ms > 0.0)
+        return fmt::format("the points' sample distance holds a frame-time target (lod.target_frame_ms {:g}), "
+                           "adapting to the device's measured time",
+                           budget.frame_ms);
+    return {};
+}
+
+bool scenario_player::replay_renders_every_frame() const { return m_world.resource<seen_pixels>().wanted; }
+
+replay_cost scenario_player::replay_to(std::uint64_t frame, const std::function<bool(std::uint64_t)>& render_frame,
+                                       const std::function<void(const frame_record&, bool)>& after) {
+    if (frame < m_frame)
+        throw std::logic_error("replay_to: frame " + std::to_string(frame) + " is behind the player's " +
+                               std::to_string(m_frame));
+    if (const std::string why = unreproducible_reason(); !why.empty() && frame > 0)
+        throw std::invalid_argument("a shard cannot start at frame " + std::to_string(frame) + ": " + why +
+                                    ", so no two runs of it are equal; play it whole");
+    const auto start = clock_type::now();
+    replay_cost cost;
+    render_device& device = m_world.resource<render_device>();
+    render::renderer* const renderer = device.renderer;
+    // Restored however the loop ends: a player left without its renderer would draw nothing.
+    struct restore {
+        render_device& device;
+        render::renderer* renderer;
+        ~restore() { device.renderer = renderer; }
+    } const restore_renderer{device, renderer};
+    const bool every = replay_renders_every_frame();
+    // Full geometry carries nothing over frames: every plant is its full mesh at any distance
+    // (lod_scale 1e6), so no level, fade, prefix or budget changes; only the frame before is
+    // rendered (tests/app/shard_command_test.cpp compares reference shards with a whole run).
+    if (m_full_geometry && !every && frame > m_frame + 1) m_frame = frame - 1;
+    frame_record record;
+    while (m_frame < frame) {
+        const std::uint64_t f = m_frame;
+        const bool rendered = renderer && (every || f + 1 == frame || (render_frame && render_frame(f)));
+        device.renderer = rendered ? renderer : nullptr;
+        step(record);
+        ++(rendered ? cost.rendered_frames : cost.cpu_frames);
+        if (after) after(record, rendered);
+    }
+    cost.ms = ms_since(start);
+    return cost;
+}
 
 frame_record scenario_player::step() {
     frame_record record;

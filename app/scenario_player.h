@@ -3,7 +3,9 @@
 // phases, and runs one frame per step() on the executor, submitting to the renderer when there
 // is a GL context (without one, the same frame loop runs CPU-only for tests and benchmarks).
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <string>
 
 #include "app/metrics.h"
 #include "ecs/executor.h"
@@ -80,6 +82,13 @@ struct player_options {
 scene_assets build_player_assets(const scenario& s, const player_options& options, bake_cache* cache,
                                  const bake_progress& progress = {});
 
+// What reaching a shard's first frame cost (scenario_player::replay_to; issue 25).
+struct replay_cost {
+    std::uint64_t cpu_frames = 0;       // the frame's systems alone, nothing rendered
+    std::uint64_t rendered_frames = 0;  // rendered too, the image discarded or given to the caller
+    double ms = 0.0;
+};
+
 class scenario_player {
 public:
     // `context` may be null: then nothing is rendered. `threads` 0 means every hardware thread.
@@ -101,6 +110,29 @@ public:
     // Blits the last frame to the window's default framebuffer (view).
     void present(int window_width, int window_height) const;
     void set_frame(std::uint64_t frame);
+
+    // Plays the frames from the current one to `frame` - 1 so that the next step() is `frame` as
+    // a run that played every frame before it plays it, bit for bit (a shard of a run, issue 25).
+    // State that carries over frames (hysteresis, fades, point prefixes, LoDF counters, eco tile
+    // sets) is a function of the frames' systems alone, so those frames run without rendering
+    // (about 1/20 of a rendered frame's cost on the bench scenes), except:
+    //  - the last one is rendered, so the renderer's own carried state (the LoDF commands' mirror,
+    //    hence upload_bytes) is the whole run's, and a caller has the previous image (popping);
+    //  - when the selection reads what the last frame showed (the auto ladder's seen pixels,
+    //    counted in the ID buffer), every frame is rendered: that state is a function of images;
+    //  - with full geometry (the reference) nothing carries over: only the last frame is played;
+    //  - frames for which `render_frame` returns true are rendered (the bench's transition
+    //    windows that began before the shard need the test's colours at their first frame).
+    // `after` is called after every frame with its record and whether it was rendered (the image
+    // is then capture()'s until the next step). Throws std::invalid_argument when a shard cannot
+    // equal the whole run (unreproducible_reason), std::logic_error when `frame` is behind.
+    replay_cost replay_to(std::uint64_t frame, const std::function<bool(std::uint64_t)>& render_frame = {},
+                          const std::function<void(const frame_record&, bool rendered)>& after = {});
+    // Why no shard of this player's run can equal the whole run (the frame-time targets adapt
+    // to the device's measured time, so no two whole runs are equal either); empty when it can.
+    std::string unreproducible_reason() const;
+    // Whether replay_to renders every frame (the selection reads the images).
+    bool replay_renders_every_frame() const;
     std::uint64_t frame() const { return m_frame; }
 
     // FNV-1a over the state the frame's parallel loops write (every plant's LOD state, fade and
@@ -110,6 +142,9 @@ public:
 
     const scenario& settings() const { return m_scenario; }
     const scene_assets& assets() const { return m_assets; }
+    // A copy of the assets as built, before the eco tiles' point sets added their meshes (what
+    // player_options::assets takes for another player of this scenario).
+    scene_assets assets_as_built() const;
     ecs::world& world() { return m_world; }
     const ecs::schedule& schedule() const { return m_schedule; }
     run_info info() const { return m_info; }
@@ -130,6 +165,8 @@ private:
     std::unique_ptr<render::renderer> m_renderer;
     run_info m_info;
     std::uint64_t m_frame = 0;
+    std::size_t m_built_meshes = 0;  // meshes before the eco tiles' point sets
+    bool m_full_geometry = false;    // geometry_mode::full: nothing carries over frames
 };
 
 // FNV-1a 64 over bytes (image and state hashes).
