@@ -13,6 +13,7 @@
 #include "app/bench_runner.h"
 #include "app/bench_verdict.h"
 #include "app/commands.h"
+#include "app/frame_range.h"
 #include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "scenarios/scenario_loader.h"
@@ -27,6 +28,8 @@ struct bench_options {
     bool list = false;
     bool save_frames = false;
     std::uint32_t timing_rounds = 1;
+    std::string frame_range;  // "A:B": a shard (app/frame_range.h)
+    std::string shard;        // "K/N": the same, as shard K of N
 };
 
 // Frames and size a bench plays unless told otherwise: a quarter of the scenario's pixels
@@ -93,6 +96,13 @@ int bench(const bench_options& o) {
     const std::optional<scenario> loaded = load_or_report(so);
     if (!loaded) return k_exit_bad_input;
     const scenario& s = *loaded;
+    std::optional<frame_range> range;
+    try {
+        if (!o.frame_range.empty() || !o.shard.empty()) range = range_asked(o.frame_range, o.shard, s.frames);
+    } catch (const std::invalid_argument& e) {
+        spdlog::error("{}", e.what());
+        return k_exit_bad_input;
+    }
     // The representation options ask for one more configuration: what `play` draws with them.
     std::vector<std::string> only = o.only;
     // Configurations that would draw what another does on this scenario are left out unless named.
@@ -132,6 +142,7 @@ int bench(const bench_options& o) {
         settings.only = only;
         if (o.save_frames) settings.frames_dir = std::filesystem::path(o.out_dir) / "frames";
         settings.timing_rounds = o.timing_rounds;
+        settings.range = range;
         settings.progress = [&](const bench_progress& p) { print_progress(specs, only, p); };
         settings.stop = interrupt_requested;
         const auto start = std::chrono::steady_clock::now();
@@ -182,6 +193,16 @@ command_runner add_bench_command(CLI::App& app) {
            "a noisy machine to compare times")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1000u));
+    app.add_option("--frame-range", options->frame_range,
+                   "Measure only frames FIRST to END - 1 of the camera path (FIRST:END), exactly as the whole "
+                   "bench measures them (every player replays the frames before; the reference's are "
+                   "rendered where a transition began); bench.json keeps per-frame records, and `sylva "
+                   "merge` joins shards into the whole bench's outputs")
+        ->type_name("FIRST:END");
+    app.add_option("--shard", options->shard,
+                   "The same as shard K (from 0) of N: N contiguous frame ranges, the first ones a frame "
+                   "longer when N does not divide the path (what `sylva farm`'s array tasks pass)")
+        ->type_name("K/N");
     app.add_flag("--list", options->list, "List the configurations and exit");
     app.add_flag("--save-frames", options->save_frames,
                  "Also write every configuration's frames as DIR/frames/<configuration>/frame_NNNN.png");

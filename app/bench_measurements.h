@@ -28,55 +28,68 @@ constexpr double k_bench_flip_pixels_per_degree = 67.0;
 // pixels are mostly edges, whose colour is the background's as much as the plant's.
 constexpr std::uint32_t k_lighting_jump_min_pixels = 12;
 
-// What the configurations of one lighting family are compared against, one entry per frame.
+// What the configurations of one lighting family are compared against, indexed by frame of the
+// path: images and masks of the frames played (and of the frame before a shard's first, for
+// popping), colours also of the frames a shard's transitions began in (empty elsewhere).
 struct reference_frames {
     std::vector<image_rgba8> images;
     std::vector<std::vector<std::uint8_t>> masks;
     std::vector<plant_colors> colors;
-    std::vector<double> frame_ms;
+    std::vector<double> frame_ms;  // of the frames played, in order
 
-    // Frame `image` (resolved to the output size) with its plant IDs at the same size.
-    void add_frame(double frame_ms, image_rgba8 image, const std::vector<std::uint32_t>& ids);
+    // Frame `frame` (resolved to the output size) with its plant IDs at the same size.
+    void add_frame(std::uint32_t frame, image_rgba8 image, const std::vector<std::uint32_t>& ids);
+    // Only its colours (a transition's first frame before a shard).
+    void add_colors(std::uint32_t frame, const image_rgba8& image, const std::vector<std::uint32_t>& ids);
 };
 
 // Round 0 of one configuration (bench_settings::timing_rounds), frame by frame.
 class configuration_measurements {
 public:
-    // `plants`: the scenario's plant count (the transition finder follows each).
-    explicit configuration_measurements(std::size_t plants);
+    // `plants`: the scenario's plant count (the transition finder follows each). `played`: the
+    // frames measured, [first, end) of the path; the transitions kept are those ending there.
+    configuration_measurements(std::size_t plants, std::uint32_t first, std::uint32_t end, std::uint32_t path_frames);
+
+    // A frame before the first played (a shard's replay, in order from frame 0): what each
+    // plant was drawn as, and when it was rendered its image and plant IDs (the frame before
+    // the first is the popping's previous frame; others are transitions' first frames).
+    void add_replayed_frame(std::uint32_t frame, const ecs::world& world, const image_rgba8* image,
+                            const std::vector<std::uint32_t>* ids);
+    // The frames whose colours the transitions still open after the replay began in (a shard
+    // needs the reference's colours there too).
+    std::vector<std::uint32_t> open_transition_starts() const { return m_transitions.open_from_frames(); }
 
     // Frame `frame` as played: `record` from the player, what each plant of `world` was drawn
     // as, and the resolved `image` and plant `ids` compared with the reference's frame.
     void add_frame(std::uint32_t frame, const frame_record& record, const ecs::world& world,
                    image_rgba8 image, const std::vector<std::uint32_t>& ids, const reference_frames& ref);
 
-    // Fills `out`'s frame count, times, medians, errors and transitions from the frames added.
-    void summarize(bench_configuration& out, const reference_frames& ref) const;
-
-    const std::vector<double>& frame_ms() const { return m_frame_ms; }
+    // Moves the frame records into `out` and measures the transitions that ended in the frames
+    // played against `ref` (which must hold the colours of their first frames), then fills its
+    // figures (summarize_records).
+    void summarize(bench_configuration& out, const reference_frames& ref);
 
 private:
-    // Per-frame error sums.
-    double m_squared_error = 0.0;  // sum over frames of rmse^2 (every frame has the same pixels)
-    double m_ssim = 0.0;
-    double m_perceptual = 0.0;
-    double m_coverage_iou = 0.0;
-    double m_popping = 0.0;
-    std::uint32_t m_popping_frames = 0;
-
-    std::vector<double> m_frame_ms;
-    std::vector<double> m_upload;
-    std::vector<std::map<std::string, double>> m_cpu, m_gpu, m_primitives;
+    std::uint32_t m_first, m_end, m_path_frames;
+    std::vector<bench_frame> m_records;
     image_rgba8 m_previous_image;
-    std::vector<plant_colors> m_colors;
+    std::vector<plant_colors> m_colors;  // by frame of the path
     std::vector<drawn_mix> m_mixes;
     transition_finder m_transitions;
 };
 
-// Folds the later timing rounds into `c`: medians, extremes and round medians over every
-// round's frames (round 0's are `c`'s own).
-void add_timing_rounds(bench_configuration& c, std::vector<double> round0_frame_ms,
-                       const std::vector<std::vector<double>>& later_rounds);
+// Fills a configuration's figures (frame times and their medians, errors, transitions) from
+// its records: a whole bench, a shard and a merge of shards all compute them here, in frame
+// order, so a merged report equals the whole bench bit for bit (timings apart).
+void summarize_records(bench_configuration& c);
+
+// Ratios to the baseline of each configuration's lighting family, round by round, for
+// configurations timed in as many rounds as it (not the reference: its one round says nothing
+// about drift).
+void add_baseline_ratios(bench_report& report);
+
+// Adds a later timing round's frame times (in frame order) to `c`'s records.
+void add_timing_round(bench_configuration& c, const std::vector<double>& frame_ms);
 
 // Primitive costs as the report keys them: triangle, point, line.
 std::map<std::string, double> cost_map(const primitive_costs& costs);

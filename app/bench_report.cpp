@@ -59,6 +59,52 @@ ordered_json transitions_json(const bench_error& e) {
             {"cut_off_by_path", e.transitions_cut_off}};
 }
 
+// Records keep every digit (nlohmann writes the shortest text that reads back as the same
+// double): a merge recomputes the figures from them bit for bit. NaN is null.
+ordered_json exact(double v) { return std::isnan(v) ? ordered_json(nullptr) : ordered_json(v); }
+
+ordered_json exact_map(const std::map<std::string, double>& values) {
+    ordered_json j = ordered_json::object();
+    for (const auto& [key, v] : values) j[key] = exact(v);
+    return j;
+}
+
+ordered_json records_json(const bench_configuration& c) {
+    ordered_json frames = ordered_json::array();
+    for (const bench_frame& f : c.frame_records) {
+        ordered_json ms = ordered_json::array();
+        for (const double v : f.frame_ms) ms.push_back(exact(v));
+        frames.push_back({{"frame", f.frame},
+                          {"frame_ms", ms},
+                          {"rmse", exact(f.rmse)},
+                          {"ssim", exact(f.ssim)},
+                          {"perceptual", exact(f.perceptual)},
+                          {"coverage_iou", exact(f.coverage_iou)},
+                          {"popping", exact(f.popping)},
+                          {"upload_bytes", exact(f.upload_bytes)},
+                          {"cpu_ms", exact_map(f.cpu_ms)},
+                          {"gpu_ms", exact_map(f.gpu_ms)},
+                          {"primitives", exact_map(f.primitives)}});
+    }
+    ordered_json transitions = ordered_json::array();
+    for (const bench_transition& t : c.transition_records)
+        transitions.push_back({{"first_plant", t.first_plant},
+                               {"plant_count", t.plant_count},
+                               {"from_frame", t.from_frame},
+                               {"to_frame", t.to_frame},
+                               {"kind", t.kind},
+                               {"jump", exact(t.jump)}});
+    return {{"frames", frames}, {"transitions", transitions}, {"transitions_cut_off", c.transitions_cut_off}};
+}
+
+ordered_json shard_json(const bench_shard& shard) {
+    return {{"frame_range", {shard.first, shard.end}},
+            {"host", shard.host},
+            {"machine", shard.machine},
+            {"threads", shard.threads},
+            {"replay_ms", exact(shard.replay_ms)}};
+}
+
 ordered_json configuration_json(const bench_configuration& c, bool on_front) {
     const bench_error& e = c.error;
     return {{"name", c.name},
@@ -72,7 +118,8 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
               {"min", number(c.frame_ms_min)},
               {"max", number(c.frame_ms_max)},
               {"round_medians", rounded_list(c.frame_ms_rounds)},
-              {"vs_baseline", number(c.frame_ms_vs_baseline)}}},
+              {"vs_baseline", number(c.frame_ms_vs_baseline)},
+              {"vs_baseline_by_host", numbers(c.frame_ms_vs_baseline_by_host)}}},
             {"cpu_ms", numbers(c.cpu_ms)},
             {"gpu_ms", numbers(c.gpu_ms)},
             {"primitives", numbers(c.primitives)},
@@ -88,7 +135,8 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
               {"lighting_jump", number(e.lighting_jump)},
               {"rmse", number(e.rmse)},
               {"transitions", transitions_json(e)}}},
-            {"on_pareto_front", on_front}};
+            {"on_pareto_front", on_front},
+            {"records", records_json(c)}};
 }
 
 ordered_json verdicts_json(const bench_report& report) {
@@ -341,7 +389,12 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
     for (const bench_lighting_family& f : report.lighting_families)
         families.push_back({{"name", f.name},
                             {"reference_lit", f.description},
-                            {"reference_frame_ms_median", number(f.reference_frame_ms_median)}});
+                            {"reference_frame_ms_median", number(f.reference_frame_ms_median)},
+                            {"reference_frame_ms", [&] {
+                                 ordered_json ms = ordered_json::array();
+                                 for (const double v : f.reference_frame_ms) ms.push_back(exact(v));
+                                 return ms;
+                             }()}});
     const ordered_json root = {{"scenario", report.scenario},
                                {"source", report.source},
                                {"machine", report.machine},
@@ -356,7 +409,14 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"primitive_costs", report.primitive_costs},
                                {"configurations", configurations},
                                {"verdicts", verdicts_json(report)},
-                               {"partial", report.partial}};
+                               {"partial", report.partial},
+                               {"path_frames", report.path_frames},
+                               {"shard", shard_json(report.range)},
+                               {"shards", [&] {
+                                    ordered_json shards = ordered_json::array();
+                                    for (const bench_shard& shard : report.shards) shards.push_back(shard_json(shard));
+                                    return shards;
+                                }()}};
     write_atomically(path, root.dump(2) + "\n");
 }
 

@@ -38,6 +38,31 @@ struct bench_error {
     std::uint64_t transitions_cut_off = 0;
 };
 
+// One frame of a configuration as measured: what a sharded bench's figures are recomputed from
+// (`sylva merge`, app/shard_merge.h), so a merged report is the whole bench's.
+struct bench_frame {
+    std::uint32_t frame = 0;
+    std::vector<double> frame_ms;  // one per timing round, round 0 first
+    double rmse = 0.0;             // of this frame against its reference
+    double ssim = 0.0;
+    double perceptual = 0.0;
+    double coverage_iou = 0.0;
+    double popping = std::numeric_limits<double>::quiet_NaN();  // NaN at the path's frame 0
+    double upload_bytes = 0.0;
+    std::map<std::string, double> cpu_ms, gpu_ms, primitives;  // as bench_configuration keys them
+};
+
+// One complete transition window (measure/transition_windows.h), kept by the run (or shard)
+// that played its last frame.
+struct bench_transition {
+    std::uint32_t first_plant = 0;
+    std::uint32_t plant_count = 1;
+    std::uint32_t from_frame = 0;
+    std::uint32_t to_frame = 0;
+    std::string kind;  // transition_kind()
+    double jump = std::numeric_limits<double>::quiet_NaN();  // NaN: too few pixels to measure
+};
+
 struct bench_configuration {
     std::string name;         // unique, e.g. "brute_force", "baseline", "mesh_lod", "lod_scale_0.5"
     std::string family;       // what the configuration varies: "brute_force", "baseline", ...
@@ -64,6 +89,15 @@ struct bench_configuration {
     // point, line; systems/render/primitive_cost_calibration.h), for its own d'; empty otherwise.
     std::map<std::string, double> primitive_costs;
     bench_error error;
+    // What the figures above come from (summarize_records): every frame, every complete
+    // transition whose last frame was played, and the windows the path cut off (began before
+    // frame 0, ended in the frames played; or still open at the path's end).
+    std::vector<bench_frame> frame_records;
+    std::vector<bench_transition> transition_records;
+    std::uint64_t transitions_cut_off = 0;
+    // Merged from shards timed on several hosts: the time ratio to the baseline per host, from
+    // that host's frames alone (frame_ms_vs_baseline is then NaN: no ratio across machines).
+    std::map<std::string, double> frame_ms_vs_baseline_by_host;
 };
 
 // Configurations are compared only with others measured against the same reference: one lit as
@@ -73,6 +107,17 @@ struct bench_lighting_family {
     std::string name;         // "normal" (normal-mapped and pre-lit), "sh", or "scenario" (mixed)
     std::string description;  // what its reference is lit by
     double reference_frame_ms_median = 0.0;
+    std::vector<double> reference_frame_ms;  // per frame played
+};
+
+// A shard of a bench (`--frame-range`), or one of the shards a merged report joins.
+struct bench_shard {
+    std::uint32_t first = 0;  // frames [first, end) of the path
+    std::uint32_t end = 0;
+    std::string host;
+    std::string machine;
+    int threads = 0;
+    double replay_ms = 0.0;  // reaching the first frame, over every player of the shard
 };
 
 struct bench_report {
@@ -94,7 +139,15 @@ struct bench_report {
     // Stopped early (bench_settings::stop, an interrupt): configurations may be missing or have
     // fewer frames than `frames`.
     bool partial = false;
+    // The frames of the path this report holds: [0, frames) for a whole bench; a shard's own.
+    bench_shard range;
+    std::uint32_t path_frames = 0;
+    std::vector<bench_shard> shards;  // a merged report's shards, in frame order; empty otherwise
 };
+
+// Reads what write_bench_json wrote, with its records (sylva merge). Throws std::runtime_error
+// naming the path and the field.
+bench_report read_bench_json(const std::filesystem::path& path);
 
 // Indices of the configurations on the Pareto front of (median frame ms, error), both
 // minimised: no other configuration is at least as good in both and better in one. Sorted by

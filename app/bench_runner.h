@@ -13,6 +13,7 @@
 
 #include "app/bench_catalogue.h"
 #include "app/bench_report.h"
+#include "app/frame_range.h"
 #include "app/scenario_player.h"
 #include "models/cache/bake_cache.h"
 #include "scenarios/scenario.h"
@@ -54,6 +55,10 @@ struct bench_settings {
     // (scenario_player: from the cache, measured on first use), as `sylva play` with the same
     // options does, so its errors do not depend on which other configurations run with it.
     std::optional<primitive_costs> costs;
+    // A shard (issue 25): only frames [first, end) of the path are measured, exactly as the
+    // whole bench measures them (each player replays the frames before, scenario_player::
+    // replay_to); `sylva merge` joins shards. Unset: every frame.
+    std::optional<frame_range> range;
 };
 
 // Plays `s.frames` frames of `s` per configuration. Throws std::invalid_argument for an unknown

@@ -49,6 +49,7 @@ void transition_finder::add_frame(std::span<const drawn_mix> mixes) {
             if (w.hidden) continue;  // entering or leaving the view is not a transition
             if (!w.seen_from_start) {
                 ++m_incomplete;
+                m_incomplete_seen.push_back(t);
                 continue;
             }
             if (w.from == before) {
@@ -73,6 +74,20 @@ void transition_finder::add_frame(std::span<const drawn_mix> mixes) {
 std::uint64_t transition_finder::open_at_end() const {
     return std::uint64_t(std::count_if(m_open.begin(), m_open.end(),
                                        [](const open_window& w) { return w.open && !w.hidden; }));
+}
+
+std::uint64_t transition_finder::cut_off_at_start_ending_in(std::uint32_t first, std::uint32_t end) const {
+    return std::uint64_t(std::count_if(m_incomplete_seen.begin(), m_incomplete_seen.end(),
+                                       [&](std::uint32_t t) { return t >= first && t < end; }));
+}
+
+std::vector<std::uint32_t> transition_finder::open_from_frames() const {
+    std::vector<std::uint32_t> frames;
+    for (const open_window& w : m_open)
+        if (w.open && !w.hidden && w.seen_from_start) frames.push_back(w.from_frame);
+    std::sort(frames.begin(), frames.end());
+    frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+    return frames;
 }
 
 std::vector<transition_window> transition_finder::complete_windows() const {

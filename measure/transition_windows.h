@@ -78,6 +78,16 @@ public:
     std::vector<transition_window> complete_windows() const;
     // Windows the path cut off at either end; windows that ended as they began.
     std::uint64_t incomplete_windows() const { return m_incomplete + open_at_end(); }
+    // Of a shard of the path (issue 25): a window belongs to the frames in which its end was
+    // seen, the first unchanged frame after it (to_frame + 1), so shards [a, b) and [b, c) fed
+    // every frame from 0 to their last split the whole path's windows between them exactly.
+    // The windows cut off at the path's start whose end was seen in [first, end).
+    std::uint64_t cut_off_at_start_ending_in(std::uint32_t first, std::uint32_t end) const;
+    // Windows open now: counted as cut off by the shard that holds the path's last frame.
+    std::uint64_t open_windows() const { return open_at_end(); }
+    // The first frames (from_frame) of the windows open now that may still be measured, sorted,
+    // once each: a shard starting at the next frame needs the colours of those frames.
+    std::vector<std::uint32_t> open_from_frames() const;
     std::uint64_t returned_windows() const { return m_returned; }
 
 private:
@@ -99,6 +109,7 @@ private:
     std::vector<transition_window> m_complete;
     std::uint32_t m_frames = 0;
     std::uint64_t m_incomplete = 0;
+    std::vector<std::uint32_t> m_incomplete_seen;  // the frame each of them was seen to end
     std::uint64_t m_returned = 0;
 };
 

@@ -85,7 +85,7 @@ bench_report fixture() {
     r.height = 360;
     r.frames = 120;
     r.reference_samples_per_pixel = 9;
-    r.lighting_families = {{"normal", "every species lit by its normals", 500}};
+    r.lighting_families = {{"normal", "every species lit by its normals", 500, {}}};
 
     bench_configuration brute =
         configuration("brute_force", "brute_force", 50, 48, 55, 0.020, 0.990);
@@ -500,7 +500,7 @@ TEST(bench_report_summary, timing_rounds_judge_similar_time_by_the_round_ratios)
 // normal family off its front, win none of its sentences, and beat none of its baselines.
 bench_report with_sh_family() {
     bench_report r = fixture();
-    r.lighting_families.push_back({"sh", "every species lit by SH transfer", 800});
+    r.lighting_families.push_back({"sh", "every species lit by SH transfer", 800, {}});
     bench_configuration brute = configuration("brute_force_sh", "brute_force", 60, 58, 62, 0.004, 0.999);
     brute.lighting = "sh";
     r.configurations.push_back(brute);
@@ -557,7 +557,7 @@ TEST(bench_report_lighting_families, fronts_tables_and_sentences_never_mix_refer
 
 TEST(bench_report_verdict, a_sweep_beats_a_baseline_point_only_when_as_fast_and_no_worse_in_ssim_and_flip) {
     bench_report r;
-    r.lighting_families = {{"normal", "", 100}};
+    r.lighting_families = {{"normal", "", 100, {}}};
     auto add = [&](const std::string& name, const std::string& family, double quality, std::vector<double> rounds,
                    double ssim, double flip) {
         bench_configuration c = configuration(name, family, rounds[0], rounds[0], rounds[0], flip, ssim);

@@ -73,6 +73,34 @@ TEST(transition_finder, windows_the_path_cuts_off_are_incomplete) {
     EXPECT_EQ(open.incomplete_windows(), 1u);
 }
 
+// Issue 25: a shard [first, end) keeps the windows whose end it saw (the first unchanged frame,
+// to_frame + 1), so shards split the whole path's windows exactly, whatever the boundaries.
+TEST(transition_finder, shards_split_the_windows_by_the_frame_that_shows_their_end) {
+    // Frames 0..9: a switch seen ending at frame 4 (window 2..3) and a fade 5..8 seen ending at
+    // frame 9 (window 5..8, from 5 since frame 6 is the first change).
+    const std::vector<drawn_mix> path = {whole(k_a), whole(k_a), whole(k_a), whole(k_b), whole(k_b),
+                                         whole(k_b), fading(k_b, k_a, 0.3f), fading(k_b, k_a, 0.6f),
+                                         whole(k_a), whole(k_a)};
+    const auto whole_path = one_plant(path).complete_windows();
+    ASSERT_EQ(whole_path.size(), 2u);
+    EXPECT_EQ(whole_path[0].to_frame, 3u);
+    EXPECT_EQ(whole_path[1].from_frame, 5u);
+    EXPECT_EQ(whole_path[1].to_frame, 8u);
+    // Shard [4, 7) fed frames 0..6: it owns the switch (end seen at 4), not the fade (open).
+    const auto shard = one_plant(std::vector<drawn_mix>(path.begin(), path.begin() + 7));
+    std::vector<std::uint32_t> owned;
+    for (const auto& w : shard.complete_windows())
+        if (w.to_frame + 1 >= 4 && w.to_frame + 1 < 7) owned.push_back(w.to_frame);
+    EXPECT_EQ(owned, std::vector<std::uint32_t>{3u});
+    // The fade is open after frame 6, begun at frame 5: the next shard needs frame 5's colours.
+    EXPECT_EQ(shard.open_from_frames(), std::vector<std::uint32_t>{5u});
+    EXPECT_EQ(shard.open_windows(), 1u);
+    // A window cut off at the path's start counts in the shard that saw it end.
+    const auto cut = one_plant({whole(k_a), whole(k_b), whole(k_b), whole(k_b)});
+    EXPECT_EQ(cut.cut_off_at_start_ending_in(0, 2), 0u);
+    EXPECT_EQ(cut.cut_off_at_start_ending_in(2, 4), 1u);
+}
+
 TEST(transition_finder, a_band_left_the_way_it_was_entered_is_no_transition) {
     const auto finder =
         one_plant({whole(k_a), whole(k_a), fading(k_a, k_b, 0.3f), whole(k_a), whole(k_a)});
