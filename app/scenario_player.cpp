@@ -314,9 +314,12 @@ replay_cost scenario_player::replay_to(std::uint64_t frame, const std::function<
         ~restore() { device.renderer = renderer; }
     } const restore_renderer{device, renderer};
     const bool every = replay_renders_every_frame();
-    // Full geometry carries nothing over frames: every plant is its full mesh at any distance
-    // (lod_scale 1e6), so no level, fade, prefix or budget changes; only the frame before is
-    // rendered (tests/app/shard_command_test.cpp compares reference shards with a whole run).
+    // Full geometry carries nothing over frames but the frame before's: every plant is its full
+    // mesh at any distance (lod_scale 1e6), so no level, fade, prefix or budget changes. The frame
+    // before is still played, rendered: each plant's previous level and the renderer's buffers
+    // (their first frame uploads more) are in the frame's record (without it the images are the
+    // same, the state hash and upload bytes of a shard's first frame are not).
+    // tests/app/shard_command_test.cpp compares reference shards with a whole reference.
     if (m_full_geometry && !every && frame > m_frame + 1) m_frame = frame - 1;
     frame_record record;
     while (m_frame < frame) {

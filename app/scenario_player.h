@@ -120,7 +120,8 @@ public:
     //    hence upload_bytes) is the whole run's, and a caller has the previous image (popping);
     //  - when the selection reads what the last frame showed (the auto ladder's seen pixels,
     //    counted in the ID buffer), every frame is rendered: that state is a function of images;
-    //  - with full geometry (the reference) nothing carries over: only the last frame is played;
+    //  - with full geometry (the reference) nothing carries over but the frame before's: only
+    //    the last frame is played;
     //  - frames for which `render_frame` returns true are rendered (the bench's transition
     //    windows that began before the shard need the test's colours at their first frame).
     // `after` is called after every frame with its record and whether it was rendered (the image
