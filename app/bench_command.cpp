@@ -14,6 +14,7 @@
 #include "app/bench_verdict.h"
 #include "app/commands.h"
 #include "app/frame_range.h"
+#include "app/run_options.h"
 #include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "scenarios/scenario_loader.h"
@@ -146,7 +147,8 @@ int bench(const bench_options& o) {
         settings.progress = [&](const bench_progress& p) { print_progress(specs, only, p); };
         settings.stop = interrupt_requested;
         const auto start = std::chrono::steady_clock::now();
-        const bench_report report = run_bench(s, specs, *context, &cache, settings);
+        bench_report report = run_bench(s, specs, *context, &cache, settings);
+        report.options = run_options();
         const std::filesystem::path dir(o.out_dir);
         write_bench_json(dir / "bench.json", report);
         write_bench_csv(dir / "bench.csv", report);

@@ -55,6 +55,7 @@ struct reader {
         c.quality = number(at(j, "quality", where));
         c.peak_memory_mb = number(at(j, "peak_memory_mb", where));
         c.primitive_costs = numbers(at(j, "primitive_costs", where));
+        c.selection_inputs_hash = at(j, "selection_inputs_hash", where).get<std::uint64_t>();
         // The figures themselves are recomputed from the records (summarize_records), but the
         // time ratios need the other configurations: read as written.
         const nlohmann::json& times = at(j, "frame_ms", where);
@@ -138,6 +139,7 @@ bench_report read_bench_json(const std::filesystem::path& path) {
                 r.configuration(configurations[i], "$.configurations[" + std::to_string(i) + "]"));
         report.partial = r.at(root, "partial", "$").get<bool>();
         report.path_frames = r.at(root, "path_frames", "$").get<std::uint32_t>();
+        report.options = r.at(root, "options", "$").get<std::vector<std::string>>();
         report.range = r.shard(r.at(root, "shard", "$"), "$.shard");
         const nlohmann::json& shards = r.at(root, "shards", "$");
         for (std::size_t i = 0; i < shards.size(); ++i)

@@ -136,6 +136,7 @@ ordered_json configuration_json(const bench_configuration& c, bool on_front) {
               {"rmse", number(e.rmse)},
               {"transitions", transitions_json(e)}}},
             {"on_pareto_front", on_front},
+            {"selection_inputs_hash", c.selection_inputs_hash},
             {"records", records_json(c)}};
 }
 
@@ -411,6 +412,7 @@ void write_bench_json(const std::filesystem::path& path, const bench_report& rep
                                {"verdicts", verdicts_json(report)},
                                {"partial", report.partial},
                                {"path_frames", report.path_frames},
+                               {"options", report.options},
                                {"shard", shard_json(report.range)},
                                {"shards", [&] {
                                     ordered_json shards = ordered_json::array();

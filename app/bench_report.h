@@ -53,7 +53,7 @@ struct bench_frame {
 };
 
 // One complete transition window (measure/transition_windows.h), kept by the run (or shard)
-// that played its last frame.
+// that played the frame that showed its end: the first unchanged frame after it, to_frame + 1.
 struct bench_transition {
     std::uint32_t first_plant = 0;
     std::uint32_t plant_count = 1;
@@ -90,11 +90,14 @@ struct bench_configuration {
     std::map<std::string, double> primitive_costs;
     bench_error error;
     // What the figures above come from (summarize_records): every frame, every complete
-    // transition whose last frame was played, and the windows the path cut off (began before
-    // frame 0, ended in the frames played; or still open at the path's end).
+    // transition whose end was seen in the frames played (to_frame + 1 among them), and the
+    // windows the path cut off (began before frame 0, seen to end in the frames played; or
+    // still open at the path's end).
     std::vector<bench_frame> frame_records;
     std::vector<bench_transition> transition_records;
     std::uint64_t transitions_cut_off = 0;
+    // scenario_player::selection_inputs_hash of its player: shards must select alike to merge.
+    std::uint64_t selection_inputs_hash = 0;
     // Merged from shards timed on several hosts: the time ratio to the baseline per host, from
     // that host's frames alone (frame_ms_vs_baseline is then NaN: no ratio across machines).
     std::map<std::string, double> frame_ms_vs_baseline_by_host;
@@ -143,6 +146,7 @@ struct bench_report {
     bench_shard range;
     std::uint32_t path_frames = 0;
     std::vector<bench_shard> shards;  // a merged report's shards, in frame order; empty otherwise
+    std::vector<std::string> options;  // the command's options but a shard's own (app/run_options.h)
 };
 
 // Reads what write_bench_json wrote, with its records (sylva merge). Throws std::runtime_error

@@ -91,8 +91,8 @@ resolved_frame resolve(const bench_run& run, scenario_player& player, std::uint3
 
 // The reference of lighting family `family` for the frames measured, and for a shard the frame
 // before them (popping compares each frame with the one before). Full geometry carries no state
-// over frames (every plant drawn whole, no selection, fades or budgets), so a shard's reference
-// starts where it is asked to without replaying (scenario_player::replay_to).
+// over frames but the frame before's (every plant drawn whole, no selection, fades or budgets),
+// so a shard's reference plays only that frame before its own (scenario_player::replay_to).
 reference_frames render_reference(const bench_run& run, const std::string& family, double& replay_ms) {
     const bench_configuration_spec spec = reference_configuration(run.s, family);
     scenario_player player = make_player(run, spec);
@@ -165,8 +165,9 @@ std::vector<std::uint32_t> plan_replay(const bench_run& run, const bench_configu
     warm_up(planner);
     configuration_measurements found(planner.world().table<lod_state>().size(), run.range.first, run.range.end,
                                      run.s.frames);
+    state_hashes.assign(run.range.first, 0);
     planner.replay_to(run.range.first, {}, [&](const frame_record& record, bool) {
-        state_hashes.push_back(record.state_hash);
+        state_hashes[record.frame] = record.state_hash;
         found.add_replayed_frame(std::uint32_t(record.frame), planner.world(), nullptr, nullptr);
     });
     return found.open_transition_starts();
@@ -181,6 +182,7 @@ configuration_measurements run_configuration(const bench_run& run, const bench_c
     reset_peak_resident();
     scenario_player player = make_player(run, spec);
     if (spec.options.policy.uses_point_lines()) out.primitive_costs = cost_map(player.costs());
+    out.selection_inputs_hash = player.selection_inputs_hash();
     warm_up(player);
     out.name = spec.name;
     out.family = spec.family;
@@ -193,13 +195,16 @@ configuration_measurements run_configuration(const bench_run& run, const bench_c
     if (run.range.first > 0) {
         std::vector<std::uint64_t> planned_hashes;
         std::vector<std::uint32_t> starts;
-        if (!player.replay_renders_every_frame()) starts = plan_replay(run, spec, player, planned_hashes);
+        // Nothing to plan where the replay renders every frame (the auto ladder) or carries nothing
+        // over (full geometry: the reference's replay check).
+        if (!player.replay_renders_every_frame() && spec.options.geometry != geometry_mode::full)
+            starts = plan_replay(run, spec, player, planned_hashes);
         const auto render_frame = [&](std::uint64_t f) {
             return std::binary_search(starts.begin(), starts.end(), std::uint32_t(f));
         };
         replay_ms += player.replay_to(run.range.first, render_frame, [&](const frame_record& record, bool rendered) {
             const auto f = std::uint32_t(record.frame);
-            if (f < planned_hashes.size() && planned_hashes[f] != record.state_hash)
+            if (f < planned_hashes.size() && planned_hashes[f] != 0 && planned_hashes[f] != record.state_hash)
                 throw std::logic_error("bench shard: configuration " + spec.name + " replayed without GL differs at frame " +
                                        std::to_string(f) + " from its replay with GL");
             if (!rendered) return measured.add_replayed_frame(f, player.world(), nullptr, nullptr);
@@ -256,6 +261,17 @@ bench_report run_bench(const scenario& s, const std::vector<bench_configuration_
     report.frames = range.count();
     report.path_frames = s.frames;
     report.range = {range.first, range.end, host_name(), report.machine, report.threads, 0.0};
+    if (range.count() != s.frames)
+        for (const bench_configuration_spec* spec : selected) {
+            const player_options& o = spec->options;
+            const bool timed_ladder = o.target_frame_ms > 0.0 && !(o.max_error > 0.0);
+            const bool timed_points = o.policy.uses_point_lines() && o.budget.frame_ms > 0.0 && !(o.budget.primitives > 0.0);
+            if (timed_ladder || timed_points)
+                throw std::invalid_argument("bench frames " + to_string(range) + ": configuration " + spec->name +
+                                            " holds a frame-time target, adapting to the device's measured time, so "
+                                            "no two runs of it are equal and no shard can equal the whole bench; "
+                                            "leave it out (--only) or bench it whole");
+        }
     const bench_run run{s, context, cache, settings, selected.size(), range};
 
     // Round 0: each lighting family's reference when its first configuration needs it, then

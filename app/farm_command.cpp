@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -50,8 +51,12 @@ int farm(farm_options o) {
     // written or submitted.
     scenario_options so;
     so.path = plan.scenario;
-    for (std::size_t i = 0; i + 1 < plan.options.size(); ++i)
-        if (plan.options[i] == "--frames") so.frames = std::uint32_t(std::strtoul(plan.options[i + 1].c_str(), nullptr, 10));
+    for (std::size_t i = 0; i < plan.options.size(); ++i) {
+        const std::string& option = plan.options[i];
+        if (option == "--frames" && i + 1 < plan.options.size())
+            so.frames = std::uint32_t(std::strtoul(plan.options[i + 1].c_str(), nullptr, 10));
+        if (option.rfind("--frames=", 0) == 0) so.frames = std::uint32_t(std::strtoul(option.c_str() + 9, nullptr, 10));
+    }
     const std::optional<scenario> loaded = load_or_report(so);
     if (!loaded) return k_exit_bad_input;
     try {
@@ -61,10 +66,18 @@ int farm(farm_options o) {
         return k_exit_bad_input;
     }
     for (const std::string& option : plan.options)
-        if (option == "--frame-range" || option == "--shard" || option == "--out" || option == "--threads") {
-            spdlog::error("farm: {} is the farm's to set for each task (--cpus-per-task sets --threads)", option);
+        if (option == "--target-frame-ms" || option.rfind("--target-frame-ms=", 0) == 0) {
+            spdlog::error("farm: {} adapts to each node's measured time: no shard of such a run equals the whole, so "
+                          "it cannot be farmed (a --plant-budget-ms or --max-error run can)",
+                          option);
             return k_exit_bad_input;
         }
+    for (const std::string& option : plan.options)
+        for (const char* own : {"--frame-range", "--shard", "--out", "--threads"})
+            if (option == own || option.rfind(std::string(own) + "=", 0) == 0) {
+                spdlog::error("farm: {} is the farm's to set for each task (--cpus-per-task sets --threads)", option);
+                return k_exit_bad_input;
+            }
     plan.out = std::filesystem::absolute(o.out_dir);
     plan.cache = std::filesystem::absolute(!o.cache_dir.empty()               ? std::filesystem::path(o.cache_dir)
                                            : std::getenv("SYLVA_CACHE_DIR") ? std::getenv("SYLVA_CACHE_DIR")
@@ -72,7 +85,19 @@ int farm(farm_options o) {
     plan.sylva = o.sylva.empty() ? this_binary() : std::filesystem::absolute(o.sylva);
     // A scenario file is named by its absolute path: the tasks start elsewhere.
     if (std::filesystem::exists(plan.scenario)) plan.scenario = std::filesystem::absolute(plan.scenario).string();
-    if (plan.job_name.empty()) plan.job_name = "sylva-" + loaded->name;
+    if (plan.job_name.empty()) {
+        plan.job_name = "sylva-" + loaded->name;
+        for (char& c : plan.job_name)
+            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+    }
+    // #SBATCH lines take one word each, and Slurm expands % in file names.
+    for (const auto& [what, text] : {std::pair<const char*, std::string>{"--out", std::filesystem::absolute(o.out_dir).string()},
+                                {"--job-name", plan.job_name}})
+        if (text.find_first_of(" \t\n%'\"") != std::string::npos) {
+            spdlog::error("farm: {} {}: no spaces, quotes or % (the batch scripts' #SBATCH lines cannot hold them)",
+                          what, text);
+            return k_exit_bad_input;
+        }
     try {
         std::filesystem::create_directories(plan.out / "logs");
         std::filesystem::create_directories(plan.cache);
@@ -84,9 +109,9 @@ int farm(farm_options o) {
         spdlog::error("farm: {}", e.what());
         return k_exit_failure;
     }
-    spdlog::info("wrote {0}/bake.sbatch, shards.sbatch ({1} tasks), merge.sbatch and submit.sh; the merged {2} "
-                 "lands in {0}/merged",
-                 plan.out.string(), plan.shards, plan.command == "play" ? "frames and metrics.json" : "bench");
+    spdlog::info("wrote {0}/bake.sbatch, shards.sbatch ({1} tasks), merge.sbatch and submit.sh; the merged output "
+                 "({2}) will be in {0}/merged",
+                 plan.out.string(), plan.shards, plan.command == "play" ? "frames and metrics.json" : "bench.json and its tables");
     if (!o.submit) {
         spdlog::info("submit with: {}", (plan.out / "submit.sh").string());
         return k_exit_ok;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "app/run_options.h"
 #include "io/input_file.h"
 #include "scenarios/scenario_loader.h"
 
@@ -92,6 +93,7 @@ int run(int argc, char** argv) {
     commands.emplace_back(stress, sylva::add_stress_command(*stress));
     try {
         app.parse(argc, argv);
+        sylva::remember_run_options(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? 0 : sylva::k_exit_bad_input;

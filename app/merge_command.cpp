@@ -2,6 +2,7 @@
 // --frame-range`, `sylva farm`'s array tasks) into what the whole run writes.
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "app/commands.h"
@@ -19,7 +20,8 @@ int merge(const merge_options& o) {
     std::vector<std::filesystem::path> dirs;
     for (const std::string& s : o.shards) {
         if (!std::filesystem::is_directory(s)) {
-            spdlog::error("merge: shard folder {} does not exist", s);
+            spdlog::error("merge: shard folder {} {}", s,
+                          std::filesystem::exists(s) ? "is not a folder" : "does not exist");
             return k_exit_bad_input;
         }
         dirs.emplace_back(s);
@@ -75,8 +77,9 @@ command_runner add_merge_command(CLI::App& app) {
         "Summaries (medians, means, errors, transitions) are recomputed from the shards' per-frame "
         "records, so they are the whole run's, not averages of the shards'. Shards must cover the "
         "camera path once, in contiguous frame ranges, with the same scenario, size, renderer and "
-        "configurations. Frame times of shards timed on different hosts are kept and marked; a time "
-        "ratio comes only from configurations timed side by side in one shard.");
+        "configurations. Frame times of shards timed on different hosts (or thread counts) are kept "
+        "and marked; a bench's time ratios then come per host, from the frames it timed, where each "
+        "configuration ran side by side with its baseline.");
     return [options] { return merge(*options); };
 }
 

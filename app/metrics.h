@@ -92,6 +92,11 @@ struct run_info {
     double replay_ms = 0.0;
     double peak_memory_mb = -1.0;  // resident high-water mark; negative: this process's when written
     std::string host;  // where it ran (timings of different hosts are never compared)
+    // What every shard of one run must share (sylva merge checks): the command's options but
+    // the shard's own (app/run_options.h), and a hash of what selection reads from the device
+    // (primitive costs, the auto ladder's tables; scenario_player::selection_inputs_hash).
+    std::vector<std::string> options;
+    std::uint64_t selection_inputs_hash = 0;
     // Merged shards (sylva merge): one entry per shard, in frame order; empty for one run.
     std::vector<run_info> shards;
 };

@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "app/frame_range.h"
+#include "app/run_options.h"
 #include "app/interrupt.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
@@ -84,9 +85,9 @@ int play(const play_options& o) {
         // is bad input (exit 2) with nothing written.
         scenario_player player(s, o.scenario.threads, context.get(), &cache, mode);
         if (const std::string why = player.unreproducible_reason(); !why.empty() && range.count() != s.frames) {
-            spdlog::error("--frame-range {}: {}, so no two runs of it are equal and a shard cannot equal the whole "
-                          "run; play it whole",
-                          to_string(range), why);
+            spdlog::error("{} {}: {}, so no two runs of it are equal and a shard cannot equal the whole run; play it "
+                          "whole",
+                          o.shard.empty() ? "--frame-range" : "--shard", o.shard.empty() ? o.frame_range : o.shard, why);
             return k_exit_bad_input;
         }
         std::error_code ec;
@@ -101,6 +102,8 @@ int play(const play_options& o) {
         info.mode = o.reference ? "reference" : (o.full_geometry ? "full_geometry" : "lod");
         info.samples_per_pixel = samples * samples;
         info.frames_planned = range.count();
+        info.options = run_options();
+        info.selection_inputs_hash = player.selection_inputs_hash();
         info.frame_range = {range.first, range.end};
         info.path_frames = s.frames;
         spdlog::info("{} plants, {} source triangles, set up in {:.0f} ms, {} threads", info.plants,

@@ -132,6 +132,10 @@ public:
     // Why no shard of this player's run can equal the whole run (the frame-time targets adapt
     // to the device's measured time, so no two whole runs are equal either); empty when it can.
     std::string unreproducible_reason() const;
+    // FNV-1a of what the selection reads from the device: the primitive costs and the auto
+    // ladder's measured tables. Measured per device (and cached by its description), so shards
+    // on different kinds of node may select differently: sylva merge refuses them when this differs.
+    std::uint64_t selection_inputs_hash() const;
     // Whether replay_to renders every frame (the selection reads the images).
     bool replay_renders_every_frame() const;
     std::uint64_t frame() const { return m_frame; }

@@ -9,6 +9,7 @@
 #include "app/bench_measurements.h"
 #include "app/bench_report.h"
 #include "app/metrics.h"
+#include "app/run_options.h"
 
 namespace sylva {
 namespace {
@@ -46,15 +47,47 @@ void require_same(const play_shard& a, const play_shard& b) {
     // Another rasteriser draws other pixels: its frames are not this run's.
     check(x.gl_renderer == y.gl_renderer && x.gl_version == y.gl_version, "renderer",
           x.gl_renderer + " " + x.gl_version, y.gl_renderer + " " + y.gl_version);
+    check(x.options == y.options, "options", run_options_text(x.options), run_options_text(y.options));
+    check(x.selection_inputs_hash == y.selection_inputs_hash,
+          "device costs and rung tables (measured on different kinds of node? give every node the bake job's "
+          "cache, or run the shards on one kind): hash",
+          std::to_string(x.selection_inputs_hash), std::to_string(y.selection_inputs_hash));
+    check(x.static_upload_bytes == y.static_upload_bytes, "static upload bytes", std::to_string(x.static_upload_bytes),
+          std::to_string(y.static_upload_bytes));
 }
 
-std::filesystem::path frame_file(const std::filesystem::path& dir, std::uint64_t frame) {
-    char name[32];
-    for (const char* ext : {"png", "exr"}) {
-        std::snprintf(name, sizeof(name), "frame_%04llu.%s", static_cast<unsigned long long>(frame), ext);
-        if (std::filesystem::exists(dir / name)) return dir / name;
+// The frame image format the run wrote (play --format; png unless the options say).
+std::string frame_format(const std::vector<std::string>& options) {
+    for (std::size_t i = 0; i < options.size(); ++i) {
+        if (options[i] == "--format" && i + 1 < options.size()) return options[i + 1];
+        if (options[i].rfind("--format=", 0) == 0) return options[i].substr(9);
     }
-    return {};
+    return "png";
+}
+
+// Links `from` as `to` where they share a file system (a thousand 4K frames are not copied),
+// else copies it.
+void link_or_copy(const std::filesystem::path& from, const std::filesystem::path& to) {
+    std::filesystem::remove(to);
+    std::error_code linked;
+    std::filesystem::create_hard_link(from, to, linked);
+    if (linked) std::filesystem::copy_file(from, to);
+}
+
+// Frames and metrics of an earlier merge into `out` would be mixed with this one's: removed.
+void clear_earlier_output(const std::filesystem::path& out, const std::vector<std::string>& names) {
+    if (!std::filesystem::is_directory(out)) return;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("frame_", 0) == 0 || std::find(names.begin(), names.end(), name) != names.end())
+            std::filesystem::remove_all(entry.path());
+    }
+}
+
+std::filesystem::path frame_file(const std::filesystem::path& dir, std::uint64_t frame, const std::string& format) {
+    char name[48];
+    std::snprintf(name, sizeof(name), "frame_%04llu.%s", static_cast<unsigned long long>(frame), format.c_str());
+    return dir / name;
 }
 
 }  // namespace
@@ -95,11 +128,20 @@ merge_result merge_play_shards(const std::vector<std::filesystem::path>& dirs, c
         throw std::invalid_argument("frames " + std::to_string(next) + " to " + std::to_string(first.path_frames - 1) +
                                     " of the path are in no shard");
 
+    // Every frame is checked before anything is written.
+    const std::string format = frame_format(first.options);
+    for (const play_shard& shard : shards)
+        for (const frame_record& f : shard.metrics.frames)
+            if (!std::filesystem::exists(frame_file(shard.dir, f.frame, format)))
+                throw std::invalid_argument("shard " + shard.dir.string() + " has no image of frame " +
+                                            std::to_string(f.frame) + " (" +
+                                            frame_file(shard.dir, f.frame, format).filename().string() + ")");
     std::filesystem::create_directories(out);
     for (const play_shard& shard : shards)
         if (std::filesystem::equivalent(shard.dir, out))
             throw std::invalid_argument("--out " + out.string() + " is the shard folder " + shard.dir.string() +
                                         ": merge into a folder of its own (the shard's metrics.json would be lost)");
+    clear_earlier_output(out, {"metrics.json"});
     merge_result result;
     run_info merged = first;
     std::vector<frame_record> frames;
@@ -110,17 +152,8 @@ merge_result merge_play_shards(const std::vector<std::filesystem::path>& dirs, c
     for (const play_shard& shard : shards) {
         const run_info& info = shard.metrics.info;
         for (const frame_record& f : shard.metrics.frames) {
-            const std::filesystem::path from = frame_file(shard.dir, f.frame);
-            if (from.empty())
-                throw std::invalid_argument("shard " + shard.dir.string() + " has no image of frame " +
-                                            std::to_string(f.frame));
-            // Linked where the folders share a file system (a thousand 4K frames are not copied),
-            // else copied.
-            const std::filesystem::path to = out / from.filename();
-            std::filesystem::remove(to);
-            std::error_code linked;
-            std::filesystem::create_hard_link(from, to, linked);
-            if (linked) std::filesystem::copy_file(from, to);
+            const std::filesystem::path from = frame_file(shard.dir, f.frame, format);
+            link_or_copy(from, out / from.filename());
             frames.push_back(f);
         }
         setup_ms.push_back(info.setup_ms);
@@ -137,6 +170,11 @@ merge_result merge_play_shards(const std::vector<std::filesystem::path>& dirs, c
     merged.setup_ms = median(setup_ms);
     merged.frame_range = {0, first.path_frames};
     merged.frames_planned = first.path_frames;
+    // Shards may run with other thread counts (their frames are the same): 0 says several.
+    for (const play_shard& shard : shards)
+        if (shard.metrics.info.threads != first.threads) merged.threads = 0;
+    for (const play_shard& shard : shards)
+        if (shard.metrics.info.machine != first.machine) merged.machine = "several (summary.shards)";
     if (result.hosts.size() > 1) {
         merged.host.clear();
         for (const std::string& h : result.hosts) merged.host += (merged.host.empty() ? "" : ", ") + h;
@@ -179,21 +217,39 @@ void require_same_bench(const bench_shard_file& a, const bench_shard_file& b) {
         return out;
     };
     check(names(x) == names(y), "configurations (--only)", names(x), names(y));
-    for (std::size_t i = 0; i < x.configurations.size(); ++i)
-        check(x.configurations[i].primitive_costs == y.configurations[i].primitive_costs,
-              "device costs of " + x.configurations[i].name + " (share one bake cache)", "", "");
-    check(x.lighting_families.size() == y.lighting_families.size(), "lighting families",
-          std::to_string(x.lighting_families.size()), std::to_string(y.lighting_families.size()));
+    check(x.options == y.options, "options", run_options_text(x.options), run_options_text(y.options));
+    for (std::size_t i = 0; i < x.configurations.size(); ++i) {
+        const bench_configuration& cx = x.configurations[i];
+        const bench_configuration& cy = y.configurations[i];
+        check(cx.lighting == cy.lighting && cx.family == cy.family && cx.quality == cy.quality,
+              "configuration " + cx.name, cx.family + "/" + cx.lighting, cy.family + "/" + cy.lighting);
+        check(cx.selection_inputs_hash == cy.selection_inputs_hash,
+              "device costs and rung tables of " + cx.name +
+                  " (measured on different kinds of node? give every node the bake job's cache): hash",
+              std::to_string(cx.selection_inputs_hash), std::to_string(cy.selection_inputs_hash));
+    }
+    const auto families = [](const bench_report& r) {
+        std::string out;
+        for (const auto& f : r.lighting_families) out += (out.empty() ? "" : ",") + f.name;
+        return out;
+    };
+    check(families(x) == families(y), "lighting families", families(x), families(y));
 }
 
-// `c`'s frames timed on `host` alone, summed up (for a time ratio within one machine).
-bench_configuration frames_of_host(const bench_configuration& c, const std::vector<bench_shard_file>& shards,
-                                   const std::string& host) {
+// Where a shard's frames were timed: its host and thread count. Times of one domain may be
+// compared; of two, never.
+std::string timing_domain(const bench_shard& shard) {
+    return shard.host + " (" + std::to_string(shard.threads) + " threads)";
+}
+
+// `c`'s frames timed in `domain` alone, summed up (for a time ratio within one machine).
+bench_configuration frames_of_domain(const bench_configuration& c, const std::vector<bench_shard_file>& shards,
+                                     const std::string& domain) {
     bench_configuration out = c;
     std::erase_if(out.frame_records, [&](const bench_frame& f) {
         for (const bench_shard_file& shard : shards)
             if (f.frame >= shard.report.range.first && f.frame < shard.report.range.end)
-                return shard.report.range.host != host;
+                return timing_domain(shard.report.range) != domain;
         return true;
     });
     summarize_records(out);
@@ -221,10 +277,16 @@ merge_result merge_bench_shards(const std::vector<std::filesystem::path>& dirs, 
                                                              : "frames " + std::to_string(next) + " to " +
                                                                    std::to_string(r.range.first - 1) +
                                                                    " are in no shard (next: " + where + ")");
-        for (const bench_configuration& c : r.configurations)
+        for (const bench_configuration& c : r.configurations) {
             if (c.frame_records.size() != r.range.end - r.range.first)
                 throw std::invalid_argument("bench shard " + where + ": " + c.name + " holds " +
                                             std::to_string(c.frame_records.size()) + " frame records");
+            for (std::size_t i = 0; i < c.frame_records.size(); ++i)
+                if (c.frame_records[i].frame != r.range.first + i)
+                    throw std::invalid_argument("bench shard " + where + ": " + c.name + "'s record " +
+                                                std::to_string(i) + " is of frame " +
+                                                std::to_string(c.frame_records[i].frame));
+        }
         next = r.range.end;
     }
     const bench_report& first = shards.front().report;
@@ -263,8 +325,8 @@ merge_result merge_bench_shards(const std::vector<std::filesystem::path>& dirs, 
         }
         merged.range.replay_ms += r.range.replay_ms;
         merged.shards.push_back(r.range);
-        if (std::find(result.hosts.begin(), result.hosts.end(), r.range.host) == result.hosts.end())
-            result.hosts.push_back(r.range.host);
+        if (std::find(result.hosts.begin(), result.hosts.end(), timing_domain(r.range)) == result.hosts.end())
+            result.hosts.push_back(timing_domain(r.range));
         if (std::find(machines.begin(), machines.end(), r.range.machine) == machines.end())
             machines.push_back(r.range.machine);
     }
@@ -277,16 +339,19 @@ merge_result merge_bench_shards(const std::vector<std::filesystem::path>& dirs, 
     if (result.hosts.size() == 1) {
         add_baseline_ratios(merged);
     } else {
-        // Frame times of different machines never enter one ratio: each host's ratio comes from
-        // the frames it timed, where a configuration and its baseline ran side by side.
+        // Frame times of different machines (or thread counts) never enter one ratio: each
+        // domain's ratio comes from the frames it timed, where a configuration and its baseline
+        // ran side by side.
         merged.range.host.clear();
         for (const std::string& h : result.hosts) merged.range.host += (merged.range.host.empty() ? "" : ", ") + h;
+        merged.range.threads = 0;
+        merged.threads = 0;
         merged.machine.clear();
         for (const std::string& m : machines) merged.machine += (merged.machine.empty() ? "" : "; ") + m;
-        merged.machine = "several hosts (" + merged.range.host + "): " + merged.machine;
+        merged.machine = "several hosts or thread counts (" + merged.range.host + "): " + merged.machine;
         for (const std::string& host : result.hosts) {
             bench_report one = merged;
-            for (bench_configuration& c : one.configurations) c = frames_of_host(c, shards, host);
+            for (bench_configuration& c : one.configurations) c = frames_of_domain(c, shards, host);
             add_baseline_ratios(one);
             for (std::size_t i = 0; i < one.configurations.size(); ++i)
                 if (!std::isnan(one.configurations[i].frame_ms_vs_baseline))
@@ -298,6 +363,19 @@ merge_result merge_bench_shards(const std::vector<std::filesystem::path>& dirs, 
         if (std::filesystem::equivalent(shard.dir, out))
             throw std::invalid_argument("--out " + out.string() + " is the shard folder " + shard.dir.string() +
                                         ": merge into a folder of its own (the shard's bench.json would be lost)");
+    clear_earlier_output(out, {"bench.json", "bench.csv", "bench.svg", "summary.md", "frames"});
+    // Frames saved by the shards (bench --save-frames), one folder per configuration.
+    for (const bench_shard_file& shard : shards) {
+        const std::filesystem::path saved = shard.dir / "frames";
+        if (!std::filesystem::is_directory(saved)) continue;
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(saved)) {
+            const std::filesystem::path to = out / "frames" / std::filesystem::relative(entry.path(), saved);
+            if (entry.is_directory())
+                std::filesystem::create_directories(to);
+            else
+                link_or_copy(entry.path(), to);
+        }
+    }
     write_bench_json(out / "bench.json", merged);
     write_bench_csv(out / "bench.csv", merged);
     write_bench_plot_svg(out / "bench.svg", merged);

@@ -13,12 +13,15 @@ namespace sylva {
 struct merge_result {
     std::size_t shards = 0;
     std::size_t frames = 0;
-    std::vector<std::string> hosts;  // distinct, in shard order
+    // Where the shards were timed, distinct, in shard order: hosts for play, host and thread
+    // count for bench (its time ratios are per such domain).
+    std::vector<std::string> hosts;
 };
 
 // Every shard folder holds a metrics.json (and its frame_NNNN images); the shards must be of
-// one scenario and mode and together cover its path once, in contiguous ranges. Writes
-// out/metrics.json and copies the frames into `out` (which may be one of the shard folders).
+// one scenario, mode and set of options and together cover its path once, in contiguous
+// ranges. Writes out/metrics.json and links (or copies) the frames into `out`, which must not
+// be a shard's folder; an earlier merge's frames there are removed first.
 // Throws std::invalid_argument naming the shard and what does not fit, std::runtime_error on
 // file errors.
 merge_result merge_play_shards(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out);

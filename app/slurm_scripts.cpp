@@ -83,8 +83,11 @@ std::string submit_script(const farm_plan& plan) {
     s += "set -euo pipefail\n";
     s += "mkdir -p " + shell_quote((plan.out / "logs").string()) + "\n";
     s += "bake=$(sbatch --parsable " + script("bake.sbatch") + ")\n";
-    s += "shards=$(sbatch --parsable --dependency=afterok:\"${bake%%;*}\" " + script("shards.sbatch") + ")\n";
-    s += "merge=$(sbatch --parsable --dependency=afterok:\"${shards%%;*}\" " + script("merge.sbatch") + ")\n";
+    // A failed job cancels the ones waiting for it, rather than leaving them pending forever.
+    s += "shards=$(sbatch --parsable --kill-on-invalid-dep=yes --dependency=afterok:\"${bake%%;*}\" " +
+         script("shards.sbatch") + ")\n";
+    s += "merge=$(sbatch --parsable --kill-on-invalid-dep=yes --dependency=afterok:\"${shards%%;*}\" " +
+         script("merge.sbatch") + ")\n";
     s += "echo \"bake ${bake%%;*} shards ${shards%%;*} merge ${merge%%;*}\"\n";
     return s;
 }

@@ -141,12 +141,12 @@ TEST(merge_bench_shards, timings_of_two_hosts_give_a_ratio_per_host_and_none_acr
     write_shard(dir / "a", report_of(0, 1, "node1"));
     write_shard(dir / "b", report_of(1, 3, "node2"));
     const merge_result result = merge_bench_shards({dir / "a", dir / "b"}, dir / "merged");
-    EXPECT_EQ(result.hosts, (std::vector<std::string>{"node1", "node2"}));
+    EXPECT_EQ(result.hosts, (std::vector<std::string>{"node1 (2 threads)", "node2 (2 threads)"}));
     const bench_report merged = read_bench_json(dir / "merged" / "bench.json");
     const bench_configuration& ladder = merged.configurations[1];
     EXPECT_TRUE(std::isnan(ladder.frame_ms_vs_baseline));
-    EXPECT_NEAR(ladder.frame_ms_vs_baseline_by_host.at("node1"), 0.5, 1e-6);
-    EXPECT_NEAR(ladder.frame_ms_vs_baseline_by_host.at("node2"), 0.5, 1e-6);
+    EXPECT_NEAR(ladder.frame_ms_vs_baseline_by_host.at("node1 (2 threads)"), 0.5, 1e-6);
+    EXPECT_NEAR(ladder.frame_ms_vs_baseline_by_host.at("node2 (2 threads)"), 0.5, 1e-6);
     EXPECT_NE(merged.machine.find("several hosts"), std::string::npos) << merged.machine;
     std::filesystem::remove_all(dir);
 }

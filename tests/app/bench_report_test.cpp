@@ -172,7 +172,7 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
               (std::set<std::string>{"scenario", "source", "machine", "gl_renderer", "threads",
                                      "width", "height", "frames", "timing_rounds", "reference",
                                      "lighting_families", "primitive_costs", "configurations",
-                                     "verdicts", "partial"}));
+                                     "verdicts", "partial", "path_frames", "options", "shard", "shards"}));
     EXPECT_EQ(j["timing_rounds"], 1);
     EXPECT_EQ(j["partial"], false);
     EXPECT_EQ(j["scenario"], "meadow <dense>");
@@ -180,7 +180,8 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
     EXPECT_EQ(j["lighting_families"],
               (nlohmann::json::array({{{"name", "normal"},
                                        {"reference_lit", "every species lit by its normals"},
-                                       {"reference_frame_ms_median", 500.0}}})));
+                                       {"reference_frame_ms_median", 500.0},
+                                       {"reference_frame_ms", nlohmann::json::array()}}})));
     ASSERT_EQ(j["configurations"].size(), 7u);
     std::map<std::string, nlohmann::json> by_name;
     for (const auto& c : j["configurations"]) {
@@ -188,9 +189,10 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
                   (std::set<std::string>{"name", "family", "lighting", "description", "quality", "frames",
                                          "frame_ms", "cpu_ms", "gpu_ms", "primitives",
                                          "upload_bytes", "peak_memory_mb", "primitive_costs",
-                                         "error", "on_pareto_front"}));
-        EXPECT_EQ(keys_of(c["frame_ms"]),
-                  (std::set<std::string>{"median", "min", "max", "round_medians", "vs_baseline"}));
+                                         "error", "on_pareto_front", "selection_inputs_hash", "records"}));
+        EXPECT_EQ(keys_of(c["frame_ms"]), (std::set<std::string>{"median", "min", "max", "round_medians",
+                                                                  "vs_baseline", "vs_baseline_by_host"}));
+        EXPECT_EQ(keys_of(c["records"]), (std::set<std::string>{"frames", "transitions", "transitions_cut_off"}));
         EXPECT_EQ(keys_of(c["error"]),
                   (std::set<std::string>{"psnr", "ssim", "perceptual", "coverage_iou", "popping",
                                          "lighting_jump", "rmse", "transitions"}));
@@ -204,7 +206,8 @@ TEST(bench_report_json, has_exactly_the_documented_keys_and_inf_psnr_as_a_string
                                                  {"min", 48.0},
                                                  {"max", 55.0},
                                                  {"round_medians", {50.0}},
-                                                 {"vs_baseline", 8.25}}));
+                                                 {"vs_baseline", 8.25},
+                                                 {"vs_baseline_by_host", nlohmann::json::object()}}));
     EXPECT_TRUE(by_name["mesh_lod"]["frame_ms"]["vs_baseline"].is_null());  // NaN: not measured
     EXPECT_EQ(brute["cpu_ms"], (nlohmann::json{{"total", 30.5}}));
     EXPECT_EQ(brute["primitives"]["triangles"], 2000000.0);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "run_sylva.h"
 
@@ -65,6 +67,15 @@ TEST(shard_command, bench_shards_merge_into_the_whole_bench_with_its_transitions
     ASSERT_EQ(merged.exit_code, 0) << merged.output;
     const auto same = compare("bench", dir / "whole", dir / "merged");
     EXPECT_EQ(same.exit_code, 0) << same.output;
+    // Shard 1/2 holds frames 3 and 4; a transition it measured began before frame 2, so its
+    // replay rendered an earlier frame for the colours there, and the reference's too
+    // (bench_runner.cpp plan_replay, add_reference_colors).
+    std::ifstream in(dir / "b" / "bench.json");
+    const nlohmann::json shard = nlohmann::json::parse(in);
+    bool begun_before = false;
+    for (const auto& c : shard["configurations"])
+        for (const auto& t : c["records"]["transitions"]) begun_before = begun_before || t["from_frame"] < 2;
+    EXPECT_TRUE(begun_before) << "no transition of the second shard began before it: the planned replay went untested";
     // The compared files are really compared: a shard alone is not the whole bench.
     EXPECT_NE(compare("bench", dir / "whole", dir / "a").exit_code, 0);
     fs::remove_all(dir);

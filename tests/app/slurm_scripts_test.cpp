@@ -50,7 +50,8 @@ TEST(slurm_scripts, bake_runs_frame_0_and_merge_joins_every_shard_after_them) {
                                       "/shared/farm/shard_3 --out /shared/farm/merged"),
               std::string::npos);
     const std::string submit = submit_script(plan);
-    EXPECT_NE(submit.find("--dependency=afterok:\"${bake%%;*}\" /shared/farm/shards.sbatch"), std::string::npos);
+    EXPECT_NE(submit.find("--kill-on-invalid-dep=yes --dependency=afterok:\"${bake%%;*}\" /shared/farm/shards.sbatch"),
+              std::string::npos);
     EXPECT_NE(submit.find("--dependency=afterok:\"${shards%%;*}\" /shared/farm/merge.sbatch"), std::string::npos);
 }
 
