@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/bench_report.h"
+#include "app/metrics.h"
 
 namespace sylva {
 namespace {
@@ -99,14 +100,7 @@ struct reader {
 }  // namespace
 
 bench_report read_bench_json(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-    nlohmann::json root;
-    try {
-        root = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw std::runtime_error(path.string() + ": not JSON (" + e.what() + ")");
-    }
+    const nlohmann::json root = read_json_document(path);
     const reader r{path};
     bench_report report;
     try {

@@ -28,14 +28,20 @@ struct bench_run {
     frame_range range;           // the frames measured: the path's, or a shard's
 };
 
-// The player of configuration `spec`: the scenario as `spec` changes it, drawn with exactly
-// what `spec` names (not the scenario's lod section), with an ID buffer, and with the bench's
-// fixed costs when it has them.
-scenario_player make_player(const bench_run& run, const bench_configuration_spec& spec) {
+// The scenario as configuration `spec` changes it: its LOD scale and samples per pixel.
+scenario scenario_of(const bench_run& run, const bench_configuration_spec& spec) {
     scenario s = run.s;
     s.camera.lod_scale = run.s.camera.lod_scale * spec.lod_scale_factor;
     s.width = run.s.width * spec.samples;
     s.height = run.s.height * spec.samples;
+    return s;
+}
+
+// The player of configuration `spec`: the scenario as `spec` changes it, drawn with exactly
+// what `spec` names (not the scenario's lod section), with an ID buffer, and with the bench's
+// fixed costs when it has them.
+scenario_player make_player(const bench_run& run, const bench_configuration_spec& spec) {
+    scenario s = scenario_of(run, spec);
     player_options options = spec.options;
     options.id_buffer = true;
     options.scenario_lod = false;
@@ -152,10 +158,7 @@ std::vector<double> time_configuration(const bench_run& run, const bench_configu
 // against the measuring player's frame by frame (`state_hashes`).
 std::vector<std::uint32_t> plan_replay(const bench_run& run, const bench_configuration_spec& spec,
                                        const scenario_player& measuring, std::vector<std::uint64_t>& state_hashes) {
-    scenario s = run.s;
-    s.camera.lod_scale = run.s.camera.lod_scale * spec.lod_scale_factor;
-    s.width = run.s.width * spec.samples;
-    s.height = run.s.height * spec.samples;
+    scenario s = scenario_of(run, spec);
     player_options options = spec.options;
     options.scenario_lod = false;
     options.costs = measuring.costs();

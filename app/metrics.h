@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -110,6 +111,10 @@ std::string host_name();
 // Writes metrics.json atomically (temporary file, then rename); throws naming the path.
 void write_metrics_json(const std::filesystem::path& path, const run_info& info,
                         const std::vector<frame_record>& frames);
+
+// A JSON file's document (the readers of metrics.json and bench.json); throws
+// std::runtime_error naming the path when it cannot be read or is not JSON.
+nlohmann::json read_json_document(const std::filesystem::path& path);
 
 // Reads what write_metrics_json wrote (sylva merge); throws std::runtime_error naming the
 // path and the field that is missing or wrong.

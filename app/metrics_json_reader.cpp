@@ -107,15 +107,18 @@ run_info info_from_json(const nlohmann::json& j, const std::filesystem::path& pa
 
 }  // namespace
 
-metrics_file read_metrics_json(const std::filesystem::path& path) {
+nlohmann::json read_json_document(const std::filesystem::path& path) {
     std::ifstream in(path);
     if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-    nlohmann::json root;
     try {
-        root = nlohmann::json::parse(in);
+        return nlohmann::json::parse(in);
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path.string() + ": not JSON (" + e.what() + ")");
     }
+}
+
+metrics_file read_metrics_json(const std::filesystem::path& path) {
+    const nlohmann::json root = read_json_document(path);
     metrics_file out;
     try {
         out.info = info_from_json(field(root, "summary", path, "$"), path);

@@ -47,9 +47,12 @@ void play_frames(scenario_player& player, const play_options& o, frame_range ran
         const image_rgba8 image = box_downsample(player.capture(), samples);
         record.image_hash = fnv1a(image.texels.data(), image.texels.size());
         write_image(image, frame_path(o, record.frame));
-        std::fprintf(stderr, "\r[sylva] frame %u (%u/%u)  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ", f,
-                     f - range.first + 1, range.count(), record.frame_ms, record.cpu_ms, record.gpu_ms,
-                     static_cast<unsigned long long>(record.triangles));
+        // "frame N/M" counts this run's frames (tests and scripts wait for it); a shard adds the
+        // frame's number on the path.
+        std::fprintf(stderr, "\r[sylva] frame %u/%u%s  %.1f ms (cpu %.1f, gpu %.1f)  %llu triangles   ",
+                     f - range.first + 1, range.count(),
+                     range.first > 0 ? (" (path frame " + std::to_string(f) + ")").c_str() : "", record.frame_ms,
+                     record.cpu_ms, record.gpu_ms, static_cast<unsigned long long>(record.triangles));
         frames.push_back(std::move(record));
     }
     std::fprintf(stderr, "\n");
