@@ -113,7 +113,8 @@ int play(const play_options& o) {
                      info.source_triangles, info.setup_ms, info.threads);
         if (range.first > 0) {
             spdlog::info("reaching frame {} (the shard {} of {} frames)", range.first, to_string(range), s.frames);
-            const replay_cost cost = player.replay_to(range.first);
+            // Ctrl-C during the replay ends it there; no frame of the shard is then played.
+            const replay_cost cost = player.replay_to(range.first, {}, {}, interrupt_requested);
             info.replay_cpu_frames = cost.cpu_frames;
             info.replay_rendered_frames = cost.rendered_frames;
             info.replay_ms = cost.ms;

@@ -127,8 +127,11 @@ public:
     // `after` is called after every frame with its record and whether it was rendered (the image
     // is then capture()'s until the next step). Throws std::invalid_argument when a shard cannot
     // equal the whole run (unreproducible_reason), std::logic_error when `frame` is behind.
+    // `stop` is asked before every frame: true leaves the player where it got to (an interrupt;
+    // the caller must then play no frame of the shard).
     replay_cost replay_to(std::uint64_t frame, const std::function<bool(std::uint64_t)>& render_frame = {},
-                          const std::function<void(const frame_record&, bool rendered)>& after = {});
+                          const std::function<void(const frame_record&, bool rendered)>& after = {},
+                          const std::function<bool()>& stop = {});
     // Why no shard of this player's run can equal the whole run (the frame-time targets adapt
     // to the device's measured time, so no two whole runs are equal either); empty when it can.
     std::string unreproducible_reason() const;

@@ -53,7 +53,8 @@ std::uint64_t scenario_player::selection_inputs_hash() const {
 bool scenario_player::replay_renders_every_frame() const { return m_world.resource<seen_pixels>().wanted; }
 
 replay_cost scenario_player::replay_to(std::uint64_t frame, const std::function<bool(std::uint64_t)>& render_frame,
-                                       const std::function<void(const frame_record&, bool)>& after) {
+                                       const std::function<void(const frame_record&, bool)>& after,
+                                       const std::function<bool()>& stop) {
     if (frame < m_frame)
         throw std::logic_error("replay_to: frame " + std::to_string(frame) + " is behind the player's " +
                                std::to_string(m_frame));
@@ -79,7 +80,7 @@ replay_cost scenario_player::replay_to(std::uint64_t frame, const std::function<
     // tests/app/shard_command_test.cpp compares reference shards with a whole reference.
     if (m_full_geometry && !every && frame > m_frame + 1) m_frame = frame - 1;
     frame_record record;
-    while (m_frame < frame) {
+    while (m_frame < frame && !(stop && stop())) {
         const std::uint64_t f = m_frame;
         const bool rendered = renderer && (every || f + 1 == frame || (render_frame && render_frame(f)));
         device.renderer = rendered ? renderer : nullptr;
