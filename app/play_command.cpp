@@ -64,7 +64,7 @@ int play(const play_options& o) {
     scenario s = *loaded;
     frame_range range{0, s.frames};
     try {
-        if (!o.frame_range.empty() || !o.shard.empty()) range = range_asked(o.frame_range, o.shard, s.frames);
+        range = range_asked(o.frame_range, o.shard, s.frames);
     } catch (const std::invalid_argument& e) {
         spdlog::error("{}", e.what());
         return k_exit_bad_input;

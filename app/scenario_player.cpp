@@ -213,7 +213,6 @@ scenario_player::scenario_player(scenario s, int threads, render::gl_context* co
         camera& cam = m_world.single<camera>();
         cam.full_geometry = true;
         cam.lod_scale = 1e6f;  // no distance is far enough to switch or cull
-        m_full_geometry = true;
     }
     m_world.set_chunk_size(options.chunk_size);
     register_frame_systems(m_schedule);

@@ -174,7 +174,6 @@ private:
     run_info m_info;
     std::uint64_t m_frame = 0;
     std::size_t m_built_meshes = 0;  // meshes before the eco tiles' point sets
-    bool m_full_geometry = false;    // geometry_mode::full: nothing carries over frames
 };
 
 // FNV-1a 64 over bytes (image and state hashes).

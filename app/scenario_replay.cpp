@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/scenario_player.h"
+#include "components/camera.h"
 #include "resources/seen_pixels.h"
 #include "systems/render/submit_system.h"
 
@@ -78,7 +79,7 @@ replay_cost scenario_player::replay_to(std::uint64_t frame, const std::function<
     // (their first frame uploads more) are in the frame's record (without it the images are the
     // same, the state hash and upload bytes of a shard's first frame are not).
     // tests/app/shard_command_test.cpp compares reference shards with a whole reference.
-    if (m_full_geometry && !every && frame > m_frame + 1) m_frame = frame - 1;
+    if (m_world.single<camera>().full_geometry && !every && frame > m_frame + 1) m_frame = frame - 1;
     frame_record record;
     while (m_frame < frame && !(stop && stop())) {
         const std::uint64_t f = m_frame;

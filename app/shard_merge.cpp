@@ -84,6 +84,15 @@ void clear_earlier_output(const std::filesystem::path& out, const std::vector<st
     }
 }
 
+// Shards sorted by first frame must follow each other: `first` is where `what` starts, `next`
+// where the shards before it ended.
+void require_follows(std::uint64_t first, std::uint64_t next, const std::string& what) {
+    if (first == next) return;
+    throw std::invalid_argument(first < next ? what + " overlaps the frames before it"
+                                             : "frames " + std::to_string(next) + " to " + std::to_string(first - 1) +
+                                                   " are in no shard (next: " + what + ")");
+}
+
 std::filesystem::path frame_file(const std::filesystem::path& dir, std::uint64_t frame, const std::string& format) {
     char name[48];
     std::snprintf(name, sizeof(name), "frame_%04llu.%s", static_cast<unsigned long long>(frame), format.c_str());
@@ -108,12 +117,7 @@ merge_result merge_play_shards(const std::vector<std::filesystem::path>& dirs, c
             throw std::invalid_argument("shard " + where + " was interrupted (" + info.interrupted_by +
                                         ") after " + std::to_string(shard.metrics.frames.size()) +
                                         " frames: play it again");
-        if (info.frame_range[0] != next)
-            throw std::invalid_argument(info.frame_range[0] < next
-                                            ? "shard " + where + " overlaps the frames before it"
-                                            : "frames " + std::to_string(next) + " to " +
-                                                  std::to_string(info.frame_range[0] - 1) +
-                                                  " are in no shard (next: " + where + ")");
+        require_follows(info.frame_range[0], next, "shard " + where);
         if (shard.metrics.frames.size() != info.frame_range[1] - info.frame_range[0])
             throw std::invalid_argument("shard " + where + " holds " + std::to_string(shard.metrics.frames.size()) +
                                         " frame records");
@@ -272,11 +276,7 @@ merge_result merge_bench_shards(const std::vector<std::filesystem::path>& dirs, 
         const std::string where = shard.dir.string() + " (frames " + std::to_string(r.range.first) + ":" +
                                   std::to_string(r.range.end) + ")";
         if (r.partial) throw std::invalid_argument("bench shard " + where + " was interrupted: bench it again");
-        if (r.range.first != next)
-            throw std::invalid_argument(r.range.first < next ? "bench shard " + where + " overlaps the frames before it"
-                                                             : "frames " + std::to_string(next) + " to " +
-                                                                   std::to_string(r.range.first - 1) +
-                                                                   " are in no shard (next: " + where + ")");
+        require_follows(r.range.first, next, "bench shard " + where);
         for (const bench_configuration& c : r.configurations) {
             if (c.frame_records.size() != r.range.end - r.range.first)
                 throw std::invalid_argument("bench shard " + where + ": " + c.name + " holds " +
