@@ -44,10 +44,42 @@ scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px, 
     return one;
 }
 
+scenario species_patch(const scenario& s, std::size_t i, std::uint32_t view_px, const std::string& purpose) {
+    scenario patch = species_alone(s, i, view_px, purpose);
+    // The densest of the species' populations: where its plants stand closest, and most often
+    // side by side in a frame.
+    const population_settings* densest = nullptr;
+    double densest_per_m2 = 0.0;
+    for (const population_settings& p : s.populations) {
+        const double area = std::abs((p.area[2] - p.area[0]) * (p.area[3] - p.area[1]));
+        if (p.species != s.species[i].name || p.count == 0 || area <= 0.0) continue;
+        const double per_m2 = double(p.count) / area;
+        if (per_m2 > densest_per_m2) densest = &p, densest_per_m2 = per_m2;
+    }
+    if (densest == nullptr) return patch;  // no population: alone, as a frame would show it
+    // No more plants than the population has: a lone tree (single_tree) stays alone.
+    const double plants = std::min(k_patch_plants, double(densest->count));
+    const double side = std::min(std::sqrt(plants / densest_per_m2), k_patch_max_side_m);
+    population_settings& p = patch.populations[0];
+    p.count = std::uint32_t(std::max(1.0, std::round(side * side * densest_per_m2)));
+    p.min_spacing_m = densest->min_spacing_m;
+    p.scale_min = densest->scale_min;
+    p.scale_max = densest->scale_max;
+    p.area = {-0.5 * side, -0.5 * side, 0.5 * side, 0.5 * side};
+    patch.terrain.size_m = std::max(patch.terrain.size_m, 2.0 * side + 32.0);
+    return patch;
+}
+
 void aim_at_plant(scenario_player& player, float size_px, float azimuth_deg, std::uint32_t view_px,
                   double eye_height_m) {
     ecs::world& world = player.world();
-    const world_transform& t = world.table<world_transform>().data()[0];
+    // The plant nearest the origin: the only one of species_alone, the middle of species_patch.
+    const auto& table = world.table<world_transform>();
+    const world_transform* plants = table.data();
+    const auto from_origin = [](const world_transform& p) { return p.position.x * p.position.x + p.position.z * p.position.z; };
+    const world_transform& t = *std::min_element(plants, plants + table.size(), [&](const auto& a, const auto& b) {
+        return from_origin(a) < from_origin(b);
+    });
     const species_entry& species = world.resource<species_library>().species[0];
     const double pixel = image_plane_units(1.0, double(k_one_plant_fov_deg) * M_PI / 180.0, double(view_px));
     // select_representation measures from the eye to the plant's base.

@@ -42,6 +42,7 @@ inline constexpr std::array<float, 3> k_rung_table_directions{0.0f, 120.0f, 240.
 struct rung_measurement {
     representation rung = representation::none;
     std::array<float, k_rung_table_size_count> error_per_pixel{};
+    std::array<float, k_rung_table_size_count> structure_error_per_pixel{};  // 1 − SSIM over its windows, per pixel
     std::array<float, k_rung_table_size_count> plant_pixels{};  // the reference's, in the view
     std::array<float, k_rung_table_size_count> drawn_pixels{};  // the rung's
     std::array<float, k_rung_table_size_count> triangles{};

@@ -102,7 +102,7 @@ double psnr_db(const image_rgba8& a, const image_rgba8& b) {
     return 20.0 * std::log10(1.0 / error);
 }
 
-double mean_ssim(const image_rgba8& a, const image_rgba8& b) {
+ssim_windows ssim_map(const image_rgba8& a, const image_rgba8& b) {
     require_same_size(a, b, "mean_ssim");
     if (a.width < k_ssim_window || a.height < k_ssim_window)
         throw std::invalid_argument("mean_ssim: image " + size_text(a) + " is smaller than the 11x11 window");
@@ -127,7 +127,8 @@ double mean_ssim(const image_rgba8& a, const image_rgba8& b) {
     // C1 = (K1 L)^2 (Eq. 7), C2 = (K2 L)^2 (Eq. 9), with L = 1 for values in 0..1.
     constexpr double c1 = (0.01 * 1.0) * (0.01 * 1.0);
     constexpr double c2 = (0.03 * 1.0) * (0.03 * 1.0);
-    double sum = 0.0;
+    const std::size_t window = std::size_t(k_ssim_window);
+    ssim_windows out{width - window + 1, height - window + 1, std::vector<double>(mu_a.size())};
     for (std::size_t i = 0; i < mu_a.size(); ++i) {
         const double ma = mu_a[i];
         const double mb = mu_b[i];
@@ -136,10 +137,17 @@ double mean_ssim(const image_rgba8& a, const image_rgba8& b) {
         const double cov = e_ab[i] - ma * mb;
         // SSIM(x, y) = (2 mu_x mu_y + C1)(2 sigma_xy + C2) /
         //              ((mu_x^2 + mu_y^2 + C1)(sigma_x^2 + sigma_y^2 + C2))   (Eq. 13)
-        sum += ((2.0 * ma * mb + c1) * (2.0 * cov + c2)) / ((ma * ma + mb * mb + c1) * (var_a + var_b + c2));
+        out.values[i] = ((2.0 * ma * mb + c1) * (2.0 * cov + c2)) / ((ma * ma + mb * mb + c1) * (var_a + var_b + c2));
     }
+    return out;
+}
+
+double mean_ssim(const image_rgba8& a, const image_rgba8& b) {
+    const ssim_windows map = ssim_map(a, b);
     // MSSIM = (1/M) sum_j SSIM(x_j, y_j) over the M window positions (Eq. 17).
-    return sum / double(mu_a.size());
+    double sum = 0.0;
+    for (const double v : map.values) sum += v;
+    return sum / double(map.values.size());
 }
 
 double coverage_iou(const std::vector<std::uint8_t>& mask_a, const std::vector<std::uint8_t>& mask_b) {

@@ -31,6 +31,15 @@ double psnr_db(const image_rgba8& a, const image_rgba8& b);
 // smaller than 11 pixels.
 double mean_ssim(const image_rgba8& a, const image_rgba8& b);
 
+// The SSIM of every window mean_ssim averages: (width − 10) x (height − 10) values, row by row,
+// the value at (x, y) that of the window whose top-left pixel is (x, y), so centred on pixel
+// (x + 5, y + 5). mean_ssim is their mean. Throws as mean_ssim does.
+struct ssim_windows {
+    std::size_t width = 0, height = 0;
+    std::vector<double> values;
+};
+ssim_windows ssim_map(const image_rgba8& a, const image_rgba8& b);
+
 // LDR-FLIP (Andersson, Nilsson, Akenine-Moller, Oskarsson, Astrom, Fairchild 2020, "FLIP: A
 // Difference Evaluator for Alternating Images"), pooled as the mean over pixels, in 0..1 (0 for
 // identical images). `a` is the reference, `b` the test; both are read as sRGB-encoded display

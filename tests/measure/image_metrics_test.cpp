@@ -90,6 +90,33 @@ TEST(image_metrics, ssim_of_constant_images_is_the_luminance_term) {
     EXPECT_NEAR(mean_ssim(a, b), 0.923092310531, 1e-9);
 }
 
+TEST(image_metrics, ssim_map_holds_one_value_per_window_centred_on_its_pixel) {
+    // 16 x 13 pixels: 6 x 3 windows of 11 x 11. The left half 100 in one image and 150 in the
+    // other, the right half equal: a window wholly within the equal half is 1; the windows
+    // reaching into the left half are less.
+    image_rgba8 a = constant_image(16, 13, 100, 100, 100), b = a;
+    for (std::uint32_t y = 0; y < 13; ++y)
+        for (std::uint32_t x = 0; x < 3; ++x) b.at(x, y)[0] = b.at(x, y)[1] = b.at(x, y)[2] = 150;
+    const ssim_windows map = ssim_map(a, b);
+    ASSERT_EQ(map.width, 6u);
+    ASSERT_EQ(map.height, 3u);
+    ASSERT_EQ(map.values.size(), 18u);
+    // The window at x = 3 covers pixels 3..13: none of the changed columns 0..2.
+    for (std::size_t y = 0; y < 3; ++y) {
+        EXPECT_LT(map.values[y * 6 + 0], 1.0);
+        EXPECT_LT(map.values[y * 6 + 2], 1.0);
+        EXPECT_NEAR(map.values[y * 6 + 3], 1.0, 1e-12);
+        EXPECT_NEAR(map.values[y * 6 + 5], 1.0, 1e-12);
+    }
+    double sum = 0.0;
+    for (const double v : map.values) sum += v;
+    EXPECT_DOUBLE_EQ(mean_ssim(a, b), sum / 18.0);  // the mean of the map
+    // Constant halves: each window's value is the luminance term of the previous test's shape.
+    const ssim_windows whole = ssim_map(constant_image(11, 11, 100, 100, 100), constant_image(11, 11, 150, 150, 150));
+    ASSERT_EQ(whole.values.size(), 1u);
+    EXPECT_NEAR(whole.values[0], 0.923092310531, 1e-9);
+}
+
 TEST(image_metrics, ssim_decreases_monotonically_with_noise) {
     const image_rgba8 a = textured_image(64, 48);
     double previous = mean_ssim(a, a);
