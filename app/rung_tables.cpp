@@ -133,9 +133,12 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
                                           bake_cache* cache, double eye_height_m) {
     species_rung_measurements out;
     out.species = one.species[0].name;
+    // A lone plant's patch is the plant alone (species_patch): its views are measured once.
+    const bool lone = scenario_to_json_text(patch) == scenario_to_json_text(one);
     // Every reference first: one player at a time holds the context's frame.
     const std::vector<reference_view> alone = reference_views(one, context, cache, eye_height_m);
-    const std::vector<reference_view> among = reference_views(patch, context, cache, eye_height_m);
+    const std::vector<reference_view> among =
+        lone ? std::vector<reference_view>{} : reference_views(patch, context, cache, eye_height_m);
     // The same views without the plant: what the terrain and sky cost there, taken off each
     // rung's shader work so its tables hold only the plant's.
     struct view_work {
@@ -164,6 +167,10 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
     for (const representation r : rungs) {
         rung_measurement m;
         m.rung = r;
+        const auto add_error = [&](std::size_t s, const view_sample& v) {
+            m.error_per_pixel[s] += float(v.error_per_pixel / n);
+            m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
+        };
         std::size_t view = 0;
         measure_views(one, r, points, context, cache, eye_height_m, alone,
                       [&](std::size_t s, const frame_record& record, const view_sample& v) {
@@ -178,12 +185,11 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
                           m.fragments[s] += float(std::max(0.0, w.fragments - e.fragments) / n);
                           m.shadow_vertices[s] += float(std::max(0.0, w.shadow_vertices - e.shadow_vertices) / n);
                           m.shadow_fragments[s] += float(std::max(0.0, w.shadow_fragments - e.shadow_fragments) / n);
+                          if (lone) add_error(s, v);
                       });
-        measure_views(patch, r, points, context, cache, eye_height_m, among,
-                      [&](std::size_t s, const frame_record&, const view_sample& v) {
-                          m.error_per_pixel[s] += float(v.error_per_pixel / n);
-                          m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
-                      });
+        if (!lone)
+            measure_views(patch, r, points, context, cache, eye_height_m, among,
+                          [&](std::size_t s, const frame_record&, const view_sample& v) { add_error(s, v); });
         out.rungs.push_back(m);
     }
     return out;
