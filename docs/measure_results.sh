@@ -21,7 +21,8 @@ scenarios=("$@")
 normal="reference,brute_force,crossed_billboard_only,baseline_25m,baseline,baseline_100m"
 normal+=",mesh_lod,mesh_lod_x0.25,mesh_lod_x0.5,mesh_lod_x2,billboard_clouds,billboard_clouds_pre_lit"
 normal+=",points_lines,points_lines_d2,points_lines_d2.5,points_lines_d3,points_lines_d4"
-normal+=",ladder,ladder_x0.5,ladder_x2,auto_30,auto_60,auto_120,auto_250,auto_350,auto_500"
+normal+=",ladder,ladder_x0.5,ladder_x2,auto_15,auto_20,auto_30,auto_45,auto_60,auto_90,auto_120,auto_180"
+normal+=",auto_250,auto_300,auto_350,auto_420,auto_500"
 sh="brute_force_sh,crossed_billboard_only_sh,baseline_25m_sh,baseline_sh,baseline_100m_sh"
 sh+=",mesh_lod_sh,billboard_clouds_sh,points_lines_sh,points_lines_d2_sh"
 
