@@ -19,6 +19,7 @@
 #include "components/octree_cell.h"
 #include "components/point_prefix.h"
 #include "components/tile_visibility.h"
+#include "models/cache/bake_cache.h"
 #include "systems/adapt_plant_budget_system.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "systems/aggregate_eco_tiles_system.h"
@@ -177,13 +178,7 @@ scene_assets build_player_assets(const scenario& s, const player_options& option
 }
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    std::uint64_t h = seed;
-    for (std::size_t i = 0; i < bytes; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ULL;
-    }
-    return h;
+    return hash_bytes(std::span(static_cast<const std::byte*>(data), bytes), seed);
 }
 
 scenario_player::scenario_player(scenario s, int threads, render::gl_context* context, bake_cache* cache,

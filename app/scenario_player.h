@@ -176,7 +176,7 @@ private:
     std::size_t m_built_meshes = 0;  // meshes before the eco tiles' point sets
 };
 
-// FNV-1a 64 over bytes (image and state hashes).
+// FNV-1a 64 over bytes (image and state hashes): the bake cache's hash_bytes for a pointer and a size.
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t seed = 0xcbf29ce484222325ULL);
 
 }  // namespace sylva
