@@ -57,16 +57,19 @@ scenario species_patch(const scenario& s, std::size_t i, std::uint32_t view_px, 
         if (per_m2 > densest_per_m2) densest = &p, densest_per_m2 = per_m2;
     }
     if (densest == nullptr) return patch;  // no population: alone, as a frame would show it
+    population_settings& p = patch.populations[0];
+    // At the population's sizes: from the scenario's eye height a smaller plant at the same
+    // projected size is seen closer, so from higher above.
+    p.scale_min = densest->scale_min;
+    p.scale_max = densest->scale_max;
     // No more plants than the population has: a lone tree (single_tree) is the plant alone,
-    // the very scenario species_alone gives, so its tables measure it once (rung_tables.cpp).
+    // species_alone's scenario itself when the population does not vary its size, so that its
+    // tables measure it once (rung_tables.cpp).
     const double plants = std::min(k_patch_plants, double(densest->count));
     if (plants < 2.0) return patch;
     const double side = std::min(std::sqrt(plants / densest_per_m2), k_patch_max_side_m);
-    population_settings& p = patch.populations[0];
     p.count = std::uint32_t(std::max(1.0, std::round(side * side * densest_per_m2)));
     p.min_spacing_m = densest->min_spacing_m;
-    p.scale_min = densest->scale_min;
-    p.scale_max = densest->scale_max;
     p.area = {-0.5 * side, -0.5 * side, 0.5 * side, 0.5 * side};
     patch.terrain.size_m = std::max(patch.terrain.size_m, 2.0 * side + 32.0);
     return patch;

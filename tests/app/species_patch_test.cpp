@@ -59,8 +59,15 @@ TEST(species_patch, is_no_wider_than_its_limit) {
 
 TEST(species_patch, of_a_lone_plant_is_that_plant_alone) {
     scenario s = two_species();
-    s.populations = {population("oak", 1, 1.0, 1.0f)};  // single_tree's: one oak in 2 m x 2 m
-    // species_alone's scenario to the letter, so the rung tables measure it once.
+    s.populations = {population("oak", 1, 1.0, 1.0f)};  // one oak in 2 m x 2 m, 0.9 to 1.1 high
+    const scenario patch = species_patch(s, 0, 256, "test");
+    ASSERT_EQ(patch.populations.size(), 1u);
+    EXPECT_EQ(patch.populations[0].count, 1u);
+    EXPECT_FLOAT_EQ(patch.populations[0].scale_min, 0.9f);  // at the population's sizes
+    EXPECT_FLOAT_EQ(patch.populations[0].scale_max, 1.1f);
+    // single_tree's oak is always its model's size: species_alone's scenario to the letter, so
+    // the rung tables measure it once.
+    s.populations[0].scale_min = s.populations[0].scale_max = 1.0f;
     EXPECT_EQ(scenario_to_json_text(species_patch(s, 0, 256, "test")),
               scenario_to_json_text(species_alone(s, 0, 256, "test")));
 }
