@@ -42,6 +42,7 @@ TEST_P(warm_frame_allocations, the_second_pass_over_the_camera_path_allocates_no
     s.height = 90;
     s.frames = 4;
     s.lod.representation = c.representation;
+    s.lod.plant_budget_ms = 0.0;  // "ladder": by projected size, though default ships a budget
     // "auto": the ladder with rungs chosen by the budget solver (resources/rung_budget.h).
     if (s.lod.representation == "auto") {
         s.lod.representation = "ladder";
