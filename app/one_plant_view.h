@@ -21,10 +21,9 @@ inline constexpr std::uint32_t k_one_plant_reference_samples = 3;
 scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px, const std::string& purpose);
 
 // Species `i` of `s` as a patch of its own population (issue 21, "Where the tables fall short"):
-// k_patch_plants plants (no more than that population has; one is species_alone's scenario
-// exactly) at the density and spacing of the
-// species' densest population in a square around the origin (no wider than
-// k_patch_max_side_m), otherwise set up as
+// k_patch_plants plants (no more than that population has; one is species_alone's plant at
+// the population's sizes) at the density, spacing and sizes of the species' densest population
+// in a square around the origin (no wider than k_patch_max_side_m), otherwise set up as
 // species_alone. A plant judged in a patch is seen through and beside its neighbours, as a
 // frame shows it: a carpet of quads that each lose a little coverage, or a crown whose lower
 // half the next trees hide.
