@@ -20,7 +20,7 @@ inline constexpr std::uint32_t k_one_plant_reference_samples = 3;
 // after the species and `purpose`.
 scenario species_alone(const scenario& s, std::size_t i, std::uint32_t view_px, const std::string& purpose);
 
-// Species `i` of `s` as a patch of its own population (issue 21, "Where the tables fall short"):
+// Species `i` of `s` as a patch of its own population (issue 21, "Where the tables fell short"):
 // k_patch_plants plants (no more than that population has; one is species_alone's plant at
 // the population's sizes) at the density, spacing and sizes of the species' densest population
 // in a square around the origin (no wider than k_patch_max_side_m), otherwise set up as

@@ -37,7 +37,7 @@ struct view_sample {
 // `meadow` at 480x270 auto_1000 covered the plants with IoU 0.680 against 0.551, SSIM 0.804
 // against 0.791, FLIP 0.073 against 0.077; on `default` it lost a little (SSIM 0.774 against
 // 0.777, FLIP 0.072 against 0.073). Three other errors were tried and left out: docs/
-// representations/ladder.md, "Where the tables fall short".
+// representations/ladder.md, "Where the tables fell short".
 constexpr std::uint32_t k_error_block = 2;
 
 view_sample compare(const image_rgba8& reference, const std::vector<std::uint32_t>& reference_ids,
