@@ -134,7 +134,7 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
     species_rung_measurements out;
     out.species = one.species[0].name;
     // A lone plant's patch is the plant alone (species_patch): its views are measured once.
-    const bool lone = scenario_to_json_text(patch) == scenario_to_json_text(one);
+    const bool lone = patch == one;
     // Every reference first: one player at a time holds the context's frame.
     const std::vector<reference_view> alone = reference_views(one, context, cache, eye_height_m);
     const std::vector<reference_view> among =
