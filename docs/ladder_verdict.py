@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Writes docs/results/ladder_verdict.md, the auto ladder against the engine baseline (issue 21),
+from `sylva bench` outputs.
+
+Usage: docs/ladder_verdict.py --commit SHA --date YYYY-MM-DD --command "CMD" RUN_DIR [RUN_DIR ...]
+       docs/ladder_verdict.py --kept
+
+Each RUN_DIR holds one scenario's bench.json (`sylva bench --out RUN_DIR`) run with the baseline
+sweep and the auto sweep. The bench.json files are kept as docs/results/ladder_verdict/<scenario>.json
+with the date, commit and command beside them, and `--kept` writes the page again from those.
+The verdict itself is the bench's (its `verdicts`: an auto point at most as slow, by the median
+of the round-by-round time ratios, with SSIM at least and FLIP at most the baseline point's).
+This adds, for each baseline point, the auto point that draws the very same image when there
+is one (equal errors to the last digit: a tie, whatever the timing says), and the auto points
+nearest it in time.
+"""
+import json
+import os
+import shutil
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+KEPT = os.path.join(HERE, "results", "ladder_verdict")
+PAGE = os.path.join(HERE, "results", "ladder_verdict.md")
+BASELINE_POINTS = ["crossed_billboard_only", "baseline_25m", "baseline", "baseline_100m"]
+
+
+def same_image(a, b):
+    keys = ("ssim", "perceptual", "psnr", "coverage_iou")
+    return all(a["error"][k] == b["error"][k] for k in keys)
+
+
+def point(c):
+    e = c["error"]
+    return f"{c['frame_ms']['vs_baseline']:.2f}×, SSIM {e['ssim']:.4f}, FLIP {e['perceptual']:.4f}"
+
+
+def scenario_section(kept):
+    bench, meta = kept["bench"], kept["meta"]
+    by_name = {c["name"]: c for c in bench["configurations"]}
+    autos = sorted((c for c in bench["configurations"] if c["family"] == "auto"),
+                   key=lambda c: c["frame_ms"]["vs_baseline"])
+    verdict = next(v for v in bench["verdicts"] if v["family"] == "auto" and v["lighting"] == "normal")
+    out = [f"## `{bench['scenario']}`", "",
+           f"{bench['frames']} frames at {bench['width']}×{bench['height']}, {bench['timing_rounds']} timing "
+           f"rounds; {bench['machine']}; {bench['gl_renderer']}; measured {meta['date']} at commit "
+           f"`{meta['commit'][:10]}`:", "", "```", meta["command"], "```", "",
+           "| baseline point | its time, SSIM, FLIP | verdict | the same image | auto points nearest in time |",
+           "|---|---|---|---|---|"]
+    for name in BASELINE_POINTS:
+        if name not in by_name:
+            continue
+        b = by_name[name]
+        v = next((p for p in verdict["points"] if p["baseline"] == name), None)
+        if v is None:
+            said = "n/a"
+        elif v["beaten_by"]:
+            said = f"✓ {v['beaten_by']} ({v['time_ratio']:.2f}×)"
+        else:
+            said = f"✗ {v['why_not']}"
+        twins = [a["name"] for a in sorted(autos, key=lambda a: a["quality"]) if same_image(a, b)]
+        twin = f"tie: {', '.join(twins)}" if twins else "none"
+        t = b["frame_ms"]["vs_baseline"]
+        near = sorted(autos, key=lambda a: abs(a["frame_ms"]["vs_baseline"] - t))[:2]
+        near_text = "; ".join(f"{a['name']} {point(a)}" for a in sorted(near, key=lambda a: a["frame_ms"]["vs_baseline"]))
+        out.append(f"| `{name}` | {point(b)} | {said} | {twin} | {near_text} |")
+    out += ["", f"Every point beaten: {'yes' if verdict['beats_every_baseline_point'] else 'no'} "
+            "(a ✓ or ✗ at 1.00 ± 0.03 is within this machine's timing noise; a tie draws the same image).", ""]
+    return out
+
+
+def write_page():
+    runs = []
+    for name in sorted(os.listdir(KEPT)):
+        if name.endswith(".json"):
+            with open(os.path.join(KEPT, name)) as f:
+                runs.append(json.load(f))
+    order = {"default": 0, "forest": 1, "landscape": 2}
+    runs.sort(key=lambda k: order.get(k["bench"]["scenario"], 9))
+    lines = ["# The auto ladder against the engine baseline", "",
+             "Written by `docs/ladder_verdict.py` from `sylva bench` outputs; nothing here is edited by hand. "
+             "Errors against each scenario's 3×3 supersampled full-geometry reference; times as ratios to "
+             "`baseline` within one run. What the figures mean: "
+             "[the ladder](../representations/ladder.md#against-the-engine-baseline).", ""]
+    for kept in runs:
+        lines += scenario_section(kept)
+    with open(PAGE, "w") as f:
+        f.write("\n".join(lines))
+
+
+def main(argv):
+    if argv[1:] == ["--kept"]:
+        write_page()
+        return 0
+    args, runs = {}, []
+    i = 1
+    while i < len(argv):
+        if argv[i] in ("--commit", "--date", "--command") and i + 1 < len(argv):
+            args[argv[i][2:]] = argv[i + 1]
+            i += 2
+        else:
+            runs.append(argv[i])
+            i += 1
+    if not runs or set(args) != {"commit", "date", "command"}:
+        print(__doc__, file=sys.stderr)
+        return 2
+    os.makedirs(KEPT, exist_ok=True)
+    for run in runs:
+        path = os.path.join(run, "bench.json")
+        try:
+            with open(path) as f:
+                bench = json.load(f)
+        except (OSError, ValueError) as e:
+            print(f"ladder_verdict: {path}: {e}", file=sys.stderr)
+            return 2
+        if bench.get("partial"):
+            print(f"ladder_verdict: {path} is a partial run", file=sys.stderr)
+            return 2
+        for c in bench["configurations"]:
+            c.pop("records", None)  # per-frame records: the page needs only the summaries
+        command = args["command"].replace("SCENARIO", bench["scenario"])
+        with open(os.path.join(KEPT, bench["scenario"] + ".json"), "w") as f:
+            json.dump({"bench": bench, "meta": dict(args, command=command)}, f)
+    write_page()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
