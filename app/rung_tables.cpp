@@ -103,13 +103,24 @@ std::vector<reference_view> reference_views(const scenario& s, render::gl_contex
 }
 
 // Draws every view of `s` with rung `r` and hands each to `seen(size index, record, sample)`.
+// The LoDF rung draws the leaves a ladder whose LoDF rung is whole below `lodf_top_px` gives a
+// plant of each size (systems/update_lodf_system.h lodf_leaves_at; 0: every leaf), so its table
+// holds what a frame's LoDF plant of that size draws, not the whole foliage.
 void measure_views(const scenario& s, representation r, const point_line_quality& points,
-                   render::gl_context& context, bake_cache* cache, double eye_height_m,
+                   render::gl_context& context, bake_cache* cache, double eye_height_m, float lodf_top_px,
                    const std::vector<reference_view>& references,
                    const std::function<void(std::size_t, const frame_record&, const view_sample&)>& seen) {
     player_options options;
     options.policy = {lod_policy::kind::single, r, r, 0.0f};
     options.policy.points = points;
+    if (r == representation::lodf && lodf_top_px > 0.0f) {
+        // update_lodf reads the top from the species' ladder: one whose LoDF rung starts there.
+        ladder top;
+        top.count = 2;
+        top.rungs = {representation::mesh_full, representation::lodf};
+        top.below_px[1] = lodf_top_px;
+        options.policy.ladders.assign(s.species.size(), top);
+    }
     options.scenario_lod = false;
     options.measure_costs = false;
     options.id_buffer = true;
@@ -130,7 +141,7 @@ void measure_views(const scenario& s, representation r, const point_line_quality
 species_rung_measurements measure_species(const scenario& one, const scenario& patch,
                                           const std::vector<representation>& rungs,
                                           const point_line_quality& points, render::gl_context& context,
-                                          bake_cache* cache, double eye_height_m) {
+                                          bake_cache* cache, double eye_height_m, float lodf_top_px) {
     species_rung_measurements out;
     out.species = one.species[0].name;
     // A lone plant's patch is the plant alone (species_patch): its views are measured once.
@@ -172,7 +183,7 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
             m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
         };
         std::size_t view = 0;
-        measure_views(one, r, points, context, cache, eye_height_m, alone,
+        measure_views(one, r, points, context, cache, eye_height_m, lodf_top_px, alone,
                       [&](std::size_t s, const frame_record& record, const view_sample& v) {
                           m.plant_pixels[s] += float(v.plant_pixels / n);
                           m.drawn_pixels[s] += float(v.drawn_pixels / n);
@@ -188,7 +199,7 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
                           if (lone) add_error(s, v);
                       });
         if (!lone)
-            measure_views(patch, r, points, context, cache, eye_height_m, among,
+            measure_views(patch, r, points, context, cache, eye_height_m, lodf_top_px, among,
                           [&](std::size_t s, const frame_record&, const view_sample& v) { add_error(s, v); });
         out.rungs.push_back(m);
     }
@@ -196,10 +207,13 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
 }
 
 std::uint64_t table_key(const scenario& one, const scenario& patch, const std::vector<representation>& rungs,
-                        const point_line_quality& points, double eye_height_m) {
+                        const point_line_quality& points, double eye_height_m, float lodf_top_px) {
     std::ostringstream text;
     text << scenario_to_json_text(one) << "|patch:" << scenario_to_json_text(patch) << "|eye:" << eye_height_m << "|rungs";
     for (const representation r : rungs) text << ':' << int(r);
+    // Only a LoDF rung's tables depend on where its ladder starts it (the other tables' keys, and
+    // so what the cache holds for them, stay as they were).
+    if (std::find(rungs.begin(), rungs.end(), representation::lodf) != rungs.end()) text << "|lodf_top:" << lodf_top_px;
     text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
          << int(points.fog_weighted) << "|version:" << k_format_version;
     const std::string key = text.str();
@@ -339,17 +353,18 @@ std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, co
                                                            const point_line_quality& points,
                                                            render::gl_context& context, bake_cache* cache,
                                                            const std::function<void(const std::string&)>& progress,
-                                                           double eye_height_m) {
+                                                           double eye_height_m, std::span<const float> lodf_top_px) {
     std::vector<species_rung_measurements> out;
     for (std::size_t i = 0; i < s.species.size(); ++i) {
+        const float top = i < lodf_top_px.size() ? lodf_top_px[i] : 0.0f;
         const scenario one = species_alone(s, i, k_rung_table_view_px, "rung_tables");
         const scenario patch = species_patch(s, i, k_rung_table_view_px, "rung_tables");
         out.push_back(read_or_bake(
-            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m),
+            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m, top),
             [&] {
                 if (progress) progress(s.species[i].name);  // measuring, not read from the cache
                 return encode_rung_measurements(
-                    measure_species(one, patch, rungs, points, context, cache, eye_height_m));
+                    measure_species(one, patch, rungs, points, context, cache, eye_height_m, top));
             },
             [](const std::vector<std::byte>& bytes) { return decode_rung_measurements(bytes); }));
     }

@@ -101,6 +101,39 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
     EXPECT_THROW(decode_rung_measurements(std::span(bytes).first(bytes.size() - 3)), std::runtime_error);
 }
 
+// The LoDF rung is measured as a frame draws it: below the size where its ladder starts LoDF a
+// plant draws L·(size / top)² of its L leaves (update_lodf_system.h), so its table must cost
+// fewer triangles there than the full mesh, and the same at and above the top. Measured with
+// every leaf (top 0) the rung looked like a second full mesh under `auto`, which then never
+// chose it (forest: not one plant at any budget).
+TEST(rung_tables, the_lodf_rung_is_measured_with_the_leaves_its_size_draws) {
+    SYLVA_REQUIRE_GL();
+    const scenario s =
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
+    const std::vector<representation> rungs{representation::mesh_full, representation::lodf};
+    constexpr float k_top = 128.0f;
+    const std::array<float, 1> top{k_top};
+    const auto tables =
+        measure_rung_tables(s, rungs, point_line_quality{}, *testing::shared_gl_context(), nullptr, {},
+                            k_rung_table_level_eye, top);
+    const rung_measurement& full = of(tables[0], representation::mesh_full);
+    const rung_measurement& lodf = of(tables[0], representation::lodf);
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+        const float size = k_rung_table_sizes_px[i];
+        std::printf("%6.0f px: full %8.0f triangles, error %.4f; lodf %8.0f triangles, error %.4f\n", size,
+                    full.triangles[i], full.error_per_pixel[i], lodf.triangles[i], lodf.error_per_pixel[i]);
+        if (size >= k_top) EXPECT_EQ(lodf.triangles[i], full.triangles[i]) << "size " << size;
+        else EXPECT_LT(lodf.triangles[i], full.triangles[i]) << "size " << size;
+    }
+    // At 2 px a plant keeps one leaf per cluster, about its trunk and branches alone (their mesh
+    // stays whole); at 64 px, half the top, a quarter of the leaves' triangles are back (measured
+    // 74,240 at 2 px, 137,174 whole, 89,788 at 64 px: 15,548 against a quarter of 62,934, 15,734).
+    const float bark = lodf.triangles[0], leaves = full.triangles[0] - bark;
+    const std::size_t half_top = 5;
+    ASSERT_EQ(k_rung_table_sizes_px[half_top], k_top / 2.0f);
+    EXPECT_NEAR(lodf.triangles[half_top] - bark, leaves / 4.0f, 0.05f * leaves / 4.0f);
+}
+
 // A species planted densely is judged among its own kind (app/one_plant_view.h species_patch):
 // meadow's grass, whose crossed quads each lose a little coverage, loses more of the frame in a
 // carpet than one tuft alone shows, and the tables see it.
