@@ -141,12 +141,20 @@ bench_configuration_spec ladder_configuration(double factor = 1.0) {
 
 // Rebollo 2006 as a rung: each species' ladder with LoDF in the reduced mesh's place, so a near
 // plant's foliage thins leaf by leaf from the full mesh down to where the next rung takes over,
-// instead of jumping to the reduced mesh.
-bench_configuration_spec ladder_lodf() {
-    bench_configuration_spec c = ladder_configuration();
-    c.name = "ladder_lodf";
-    c.description = "each species' ladder with LoDF (Rebollo 2006) for its reduced mesh: the foliage thinned "
-                    "continuously from the full mesh to the next rung";
+// instead of jumping to the reduced mesh. Its own family, scaled as `ladder` is, so that its
+// popping and error can be read against the ladder's at equal frame time (issue 23).
+bench_configuration_spec ladder_lodf(double factor = 1.0) {
+    bench_configuration_spec c = ladder_configuration(factor);
+    std::ostringstream name;
+    name << "ladder_lodf";
+    if (factor != 1.0) name << "_x" << factor;
+    c.name = name.str();
+    c.family = "ladder_lodf";
+    std::ostringstream description;
+    description << "each species' ladder with LoDF (Rebollo 2006) for its reduced mesh: the foliage thinned "
+                   "continuously from the full mesh to the next rung";
+    if (factor != 1.0) description << ", projected sizes x" << factor;
+    c.description = description.str();
     c.options.policy.lodf_for_reduced = true;
     return c;
 }
@@ -295,7 +303,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
         list.push_back(ladder_configuration(factor));
         if (factor == 1.0) list.push_back(lit_implicitly(ladder_configuration(factor)));
     }
-    list.push_back(ladder_lodf());
+    for (double factor : {1.0, 0.5, 2.0, 4.0}) list.push_back(ladder_lodf(factor));
     list.push_back(ladder_without_shells());
     for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
     list.push_back(ladder_shells_standard_blending());
