@@ -13,6 +13,7 @@
 #include "models/image/image_ops.h"
 #include "resources/playback.h"
 #include "scenarios/scenario_loader.h"
+#include "systems/update_lodf_system.h"
 
 namespace sylva {
 namespace {
@@ -102,25 +103,36 @@ std::vector<reference_view> reference_views(const scenario& s, render::gl_contex
     return views;
 }
 
+// What a rung is measured as, beyond the rung itself: as its species' ladder draws it.
+struct rung_context {
+    float lodf_top_px = 0.0f;  // where the ladder starts LoDF (0: every leaf at every size)
+    representation caster = representation::none;  // what it casts its shadow as (none: itself)
+};
+
 // Draws every view of `s` with rung `r` and hands each to `seen(size index, record, sample)`.
 // The LoDF rung draws the leaves a ladder whose LoDF rung is whole below `lodf_top_px` gives a
-// plant of each size (systems/update_lodf_system.h lodf_leaves_at; 0: every leaf), so its table
-// holds what a frame's LoDF plant of that size draws, not the whole foliage.
+// plant of each size (systems/update_lodf_system.h lodf_leaves_at), so its table holds what a
+// frame's LoDF plant of that size draws, not the whole foliage; a rung whose ladder names its
+// caster casts as it (ladder::shadow), so its table holds that shadow's cost and error.
 void measure_views(const scenario& s, representation r, const point_line_quality& points,
-                   render::gl_context& context, bake_cache* cache, double eye_height_m, float lodf_top_px,
+                   render::gl_context& context, bake_cache* cache, double eye_height_m, const rung_context& as,
                    const std::vector<reference_view>& references,
                    const std::function<void(std::size_t, const frame_record&, const view_sample&)>& seen) {
     player_options options;
     options.policy = {lod_policy::kind::single, r, r, 0.0f};
     options.policy.points = points;
-    if (r == representation::lodf && lodf_top_px > 0.0f) {
-        // update_lodf reads the top from the species' ladder: one whose LoDF rung starts there.
-        ladder top;
-        top.count = 2;
-        top.rungs = {representation::mesh_full, representation::lodf};
-        top.below_px[1] = lodf_top_px;
-        options.policy.ladders.assign(s.species.size(), top);
+    // update_lodf and build_draw_list read both from the species' ladder: one that says only that.
+    ladder own;
+    if (r == representation::lodf && as.lodf_top_px > 0.0f) {
+        own.count = 2;
+        own.rungs = {representation::mesh_full, representation::lodf};
+        own.below_px[1] = as.lodf_top_px;
+    } else if (as.caster != representation::none && as.caster != r) {
+        own.count = 1;
+        own.rungs[0] = r;
+        own.shadow[0] = as.caster;
     }
+    if (own.count > 0) options.policy.ladders.assign(s.species.size(), own);
     options.scenario_lod = false;
     options.measure_costs = false;
     options.id_buffer = true;
@@ -141,7 +153,8 @@ void measure_views(const scenario& s, representation r, const point_line_quality
 species_rung_measurements measure_species(const scenario& one, const scenario& patch,
                                           const std::vector<representation>& rungs,
                                           const point_line_quality& points, render::gl_context& context,
-                                          bake_cache* cache, double eye_height_m, float lodf_top_px) {
+                                          bake_cache* cache, double eye_height_m, const ladder& own,
+                                          float lodf_top_px) {
     species_rung_measurements out;
     out.species = one.species[0].name;
     // A lone plant's patch is the plant alone (species_patch): its views are measured once.
@@ -178,12 +191,13 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
     for (const representation r : rungs) {
         rung_measurement m;
         m.rung = r;
+        const rung_context as{lodf_top_px, own.caster_of(r)};
         const auto add_error = [&](std::size_t s, const view_sample& v) {
             m.error_per_pixel[s] += float(v.error_per_pixel / n);
             m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
         };
         std::size_t view = 0;
-        measure_views(one, r, points, context, cache, eye_height_m, lodf_top_px, alone,
+        measure_views(one, r, points, context, cache, eye_height_m, as, alone,
                       [&](std::size_t s, const frame_record& record, const view_sample& v) {
                           m.plant_pixels[s] += float(v.plant_pixels / n);
                           m.drawn_pixels[s] += float(v.drawn_pixels / n);
@@ -199,7 +213,7 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
                           if (lone) add_error(s, v);
                       });
         if (!lone)
-            measure_views(patch, r, points, context, cache, eye_height_m, lodf_top_px, among,
+            measure_views(patch, r, points, context, cache, eye_height_m, as, among,
                           [&](std::size_t s, const frame_record&, const view_sample& v) { add_error(s, v); });
         out.rungs.push_back(m);
     }
@@ -207,13 +221,16 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
 }
 
 std::uint64_t table_key(const scenario& one, const scenario& patch, const std::vector<representation>& rungs,
-                        const point_line_quality& points, double eye_height_m, float lodf_top_px) {
+                        const point_line_quality& points, double eye_height_m, const ladder& own,
+                        float lodf_top_px) {
     std::ostringstream text;
     text << scenario_to_json_text(one) << "|patch:" << scenario_to_json_text(patch) << "|eye:" << eye_height_m << "|rungs";
     for (const representation r : rungs) text << ':' << int(r);
     // Only a LoDF rung's tables depend on where its ladder starts it (the other tables' keys, and
     // so what the cache holds for them, stay as they were).
     if (std::find(rungs.begin(), rungs.end(), representation::lodf) != rungs.end()) text << "|lodf_top:" << lodf_top_px;
+    for (const representation r : rungs)  // likewise a rung casting as another
+        if (own.caster_of(r) != r) text << "|shadow:" << int(r) << '>' << int(own.caster_of(r));
     text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
          << int(points.fog_weighted) << "|version:" << k_format_version;
     const std::string key = text.str();
@@ -353,18 +370,22 @@ std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, co
                                                            const point_line_quality& points,
                                                            render::gl_context& context, bake_cache* cache,
                                                            const std::function<void(const std::string&)>& progress,
-                                                           double eye_height_m, std::span<const float> lodf_top_px) {
+                                                           double eye_height_m, std::span<const ladder> ladders,
+                                                           float ladder_size_scale) {
     std::vector<species_rung_measurements> out;
     for (std::size_t i = 0; i < s.species.size(); ++i) {
-        const float top = i < lodf_top_px.size() ? lodf_top_px[i] : 0.0f;
+        const ladder own = i < ladders.size() ? ladders[i] : ladder{};
+        // Sizes the ladder sees are scaled (the bench's ladder_x…): its LoDF top, in pixels of
+        // the tables, moves the other way.
+        const float top = lodf_top_px(own) / ladder_size_scale;
         const scenario one = species_alone(s, i, k_rung_table_view_px, "rung_tables");
         const scenario patch = species_patch(s, i, k_rung_table_view_px, "rung_tables");
         out.push_back(read_or_bake(
-            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m, top),
+            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m, own, top),
             [&] {
                 if (progress) progress(s.species[i].name);  // measuring, not read from the cache
                 return encode_rung_measurements(
-                    measure_species(one, patch, rungs, points, context, cache, eye_height_m, top));
+                    measure_species(one, patch, rungs, points, context, cache, eye_height_m, own, top));
             },
             [](const std::vector<std::byte>& bytes) { return decode_rung_measurements(bytes); }));
     }

@@ -68,14 +68,16 @@ struct species_rung_measurements {
 // Measures `rungs` of every species of `s` (drawn with `points` for the points rung), through
 // `cache` when it is not null, seen from `eye_height_m` above the ground (k_rung_table_level_eye:
 // level with the plant's centre). `progress` hears each species' name as its measuring starts
-// (not when its tables come from the cache). `lodf_top_px[i]`: the size below which species i's
-// ladder draws LoDF whole (update_lodf_system.h lodf_top_px over the ladder size scale), so its
-// LoDF rung is measured with the leaves a plant of each size draws; missing or 0: every leaf.
+// (not when its tables come from the cache). `ladders[i]`, species i's ladder (its sizes seen
+// x `ladder_size_scale`), says how its rungs are drawn: the LoDF rung with the leaves a plant of
+// each size keeps below where the ladder starts it (update_lodf_system.h), a rung whose shadow
+// the ladder casts as another (ladder::shadow) so; a species without one: every leaf, own shadows.
 inline constexpr double k_rung_table_level_eye = -1.0;
 std::vector<species_rung_measurements> measure_rung_tables(
     const scenario& s, const std::vector<representation>& rungs, const point_line_quality& points,
     render::gl_context& context, bake_cache* cache, const std::function<void(const std::string&)>& progress = {},
-    double eye_height_m = k_rung_table_level_eye, std::span<const float> lodf_top_px = {});
+    double eye_height_m = k_rung_table_level_eye, std::span<const ladder> ladders = {},
+    float ladder_size_scale = 1.0f);
 
 // The height above the ground the scenario's camera keys see from (their median, to 0.5 m, at
 // least 0.5 m): where the rung tables are measured from, so a fern the camera looks down on is

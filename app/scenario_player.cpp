@@ -410,15 +410,12 @@ rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_
     const heightfield& terrain = m_assets.terrain;
     const double eye_height_m = typical_eye_height_m(
         m_scenario, [&](double x, double z) { return double(terrain.height_at(x, z)); });
-    // A LoDF plant's leaves follow its size below where its ladder starts LoDF (update_lodf):
-    // its rung is measured so, the bench's scaled ladders' start moved with their scale.
-    std::vector<float> lodf_top;
-    for (const ladder& l : policy.ladders) lodf_top.push_back(lodf_top_px(l) / policy.ladder_size_scale);
+    // Each rung is measured as its species' ladder draws it (LoDF's leaves, the shadow it casts).
     const auto measured = measure_rung_tables(m_scenario, rungs, policy.points, context, cache,
                                               [](const std::string& species) {
                                                   spdlog::info("measuring the rung tables of {} (once; kept in the bake cache)", species);
                                               },
-                                              eye_height_m, lodf_top);
+                                              eye_height_m, policy.ladders, policy.ladder_size_scale);
     context.make_current();  // the measuring players drew in it
     std::optional<primitive_cost_model> model;
     if (cache && options.measure_costs)

@@ -66,13 +66,29 @@ struct ladder {
     // below_px[0] is unused.
     std::array<float, k_max_rungs> below_px{};
     std::array<float, k_max_rungs> band{};  // band[i]: half-width of the step into rung i
+    // shadow[i]: what a plant on rung i casts its shadow as, another of the ladder's mesh-drawn
+    // rungs (a near tree's leaves cost more in its shadow cascade than in the view); none: itself.
+    std::array<representation, k_max_rungs> shadow{};
     std::uint8_t count = 0;
 
     bool reaches(representation r) const {
         return std::find(rungs.begin(), rungs.begin() + count, r) != rungs.begin() + count;
     }
+    // What a plant drawn as `r` casts its shadow as.
+    representation caster_of(representation r) const {
+        for (std::size_t i = 0; i < count; ++i)
+            if (rungs[i] == r && shadow[i] != representation::none) return shadow[i];
+        return r;
+    }
     bool operator==(const ladder&) const = default;
 };
+
+// The rungs drawn as one mesh per plant in every pass, which alone may cast another's shadow or
+// be cast (points and lines draw prefixes, LoDF its slots, eco tiles and shells no plant).
+inline bool casts_as_a_mesh(representation r) {
+    return r == representation::mesh_full || r == representation::mesh_reduced || r == representation::mesh_far ||
+           r == representation::billboard_cloud || r == representation::crossed_billboard;
+}
 
 // Why a ladder cannot be used, and the rung at fault.
 struct ladder_problem {
@@ -101,6 +117,15 @@ inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
                                          std::to_string(l.below_px[i - 1]) + ")"};
         if (i >= 2 && l.below_px[i] * (1.0f + l.band[i]) > l.below_px[i - 1] * (1.0f - l.band[i - 1]))
             return ladder_problem{i, "band", "its band (below_px x (1 +- band)) overlaps the band of the rung before"};
+    }
+    for (std::size_t i = 0; i < l.count; ++i) {
+        if (l.shadow[i] == representation::none) continue;
+        if (!casts_as_a_mesh(l.rungs[i]) || !casts_as_a_mesh(l.shadow[i]))
+            return ladder_problem{i, "shadow",
+                                  "only mesh_full, mesh_reduced, mesh_far, billboard_cloud and crossed_billboard "
+                                  "cast their shadows as one another"};
+        if (!l.reaches(l.shadow[i]))
+            return ladder_problem{i, "shadow", "the shadow must be cast as one of this ladder's own rungs"};
     }
     for (std::size_t i = 0; i < l.count; ++i)
         if (l.rungs[i] == representation::shell && (i == 0 || i + 1 != l.count))

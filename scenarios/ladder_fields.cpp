@@ -9,7 +9,8 @@ const field_table<ladder_step_settings>& step_fields() {
                                   .choice("rung", &t::rung, k_rung_names)
                                   .required()
                                   .number("below_px", &t::below_px, {0.01, 1e6})
-                                  .number("band", &t::band, {0.0, 0.9});
+                                  .number("band", &t::band, {0.0, 0.9})
+                                  .choice("shadow", &t::shadow, k_rung_names);
     static_assert(k_max_band == 0.9f, "the range above is lod/ladder.h's k_max_band");
     return table;
 }
@@ -23,6 +24,8 @@ ladder ladder_of(const std::vector<ladder_step_settings>& steps) {
         l.rungs[i] = rung_of_name(steps[i].rung).value_or(representation::none);
         l.below_px[i] = steps[i].below_px;
         l.band[i] = i == 0 ? 0.0f : steps[i].band;
+        l.shadow[i] = steps[i].shadow.empty() ? representation::none
+                                              : rung_of_name(steps[i].shadow).value_or(representation::none);
     }
     return l;
 }
@@ -55,6 +58,7 @@ void write_ladder(const std::vector<ladder_step_settings>& steps, nlohmann::json
             step["below_px"] = steps[i].below_px;
             step["band"] = steps[i].band;
         }
+        if (!steps[i].shadow.empty()) step["shadow"] = steps[i].shadow;
         items.push_back(std::move(step));
     }
     parent["ladder"] = std::move(items);

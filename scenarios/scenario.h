@@ -270,11 +270,13 @@ struct terrain_settings {
 
 // One rung of a ladder (lod/ladder.h), nearest first: `rung` is one of lod/ladder.h's
 // k_rung_names; every rung but the first takes over below `below_px` of projected size, across a
-// band of ±`band` of it.
+// band of ±`band` of it. `shadow`: another of the ladder's rungs its plants cast their shadows
+// as ("": their own).
 struct ladder_step_settings {
     std::string rung;
     float below_px = 0.0f;  // 0: not given (the first rung takes none)
     float band = 0.15f;
+    std::string shadow = {};
     bool operator==(const ladder_step_settings&) const = default;
 };
 

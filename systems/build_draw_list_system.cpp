@@ -79,7 +79,8 @@ public:
           m_cascade_set(cascades),
           m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y,
                                               cam.viewport_height_px)),
-          m_costs(costs) {
+          m_costs(costs),
+          m_ladders(policy.ladders) {
         m_cascade_count = cascades.count;
         for (int c = 0; c < cascades.count; ++c) {
             m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
@@ -131,9 +132,12 @@ public:
         }
         if (lod.current != representation::points) {
             d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
+            // The rung's caster when its ladder names one (ladder::shadow), else the rung itself.
+            const auto k = static_cast<std::size_t>(p.species);
+            const representation caster = k < m_ladders.size() ? m_ladders[k].caster_of(lod.current) : lod.current;
             for (int c = 0; c < m_cascade_count; ++c)
                 d.mesh[std::size_t(shadow_pass(c))] =
-                    mesh_of(species, coarser(lod.current, m_camera.full_geometry ? 0 : c));
+                    mesh_of(species, coarser(caster, m_camera.full_geometry ? 0 : c));
             return d;
         }
         d.prefixed = true;
@@ -198,6 +202,7 @@ private:
     const primitive_costs& m_costs;
     std::array<cascade_bounds, k_max_cascades> m_cascades{};
     int m_cascade_count = 0;
+    const std::vector<ladder>& m_ladders;  // a species' ladder may name what a rung casts as
 };
 
 instance_gpu make_instance(const camera& cam, const world_transform& t, const plant_instance& p,

@@ -112,10 +112,14 @@ TEST(rung_tables, the_lodf_rung_is_measured_with_the_leaves_its_size_draws) {
         load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
     const std::vector<representation> rungs{representation::mesh_full, representation::lodf};
     constexpr float k_top = 128.0f;
-    const std::array<float, 1> top{k_top};
+    ladder own;  // LoDF whole below k_top: lodf_top_px is its below_px x (1 + its band, 0)
+    own.count = 2;
+    own.rungs = {representation::mesh_full, representation::lodf};
+    own.below_px[1] = k_top;
+    const std::array<ladder, 1> ladders{own};
     const auto tables =
         measure_rung_tables(s, rungs, point_line_quality{}, *testing::shared_gl_context(), nullptr, {},
-                            k_rung_table_level_eye, top);
+                            k_rung_table_level_eye, ladders);
     const rung_measurement& full = of(tables[0], representation::mesh_full);
     const rung_measurement& lodf = of(tables[0], representation::lodf);
     for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
@@ -132,6 +136,35 @@ TEST(rung_tables, the_lodf_rung_is_measured_with_the_leaves_its_size_draws) {
     const std::size_t half_top = 5;
     ASSERT_EQ(k_rung_table_sizes_px[half_top], k_top / 2.0f);
     EXPECT_NEAR(lodf.triangles[half_top] - bark, leaves / 4.0f, 0.05f * leaves / 4.0f);
+}
+
+// A rung whose ladder casts its shadow as another (ladder::shadow) is measured so: the full oak
+// casting as its two crossed quads draws the same view and shades far fewer shadow fragments.
+TEST(rung_tables, a_rung_is_measured_with_the_shadow_its_ladder_casts) {
+    SYLVA_REQUIRE_GL();
+    const scenario s =
+        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
+    const std::vector<representation> rungs{representation::mesh_full};
+    ladder cast;
+    cast.count = 2;
+    cast.rungs = {representation::mesh_full, representation::crossed_billboard};
+    cast.below_px[1] = 20.0f;
+    cast.shadow[0] = representation::crossed_billboard;
+    const std::array<ladder, 1> ladders{cast};
+    auto& context = *testing::shared_gl_context();
+    const rung_measurement own = measure_rung_tables(s, rungs, point_line_quality{}, context, nullptr)[0].rungs[0];
+    const rung_measurement quads =
+        measure_rung_tables(s, rungs, point_line_quality{}, context, nullptr, {}, k_rung_table_level_eye, ladders)[0]
+            .rungs[0];
+    bool cast_somewhere = false;
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+        SCOPED_TRACE("size " + std::to_string(k_rung_table_sizes_px[i]));
+        EXPECT_EQ(quads.triangles[i], own.triangles[i]);  // the view draws the full mesh either way
+        if (own.shadow_triangles[i] == 0.0f) continue;     // beyond the measuring scene's shadows
+        cast_somewhere = true;
+        EXPECT_LT(quads.shadow_triangles[i], 0.01f * own.shadow_triangles[i]);
+    }
+    EXPECT_TRUE(cast_somewhere);
 }
 
 // A species planted densely is judged among its own kind (app/one_plant_view.h species_patch):

@@ -131,5 +131,34 @@ TEST(ladder_fields, an_error_threshold_needs_a_ladder_and_no_budget) {
     EXPECT_EQ(load(j).lod.target_frame_ms, 30.0) << "a frame-time target drives a ladder's budget";
 }
 
+// A rung may cast its shadow as another of its ladder's rungs drawn as one mesh (ladder::shadow):
+// read into the runtime's ladder, written back, and refused naming the field otherwise.
+TEST(ladder_fields, a_rung_casts_its_shadow_as_another_of_its_ladder_s_mesh_rungs) {
+    const json cast = json::parse(R"([{"rung": "mesh_full", "shadow": "billboard_cloud"},
+                                      {"rung": "billboard_cloud", "below_px": 200},
+                                      {"rung": "points_lines", "below_px": 50}])");
+    const scenario s = load(with_ladder(cast));
+    const ladder l = ladder_of(s.lod.ladder);
+    EXPECT_EQ(l.shadow[0], representation::billboard_cloud);
+    EXPECT_EQ(l.shadow[1], representation::none);
+    EXPECT_EQ(l.caster_of(representation::mesh_full), representation::billboard_cloud);
+    EXPECT_EQ(l.caster_of(representation::billboard_cloud), representation::billboard_cloud);
+    EXPECT_EQ(l.caster_of(representation::points), representation::points);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), "round_trip.json").lod.ladder, s.lod.ladder);
+    // Not a rung of this ladder: its mesh may not be baked.
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full", "shadow": "crossed_billboard"},
+                                            {"rung": "billboard_cloud", "below_px": 200}])")),
+                 "/lod/ladder/0/shadow", "the shadow must be cast as one of this ladder's own rungs");
+    // Points draw prefixes, not one mesh: they neither cast as another nor are cast.
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full", "shadow": "points_lines"},
+                                            {"rung": "points_lines", "below_px": 50}])")),
+                 "/lod/ladder/0/shadow", "only mesh_full, mesh_reduced");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full"},
+                                            {"rung": "points_lines", "below_px": 50, "shadow": "mesh_full"}])")),
+                 "/lod/ladder/1/shadow", "only mesh_full, mesh_reduced");
+    expect_error(with_ladder(json::parse(R"([{"rung": "mesh_full", "shadow": "cloud"}])")),
+                 "/lod/ladder/0/shadow", "unknown value; expected one of");
+}
+
 }  // namespace
 }  // namespace sylva

@@ -89,6 +89,24 @@ TEST(build_draw_list, each_cascade_draws_one_mesh_level_coarser_than_the_one_bef
     EXPECT_TRUE(meshes_in(list, render_pass::shadow_cascade_2).empty());
 }
 
+// A ladder may name what a rung casts its shadow as (ladder::shadow): the near plant, drawn as
+// its full mesh, casts as its billboard cloud in every cascade; the others as before.
+TEST(build_draw_list, a_rung_casts_as_the_rung_its_ladder_names) {
+    three_plants scene;
+    ladder l;
+    l.count = 4;
+    l.rungs = {representation::mesh_full, representation::mesh_reduced, representation::mesh_far,
+               representation::billboard_cloud};
+    l.shadow[0] = representation::billboard_cloud;
+    scene.world.resource<lod_policy>().ladders = {l};
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    const draw_list& list = scene.world.resource<draw_list>();
+    EXPECT_EQ(meshes_in(list, render_pass::opaque), (std::vector<std::uint16_t>{1, 2, 3}));
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_0), (std::vector<std::uint16_t>{2, 3, 5}));
+    EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_1), (std::vector<std::uint16_t>{3, 3, 5}));
+}
+
 TEST(build_draw_list, a_cascade_without_receivers_gets_no_casters) {
     three_plants scene;
     scene.world.resource<cascade_set>().holds_receivers[0] = false;  // its slice is air
