@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace sylva {
 namespace {
@@ -145,16 +147,12 @@ bench_configuration_spec ladder_configuration(double factor = 1.0) {
 // popping and error can be read against the ladder's at equal frame time (issue 23).
 bench_configuration_spec ladder_lodf(double factor = 1.0) {
     bench_configuration_spec c = ladder_configuration(factor);
-    std::ostringstream name;
-    name << "ladder_lodf";
-    if (factor != 1.0) name << "_x" << factor;
-    c.name = name.str();
+    c.name.insert(std::string_view("ladder").size(), "_lodf");  // ladder_x2 -> ladder_lodf_x2
     c.family = "ladder_lodf";
-    std::ostringstream description;
-    description << "each species' ladder with LoDF (Rebollo 2006) for its reduced mesh: the foliage thinned "
-                   "continuously from the full mesh to the next rung";
-    if (factor != 1.0) description << ", projected sizes x" << factor;
-    c.description = description.str();
+    const std::size_t scaled = c.description.find(", projected sizes");
+    c.description = "each species' ladder with LoDF (Rebollo 2006) for its reduced mesh: the foliage thinned "
+                    "continuously from the full mesh to the next rung" +
+                    (scaled == std::string::npos ? std::string() : c.description.substr(scaled));
     c.options.policy.lodf_for_reduced = true;
     return c;
 }
