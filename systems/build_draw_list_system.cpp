@@ -13,7 +13,8 @@ namespace {
 
 // What one plant contributes: a bit per pass it is drawn in, and its mesh in each pass. Each
 // shadow cascade draws the plant one mesh level coarser than the one before it (cascade 0 as
-// the view does): a farther cascade's texel is larger than the detail the finer mesh adds.
+// the view does): a farther cascade's texel is larger than the detail the finer mesh adds. A
+// rung whose ladder names a caster (ladder::shadow) casts as that rung instead.
 //
 // A plant drawn as points and lines (Deussen 2002 §5.3) is instead up to two prefixes per part,
 // its first triangles and its first points or lines, the same in every pass it is drawn in.
