@@ -106,7 +106,7 @@ std::vector<reference_view> reference_views(const scenario& s, render::gl_contex
 // What a rung is measured as, beyond the rung itself: as its species' ladder draws it.
 struct rung_context {
     float lodf_top_px = 0.0f;  // where the ladder starts LoDF (0: every leaf at every size)
-    representation caster = representation::none;  // what it casts its shadow as (none: itself)
+    representation caster = representation::none;  // what it casts its shadow as, another rung (none: itself)
 };
 
 // Draws every view of `s` with rung `r` and hands each to `seen(size index, record, sample)`.
@@ -127,7 +127,7 @@ void measure_views(const scenario& s, representation r, const point_line_quality
         own.count = 2;
         own.rungs = {representation::mesh_full, representation::lodf};
         own.below_px[1] = as.lodf_top_px;
-    } else if (as.caster != representation::none && as.caster != r) {
+    } else if (as.caster != representation::none) {
         own.count = 1;
         own.rungs[0] = r;
         own.shadow[0] = as.caster;
@@ -153,8 +153,8 @@ void measure_views(const scenario& s, representation r, const point_line_quality
 species_rung_measurements measure_species(const scenario& one, const scenario& patch,
                                           const std::vector<representation>& rungs,
                                           const point_line_quality& points, render::gl_context& context,
-                                          bake_cache* cache, double eye_height_m, const ladder& own,
-                                          float lodf_top_px) {
+                                          bake_cache* cache, double eye_height_m,
+                                          const std::vector<rung_context>& drawn_as) {
     species_rung_measurements out;
     out.species = one.species[0].name;
     // A lone plant's patch is the plant alone (species_patch): its views are measured once.
@@ -188,10 +188,11 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
             }
     }
     const double n = double(k_rung_table_directions.size());
-    for (const representation r : rungs) {
+    for (std::size_t k = 0; k < rungs.size(); ++k) {
+        const representation r = rungs[k];
+        const rung_context& as = drawn_as[k];
         rung_measurement m;
         m.rung = r;
-        const rung_context as{lodf_top_px, own.caster_of(r)};
         const auto add_error = [&](std::size_t s, const view_sample& v) {
             m.error_per_pixel[s] += float(v.error_per_pixel / n);
             m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
@@ -221,16 +222,18 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
 }
 
 std::uint64_t table_key(const scenario& one, const scenario& patch, const std::vector<representation>& rungs,
-                        const point_line_quality& points, double eye_height_m, const ladder& own,
-                        float lodf_top_px) {
+                        const point_line_quality& points, double eye_height_m,
+                        const std::vector<rung_context>& drawn_as) {
     std::ostringstream text;
     text << scenario_to_json_text(one) << "|patch:" << scenario_to_json_text(patch) << "|eye:" << eye_height_m << "|rungs";
     for (const representation r : rungs) text << ':' << int(r);
-    // Only a LoDF rung's tables depend on where its ladder starts it (the other tables' keys, and
-    // so what the cache holds for them, stay as they were).
-    if (std::find(rungs.begin(), rungs.end(), representation::lodf) != rungs.end()) text << "|lodf_top:" << lodf_top_px;
-    for (const representation r : rungs)  // likewise a rung casting as another
-        if (own.caster_of(r) != r) text << "|shadow:" << int(r) << '>' << int(own.caster_of(r));
+    // Only the rungs their ladder draws otherwise add to the key (the other tables' keys, and so
+    // what the cache holds for them, stay as they were): LoDF by where it starts, a caster.
+    for (std::size_t k = 0; k < rungs.size(); ++k) {
+        if (rungs[k] == representation::lodf) text << "|lodf_top:" << drawn_as[k].lodf_top_px;
+        if (drawn_as[k].caster != representation::none)
+            text << "|shadow:" << int(rungs[k]) << '>' << int(drawn_as[k].caster);
+    }
     text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
          << int(points.fog_weighted) << "|version:" << k_format_version;
     const std::string key = text.str();
@@ -378,14 +381,18 @@ std::vector<species_rung_measurements> measure_rung_tables(const scenario& s, co
         // Sizes the ladder sees are scaled (the bench's ladder_x…): its LoDF top, in pixels of
         // the tables, moves the other way.
         const float top = lodf_top_px(own) / ladder_size_scale;
+        std::vector<rung_context> drawn_as;
+        for (const representation r : rungs)
+            drawn_as.push_back({r == representation::lodf ? top : 0.0f,
+                                own.caster_of(r) != r ? own.caster_of(r) : representation::none});
         const scenario one = species_alone(s, i, k_rung_table_view_px, "rung_tables");
         const scenario patch = species_patch(s, i, k_rung_table_view_px, "rung_tables");
         out.push_back(read_or_bake(
-            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m, own, top),
+            cache, "rung_tables", table_key(one, patch, rungs, points, eye_height_m, drawn_as),
             [&] {
                 if (progress) progress(s.species[i].name);  // measuring, not read from the cache
                 return encode_rung_measurements(
-                    measure_species(one, patch, rungs, points, context, cache, eye_height_m, own, top));
+                    measure_species(one, patch, rungs, points, context, cache, eye_height_m, drawn_as));
             },
             [](const std::vector<std::byte>& bytes) { return decode_rung_measurements(bytes); }));
     }

@@ -74,6 +74,10 @@ struct ladder {
     bool reaches(representation r) const {
         return std::find(rungs.begin(), rungs.begin() + count, r) != rungs.begin() + count;
     }
+    // Whether some rung casts its shadow as `r` (so `r` is drawn, in shadow maps, at least).
+    bool casts(representation r) const {
+        return std::find(shadow.begin(), shadow.begin() + count, r) != shadow.begin() + count;
+    }
     // What a plant drawn as `r` casts its shadow as.
     representation caster_of(representation r) const {
         for (std::size_t i = 0; i < count; ++i)

@@ -78,10 +78,8 @@ struct lod_policy {
     bool uses_billboard_clouds() const {
         // A ladder's caster counts whatever the mode: the rung tables measure a rung casting as
         // the cloud on a one-rung player (app/rung_tables.cpp).
-        const bool cast = std::any_of(ladders.begin(), ladders.end(), [](const ladder& l) {
-            return std::find(l.shadow.begin(), l.shadow.begin() + l.count, representation::billboard_cloud) !=
-                   l.shadow.begin() + l.count;
-        });
+        const bool cast = std::any_of(ladders.begin(), ladders.end(),
+                                      [](const ladder& l) { return l.casts(representation::billboard_cloud); });
         return cast || mode == kind::billboard_clouds || any_ladder_reaches(representation::billboard_cloud) ||
                ((mode == kind::single || mode == kind::hard_switch) &&
                 (near == representation::billboard_cloud || far == representation::billboard_cloud));
