@@ -80,12 +80,8 @@ public:
           m_cascade_set(cascades),
           m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y,
                                               cam.viewport_height_px)),
-          m_costs(costs) {
-        // What each species' rungs cast as (ladder::shadow), looked up per plant.
-        m_casters.resize(policy.ladders.size());
-        for (std::size_t k = 0; k < policy.ladders.size(); ++k)
-            for (std::size_t r = 0; r < k_representations; ++r)
-                m_casters[k][r] = policy.ladders[k].caster_of(representation(r));
+          m_costs(costs),
+          m_ladders(policy.ladders) {
         m_cascade_count = cascades.count;
         for (int c = 0; c < cascades.count; ++c) {
             m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
@@ -139,7 +135,9 @@ public:
             d.mesh[std::size_t(render_pass::opaque)] = mesh_of(species, lod.current);
             // The rung's caster when its ladder names one (ladder::shadow), else the rung itself.
             const auto k = static_cast<std::size_t>(p.species);
-            const representation caster = k < m_casters.size() ? m_casters[k][std::size_t(lod.current)] : lod.current;
+            // (A walk over at most 8 rungs; a per-species table built here would allocate every
+            // frame, which the warm frame must not.)
+            const representation caster = k < m_ladders.size() ? m_ladders[k].caster_of(lod.current) : lod.current;
             for (int c = 0; c < m_cascade_count; ++c)
                 d.mesh[std::size_t(shadow_pass(c))] =
                     mesh_of(species, coarser(caster, m_camera.full_geometry ? 0 : c));
@@ -207,8 +205,7 @@ private:
     const primitive_costs& m_costs;
     std::array<cascade_bounds, k_max_cascades> m_cascades{};
     int m_cascade_count = 0;
-    static constexpr std::size_t k_representations = std::size_t(representation::count);
-    std::vector<std::array<representation, k_representations>> m_casters;  // [species][rung]
+    const std::vector<ladder>& m_ladders;  // a species' ladder may name what a rung casts as
 };
 
 instance_gpu make_instance(const camera& cam, const world_transform& t, const plant_instance& p,
