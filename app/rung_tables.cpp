@@ -341,7 +341,8 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
     }
     species_rung_tables out;
     for (std::size_t r = 0; r < ladder.count; ++r) {
-        if (ladder.rungs[r] == representation::eco_tile) continue;  // the tile's, after the solver
+        // The tile's after the solver, and the terrain's shell by its fade: neither is the solver's.
+        if (ladder.rungs[r] == representation::eco_tile || ladder.rungs[r] == representation::shell) continue;
         const auto it = std::find_if(m.rungs.begin(), m.rungs.end(),
                                      [&](const rung_measurement& x) { return x.rung == ladder.rungs[r]; });
         if (it == m.rungs.end())

@@ -403,8 +403,9 @@ rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_
     for (const ladder& l : policy.ladders)
         for (std::size_t r = 0; r < l.count; ++r)
             // The eco-tile rung is no rung of its own to the solver: a plant it puts on points
-            // goes on to its tile by size (select_representation_system.h).
-            if (l.rungs[r] != representation::eco_tile &&
+            // goes on to its tile by size; nor is the shell, which takes over by its own fade
+            // (select_representation_system.cpp).
+            if (l.rungs[r] != representation::eco_tile && l.rungs[r] != representation::shell &&
                 std::find(rungs.begin(), rungs.end(), l.rungs[r]) == rungs.end())
                 rungs.push_back(l.rungs[r]);
     const heightfield& terrain = m_assets.terrain;

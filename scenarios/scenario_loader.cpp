@@ -398,8 +398,8 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
         }
     }
     // Behrendt 2005 §3: the shell rung draws the Wang tiling's plants; a species drawn by it must
-    // be placed by the tiling everywhere, and its rung is chosen by projected size (the budget
-    // solver measures rungs plant by plant, and the shell is the terrain's).
+    // be placed by the tiling everywhere. Under `auto` the shell still takes over by its own fade
+    // (the shell is the terrain's; systems/select_representation_system.cpp).
     for (std::size_t sp = 0; sp < s.species.size(); ++sp) {
         const bool own = !s.species[sp].ladder.empty();
         const auto& steps = own ? s.species[sp].ladder : s.lod.ladder;
@@ -411,9 +411,6 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
             if (p.species == s.species[sp].name && p.placement != "wang_tiles")
                 rung.fail("species " + s.species[sp].name + " has a population not placed by \"wang_tiles\": the shell "
                           "shows the Wang tiling's plants, and would lose the others");
-        if (s.lod.plant_budget_ms > 0.0 || s.lod.max_error > 0.0 || s.lod.target_frame_ms > 0.0)
-            rung.fail("the shell rung is chosen by projected size: not with lod.plant_budget_ms, max_error or "
-                      "target_frame_ms");
     }
 }
 

@@ -57,6 +57,19 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const auto solver_rung = [](representation r) {
         return r == representation::eco_tile ? representation::points : r;
     };
+    // Nor is the shell rung (Behrendt 2005 §3.3 end): the shell is the terrain's one layer, fading
+    // in by distance the same for every plant (resources/shell_view.h), not a rung with a cost per
+    // plant. A plant whose ladder ends in it is the shell's beyond the shell's band (no choice, no
+    // cost); in the band's far half it draws the solver's choice as the shell's partner, fading
+    // out as 2(1 − shell fade), and nearer the solver's choice whole (lod/ladder.h
+    // choose_rung_with_shell, as by size). In the band the partner slot is the handover's: a
+    // plant the solver moves to another rung there swaps at the partner's opacity, undissolved.
+    const shell_view* shells = ctx.try_resource<shell_view>();
+    const auto shell_fade_of = [&](const world_transform& t, const plant_instance& p) {
+        const ladder& l = policy.ladders[std::size_t(p.species)];
+        if (!shells || l.count < 2 || l.rungs[l.count - 1] != representation::shell) return 0.0f;
+        return shell_fade_at(*shells, float(glm::length(t.position - cam.position)));
+    };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
     budget.histograms.assign(chunks, lambda_histogram{});
@@ -70,6 +83,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                                               lod_state& lod, fade_alpha&) {
                 const std::size_t i = plant++;
                 if (!lod.visible && !lod.in_shadow_range) return;
+                if (!(shell_fade_of(t, p) < 1.0f)) return;  // the shell's: no choice, no cost
                 const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
                 const float size = size_of(t, p);
                 h.add(candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod)));
@@ -95,11 +109,19 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                 fade = {};
                 return;
             }
+            const float shell_fade = shell_fade_of(t, p);
+            if (!(shell_fade < 1.0f)) {
+                lod.current = representation::shell;
+                fade = {};
+                return;
+            }
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
             const float size = size_of(t, p);
             const rung_candidates c =
                 candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod));
-            const representation was = solver_rung(lod.current);
+            // In the shell's band last frame the plant's own rung was the shell's partner.
+            const representation was =
+                solver_rung(lod.current == representation::shell ? fade.partner : lod.current);
             const std::uint8_t previous = rung_index(tables, was);
             // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =
@@ -127,6 +149,10 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
                         fade = {step.partner_fade, step.partner};
                     }
                 }
+            }
+            if (shell_fade >= 0.5f) {
+                fade = {2.0f * (1.0f - shell_fade), lod.current};
+                lod.current = representation::shell;
             }
             if (!lod.visible) fade = {};  // only a seen plant draws a partner
         });

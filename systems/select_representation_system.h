@@ -9,7 +9,8 @@
 // solver picks (lod/rung_solver.h), each plant's error weighed by the share of it the last
 // frame showed (resources/seen_pixels.h), and a plant that changes rung dissolves its old one
 // over a few frames. A ladder ending in the shell hands its plants over to it by the shell's fade
-// distance (resources/shell_view.h, written by update_shells before this runs). Records the
+// distance (resources/shell_view.h, written by update_shells before this runs), by size and under
+// the budget alike (there the shell's plants cost nothing and are no choice). Records the
 // previous choice so measurements can count switches.
 #include "components/camera.h"
 #include "components/fade_alpha.h"

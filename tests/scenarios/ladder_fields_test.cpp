@@ -87,8 +87,9 @@ TEST(ladder_fields, bad_ladders_name_the_rung_and_the_field) {
                  "/lod/ladder/1/fade", "unknown");
 }
 
-// Behrendt 2005 §3: the shell rung ends a ladder, for Wang-tiled species only, chosen by size.
-TEST(ladder_fields, the_shell_rung_ends_a_ladder_of_a_wang_tiled_species_chosen_by_size) {
+// Behrendt 2005 §3: the shell rung ends a ladder, for Wang-tiled species only, by size or under
+// a budget (the shell takes over by its own fade either way).
+TEST(ladder_fields, the_shell_rung_ends_a_ladder_of_a_wang_tiled_species) {
     const json shell_last = json::parse(R"([{"rung": "mesh_full"}, {"rung": "crossed_billboard", "below_px": 40},
                                             {"rung": "shell", "below_px": 12}])");
     json tiled = with_ladder(shell_last);
@@ -101,7 +102,7 @@ TEST(ladder_fields, the_shell_rung_ends_a_ladder_of_a_wang_tiled_species_chosen_
                  "/lod/ladder/1/rung", "shell must be the last rung");
     json budget = tiled;
     budget["lod"]["plant_budget_ms"] = 5;
-    expect_error(budget, "/lod/ladder/2/rung", "the shell rung is chosen by projected size");
+    EXPECT_EQ(load(budget).lod.plant_budget_ms, 5.0);
 }
 
 TEST(ladder_fields, a_plant_budget_needs_a_ladder_to_choose_from) {

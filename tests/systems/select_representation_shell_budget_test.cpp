@@ -1,0 +1,130 @@
+// The budget solver with a ladder ending in the shell (Behrendt 2005 §3.3 end; issue 21 item 5):
+// the shell takes over by its own fade, as by size, and its plants are neither a choice nor a
+// cost of the solver's (systems/select_representation_system.cpp).
+#include "systems/select_representation_system.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <vector>
+
+#include "ecs/executor.h"
+#include "ecs/schedule.h"
+#include "systems/update_camera_system.h"
+
+namespace sylva {
+namespace {
+
+// One species of radius 1 m, its ladder full mesh, crossed billboard below 40 px, shell below
+// 10 px; the shell fades in from 200 m (0) to 300 m (1), set by hand here (update_shells
+// derives it from the ladder). The tables: the full mesh no error for 100 µs, the crossed
+// billboard an error of 1,000 for 1 µs, at every size; no shadow cost (no plant casts).
+struct shell_budget_scene {
+    ecs::world world;
+    ecs::schedule schedule;
+
+    shell_budget_scene(const std::vector<double>& distances, double budget_us) {
+        species_library library;
+        species_entry plant;
+        plant.bounding_radius = 1.0f;
+        library.species = {plant};
+        for (const double z : distances) {
+            const ecs::entity e = world.create();
+            world.emplace<world_transform>(e, {{0.0, 0.0, -z}, 0.0f, 1.0f});
+            world.emplace<plant_instance>(e, {species_id{0}, 0, 7});
+            world.emplace<lod_state>(e, {representation::none, representation::none, 1, 0});
+            world.emplace<fade_alpha>(e);
+        }
+        camera cam;
+        cam.position = {0.0, 0.0, 0.0};
+        cam.fov_y = float(std::numbers::pi / 2.0);
+        cam.aspect = 1.0f;
+        cam.viewport_height_px = 500.0f;
+        cam.far_plane = 1e5f;
+        derive_camera_matrices(cam);
+        world.emplace<camera>(world.create(), cam);
+        lod_policy policy;
+        policy.mode = lod_policy::kind::ladder;
+        ladder l;
+        l.count = 3;
+        l.rungs = {representation::mesh_full, representation::crossed_billboard, representation::shell};
+        l.below_px = {0.0f, 40.0f, 10.0f};
+        l.band = {0.0f, 0.25f, 0.5f};
+        policy.ladders = {l};
+        shell_view shells;
+        shells.active = true;
+        shells.fade_start_m = 200.0f;
+        shells.fade_end_m = 300.0f;
+        rung_budget budget;
+        species_rung_tables tables;
+        rung_table mesh, crossed;
+        mesh.rung = representation::mesh_full;
+        mesh.cost_us.fill(100.0f);
+        crossed.rung = representation::crossed_billboard;
+        crossed.error.fill(1000.0f);
+        crossed.cost_us.fill(1.0f);
+        tables.rungs = {mesh, crossed};
+        tables.plant_pixels.fill(50.0f);
+        budget.tables = {tables};
+        budget.plant_budget_us = budget_us;
+        world.set_resource(std::move(library));
+        world.set_resource(std::move(policy));
+        world.set_resource(std::move(shells));
+        world.set_resource(std::move(budget));
+        world.set_resource(seen_pixels{});
+        schedule.add<select_representation_system>();
+        schedule.build();
+    }
+
+    void run() {
+        ecs::executor executor(2);
+        schedule.run(world, executor);
+    }
+    const lod_state& lod(std::size_t i) const { return world.table<lod_state>().data()[i]; }
+    const fade_alpha& fade(std::size_t i) const { return world.table<fade_alpha>().data()[i]; }
+    void move_to(std::size_t i, double z) { world.table<world_transform>().data()[i].position.z = -z; }
+};
+
+TEST(select_representation_shell_budget, beyond_the_band_the_shell_near_the_solver_between_a_handover) {
+    // 100 m: before the band (fade 0), the solver's choice whole. 275 m: fade 0.75, the shell
+    // with the solver's choice as partner at 2(1 − 0.75) = 0.5. 350 m: the shell's alone.
+    // A budget of 250 µs holds the two plants the solver weighs on full meshes (200 µs); were
+    // the shell's plant counted too (300 µs), one of them would go to its crossed billboard.
+    shell_budget_scene scene({100.0, 275.0, 350.0}, 250.0);
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::mesh_full);
+    EXPECT_EQ(scene.fade(0).partner, representation::none);
+    EXPECT_EQ(scene.lod(1).current, representation::shell);
+    EXPECT_EQ(scene.fade(1).partner, representation::mesh_full);
+    EXPECT_FLOAT_EQ(scene.fade(1).value, 0.5f);
+    EXPECT_EQ(scene.lod(2).current, representation::shell);
+    EXPECT_EQ(scene.fade(2).partner, representation::none);
+    const rung_budget& budget = scene.world.resource<rung_budget>();
+    EXPECT_DOUBLE_EQ(budget.predicted_us, 200.0);
+    EXPECT_DOUBLE_EQ(budget.lambda, 0.0);
+}
+
+TEST(select_representation_shell_budget, a_plant_leaving_the_band_keeps_its_rung_without_a_dissolve) {
+    // The plant in the band last frame drew its full mesh as the shell's partner: walked up to
+    // (150 m, before the band) it is that full mesh whole, nothing dissolving; walked back into
+    // the band's near half (fade 0.3) too, the shell showing through by its own fade.
+    shell_budget_scene scene({275.0}, 250.0);
+    scene.run();
+    ASSERT_EQ(scene.lod(0).current, representation::shell);
+    scene.move_to(0, 150.0);
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::mesh_full);
+    EXPECT_EQ(scene.fade(0).partner, representation::none) << "the plant's rung did not change: no dissolve";
+    scene.move_to(0, 230.0);
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::mesh_full);
+    EXPECT_EQ(scene.fade(0).partner, representation::none);
+    scene.move_to(0, 290.0);  // fade 0.9: partner at 0.2
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::shell);
+    EXPECT_EQ(scene.fade(0).partner, representation::mesh_full);
+    EXPECT_NEAR(scene.fade(0).value, 0.2f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace sylva
