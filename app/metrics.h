@@ -31,6 +31,10 @@ struct frame_record {
     // Per cascade, whether its slice may hold a receiver and so was drawn (1) or shades only
     // air and was skipped (0; resources/shadow_receivers.h).
     std::vector<int> shadow_drawn;
+    // Metres per texel of the finest cascade any plant's shadow was drawn into (0: none cast):
+    // in a scene of one plant, the shadow-map density its shadow's fragments were shaded at
+    // (app/rung_tables.h rung_measurement::shadow_texel_m).
+    double caster_texel_m = 0.0;
     std::uint64_t points = 0;
     std::uint64_t lines = 0;
     // The shader work the frame made the device do (render::pass_timer::read_work): the view's

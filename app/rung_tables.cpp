@@ -18,7 +18,8 @@
 namespace sylva {
 namespace {
 
-constexpr std::uint32_t k_format_version = 5;  // 3: from 2 px, the error between 2x2 block means; 4: shader work;
+constexpr std::uint32_t k_format_version = 6;  // 3: from 2 px, the error between 2x2 block means; 4: shader work;
+                                                // 6: the shadow's cascade texel;
                                                 // 5: the error judged in a patch of the population,
                                                 //    and the SSIM it loses
 
@@ -198,8 +199,13 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
             m.structure_error_per_pixel[s] += float(v.structure_error_per_pixel / n);
         };
         std::size_t view = 0;
+        std::array<float, k_rung_table_size_count> casting_views{};  // views whose plant cast, per size
         measure_views(one, r, points, context, cache, eye_height_m, as, alone,
                       [&](std::size_t s, const frame_record& record, const view_sample& v) {
+                          if (record.caster_texel_m > 0.0) {
+                              m.shadow_texel_m[s] += float(record.caster_texel_m);
+                              casting_views[s] += 1.0f;
+                          }
                           m.plant_pixels[s] += float(v.plant_pixels / n);
                           m.drawn_pixels[s] += float(v.drawn_pixels / n);
                           m.triangles[s] += float(double(record.triangles) / n);
@@ -213,6 +219,8 @@ species_rung_measurements measure_species(const scenario& one, const scenario& p
                           m.shadow_fragments[s] += float(std::max(0.0, w.shadow_fragments - e.shadow_fragments) / n);
                           if (lone) add_error(s, v);
                       });
+        for (std::size_t s = 0; s < k_rung_table_size_count; ++s)
+            if (casting_views[s] > 0.0f) m.shadow_texel_m[s] /= casting_views[s];
         if (!lone)
             measure_views(patch, r, points, context, cache, eye_height_m, as, among,
                           [&](std::size_t s, const frame_record&, const view_sample& v) { add_error(s, v); });
@@ -279,7 +287,7 @@ std::vector<std::byte> encode_rung_measurements(const species_rung_measurements&
         out.pod(std::uint8_t(r.rung));
         for (const auto* table : {&r.error_per_pixel, &r.structure_error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles,
                                   &r.shadow_triangles, &r.points, &r.lines, &r.vertices, &r.fragments,
-                                  &r.shadow_vertices, &r.shadow_fragments})
+                                  &r.shadow_vertices, &r.shadow_fragments, &r.shadow_texel_m})
             out.pod(*table);
     }
     return std::move(out.bytes());
@@ -304,7 +312,7 @@ species_rung_measurements decode_rung_measurements(std::span<const std::byte> by
         r.rung = representation(rung);
         for (auto* table : {&r.error_per_pixel, &r.structure_error_per_pixel, &r.plant_pixels, &r.drawn_pixels, &r.triangles, &r.shadow_triangles,
                             &r.points, &r.lines, &r.vertices, &r.fragments, &r.shadow_vertices,
-                            &r.shadow_fragments}) {
+                            &r.shadow_fragments, &r.shadow_texel_m}) {
             *table = in.pod<std::array<float, k_rung_table_size_count>>();
             for (const float v : *table)
                 if (!std::isfinite(v) || v < 0.0f) throw std::runtime_error("rung table: a value of " + std::to_string(v));
@@ -357,6 +365,8 @@ species_rung_tables solver_tables(const species_rung_measurements& m, const ladd
             t.drawn_pixels[i] = float(double(it->drawn_pixels[whole]) * beyond(i));
             if (work && m.work_counted) {  // what the rung makes the device do, at its cost per unit
                 t.shadow_cost_us[i] = float(work->cost_us(0.0, 0.0, it->shadow_vertices[sh], it->shadow_fragments[sh]));
+                t.shadow_fragment_cost_us[i] = float(work->cost_us(0.0, 0.0, 0.0, it->shadow_fragments[sh]));
+                t.shadow_texel_m[i] = it->shadow_texel_m[sh];
                 t.cost_us[i] = float(work->cost_us(it->vertices[i], double(it->fragments[whole]) * beyond(i), 0.0, 0.0));
             } else {
                 t.shadow_cost_us[i] = float(double(it->shadow_triangles[sh]) * triangle_us);

@@ -57,6 +57,10 @@ struct rung_measurement {
     std::array<float, k_rung_table_size_count> fragments{};
     std::array<float, k_rung_table_size_count> shadow_vertices{};
     std::array<float, k_rung_table_size_count> shadow_fragments{};
+    // Metres per texel of the cascade those shadow fragments were shaded at (frame_record::
+    // caster_texel_m, the mean over the views that cast; 0: none did). A frame's cascades may be
+    // coarser or finer where the plant stands: the solver scales the fragments by the texel area.
+    std::array<float, k_rung_table_size_count> shadow_texel_m{};
 };
 
 struct species_rung_measurements {

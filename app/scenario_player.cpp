@@ -55,7 +55,7 @@ int resolve_threads(int threads) {
     return hw ? int(hw) : 1;
 }
 
-// The frame (DESIGN.md §2): playback → cull → select → lighting → build → submit.
+// The frame (DESIGN.md §2): playback → cull (and the shadow cascades) → select → lighting → build → submit.
 void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<update_camera_system>();
     schedule.add<update_sun_system>();
@@ -63,12 +63,12 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<adapt_plant_budget_system>();
     schedule.add<cull_system>();
     schedule.add<update_shells_system>();
+    schedule.add<fit_shadow_cascades_system>();
     schedule.add<select_representation_system>();
     schedule.add<aggregate_eco_tiles_system>();
     schedule.add<update_point_prefix_system>();
     schedule.add<update_lodf_system>();
     schedule.add<project_environment_system>();
-    schedule.add<fit_shadow_cascades_system>();
     schedule.add<build_draw_list_system>();
     schedule.add<submit_system>();
     schedule.build();
@@ -328,6 +328,16 @@ void scenario_player::step(frame_record& record) {
         record.shadow_split_m.push_back(cascades.split_far[std::size_t(c)]);
         record.shadow_drawn.push_back(cascades.holds_receivers[std::size_t(c)] ? 1 : 0);
     }
+    std::uint32_t cast_into = 0;  // bit c: a plant's shadow was drawn into cascade c
+    for (const draw_batch& b : draws.batches)
+        if (is_shadow_pass(b.pass) && b.instance_count > 0) cast_into |= 1u << unsigned(b.pass);
+    for (const std::uint32_t mask : draws.lodf_pass_masks) cast_into |= mask & ((1u << unsigned(render_pass::opaque)) - 1u);
+    record.caster_texel_m = 0.0;
+    for (int c = 0; c < cascades.count; ++c)
+        if (cast_into & (1u << unsigned(shadow_pass(c)))) {
+            record.caster_texel_m = cascades.texel_world_size[std::size_t(c)];
+            break;
+        }
     record.points = draws.points;
     record.lines = draws.lines;
     record.work_counted = stats.work_counted;

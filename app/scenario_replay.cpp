@@ -43,7 +43,8 @@ std::uint64_t scenario_player::selection_inputs_hash() const {
         for (const rung_table& t : species.rungs) {
             const auto rung = static_cast<std::uint32_t>(t.rung);
             h = fnv1a(&rung, sizeof(rung), h);
-            for (const auto* a : {&t.error, &t.cost_us, &t.shadow_cost_us, &t.drawn_pixels})
+            for (const auto* a : {&t.error, &t.cost_us, &t.shadow_cost_us, &t.shadow_fragment_cost_us,
+                                  &t.shadow_texel_m, &t.drawn_pixels})
                 h = fnv1a(a->data(), a->size() * sizeof(float), h);
         }
         h = fnv1a(species.plant_pixels.data(), species.plant_pixels.size() * sizeof(float), h);

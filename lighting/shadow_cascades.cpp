@@ -126,4 +126,21 @@ cascade_set fit_cascades(const glm::mat4& camera_view, float fov_y, float aspect
     return out;
 }
 
+cascade_bounds make_cascade_bounds(const glm::mat4& m) {
+    cascade_bounds c;
+    c.light_view_projection = m;
+    // For an orthographic projection the rows' lengths are the clip units per metre.
+    c.radius_scale = {glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])),
+                      glm::length(glm::vec3(m[0][1], m[1][1], m[2][1])),
+                      glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]))};
+    return c;
+}
+
+bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius) {
+    if (!cascade.holds_receivers) return false;
+    const glm::vec4 p = cascade.light_view_projection * glm::vec4(center, 1.0f);
+    const glm::vec3 r = cascade.radius_scale * radius;
+    return std::abs(p.x) <= 1.0f + r.x && std::abs(p.y) <= 1.0f + r.y && p.z <= 1.0f + r.z;
+}
+
 }  // namespace sylva

@@ -58,4 +58,16 @@ struct frustum_sphere {
 };
 frustum_sphere sub_frustum_sphere(float fov_y, float aspect, float near, float far);
 
+// A cascade's light-space box as the caster test needs it.
+struct cascade_bounds {
+    glm::mat4 light_view_projection{1.0f};
+    glm::vec3 radius_scale{1.0f};  // clip-space units per metre along x, y, z
+    bool holds_receivers = true;   // cascade_set::holds_receivers: false, nothing casts into it
+};
+// True when a sphere (camera-relative) may cast into the cascade: inside its x/y extent and
+// not behind its far plane (anything towards the sun may cast), and the cascade shades
+// something.
+bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius);
+cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
+
 }  // namespace sylva

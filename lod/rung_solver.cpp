@@ -44,7 +44,7 @@ float interpolate_table(const std::array<float, k_rung_table_size_count>& table,
 }
 
 rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen, bool casts,
-                              shown_last_frame shown) {
+                              shown_last_frame shown, float caster_texel_m) {
     rung_candidates c;
     c.count = std::uint8_t(std::min(tables.rungs.size(), k_max_rungs));
     const table_position p = position_of(size_px);  // once for every rung
@@ -56,7 +56,16 @@ rung_candidates candidates_at(const species_rung_tables& tables, float size_px, 
     for (std::size_t r = 0; r < c.count; ++r) {
         const rung_table& t = tables.rungs[r];
         c.error[r] = seen ? seen_share * at(t.error, p) : 0.0f;
-        c.cost_us[r] = (seen ? at(t.cost_us, p) : 0.0f) + (casts ? at(t.shadow_cost_us, p) : 0.0f);
+        float shadow = 0.0f;
+        if (casts) {
+            shadow = at(t.shadow_cost_us, p);
+            const float table_texel = at(t.shadow_texel_m, p);
+            if (caster_texel_m > 0.0f && table_texel > 0.0f) {
+                const float area = (table_texel / caster_texel_m) * (table_texel / caster_texel_m);
+                shadow += (area - 1.0f) * at(t.shadow_fragment_cost_us, p);
+            }
+        }
+        c.cost_us[r] = (seen ? at(t.cost_us, p) : 0.0f) + shadow;
     }
     c.plant_pixels = at(tables.plant_pixels, p);
     return c;

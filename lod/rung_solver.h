@@ -47,6 +47,12 @@ struct rung_table {
     std::array<float, k_rung_table_size_count> error{};
     std::array<float, k_rung_table_size_count> cost_us{};
     std::array<float, k_rung_table_size_count> shadow_cost_us{};
+    // Of the shadow's cost, what shading its fragments took, and the metres per shadow-map texel
+    // they were shaded at (0: not known). A shadow covers a fixed area of the sun's view, so its
+    // fragments go with the inverse square of the texel: a plant casting into a coarser cascade
+    // than the table's costs that much less (candidates_at).
+    std::array<float, k_rung_table_size_count> shadow_fragment_cost_us{};
+    std::array<float, k_rung_table_size_count> shadow_texel_m{};
     // The pixels the rung covers alone in the view at each size (resources/seen_pixels.h: what
     // a frame's count of the plant's pixels is a share of).
     std::array<float, k_rung_table_size_count> drawn_pixels{};
@@ -80,9 +86,11 @@ struct shown_last_frame {
 // no error of its own, so it takes its cheapest rung; one seen beyond the shadow range costs
 // its view only. A seen plant's errors are weighed by the share of its pixels the last frame
 // showed, `shown` over what its rung then covers alone at this size (at most 1), as the image
-// shows them.
+// shows them. `caster_texel_m` is the texel of the finest cascade the plant casts into this
+// frame: its shadow fragments cost (table texel / caster_texel_m)² of the table's (0: as the
+// table says).
 rung_candidates candidates_at(const species_rung_tables& tables, float size_px, bool seen = true, bool casts = true,
-                              shown_last_frame shown = {});
+                              shown_last_frame shown = {}, float caster_texel_m = 0.0f);
 
 // The rung index minimising error + λ·cost, ties to the cheaper rung; `previous` (an index, or
 // k_max_rungs for none) is kept within the `hysteresis` band above.

@@ -32,7 +32,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
     rung_budget& budget = ctx.resource_mut<rung_budget>();
-    auto plants = ctx.query<const world_transform, const plant_instance, lod_state, fade_alpha>();
+    auto plants = ctx.query<const world_transform, const bounds, const plant_instance, lod_state, fade_alpha>();
     const double pixel = image_plane_units(1.0, double(cam.fov_y), double(cam.viewport_height_px));
     const auto size_of = [&](const world_transform& t, const plant_instance& p) {
         const float distance = float(glm::length(t.position - cam.position));
@@ -70,6 +70,27 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         if (!shells || l.count < 2 || l.rungs[l.count - 1] != representation::shell) return 0.0f;
         return shell_fade_at(*shells, float(glm::length(t.position - cam.position)));
     };
+    // What a plant's shadow costs depends on the cascade it falls in, not on its size on screen:
+    // the tables measured it at their views' cascade, and a plant near the camera but out of view
+    // (or in a frame whose nearest cascade shades nothing) casts into a coarser one, or none. On
+    // `valley` costed as in the tables, 2,460 plants only casting were predicted at 238 ms
+    // when the whole shadow pass took 26. A plant is drawn into every cascade its sphere
+    // overlaps (build_draw_list); its cost is taken at the finest, which has most fragments.
+    const cascade_set& cascades = ctx.resource<cascade_set>();
+    std::array<cascade_bounds, k_max_cascades> boxes{};
+    for (int k = 0; k < cascades.count; ++k) {
+        boxes[std::size_t(k)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(k)]);
+        boxes[std::size_t(k)].holds_receivers = cascades.holds_receivers[std::size_t(k)];
+    }
+    // The texel of the finest cascade the plant casts into, 0 when it casts into none.
+    const auto caster_texel_of = [&](const world_transform& t, const bounds& b, const lod_state& lod) {
+        if (!lod.in_shadow_range) return 0.0f;
+        const glm::vec3 center = glm::vec3(t.position - cam.position) + glm::vec3(0.0f, b.center_height, 0.0f);
+        for (int k = 0; k < cascades.count; ++k)
+            if (sphere_overlaps_cascade(boxes[std::size_t(k)], center, b.radius))
+                return cascades.texel_world_size[std::size_t(k)];
+        return 0.0f;
+    };
     // Per-chunk results folded in chunk order: the same sums for any thread count.
     const std::size_t chunks = ecs::chunk_count(plants.size(), ctx.chunk());
     budget.histograms.assign(chunks, lambda_histogram{});
@@ -79,14 +100,15 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
             lambda_histogram& h = budget.histograms[chunk];
             std::size_t plant = begin;  // the dense index each_chunk walks
-            plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
-                                              lod_state& lod, fade_alpha&) {
+            plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
+                                              const plant_instance& p, lod_state& lod, fade_alpha&) {
                 const std::size_t i = plant++;
                 if (!lod.visible && !lod.in_shadow_range) return;
                 if (!(shell_fade_of(t, p) < 1.0f)) return;  // the shell's: no choice, no cost
                 const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
                 const float size = size_of(t, p);
-                h.add(candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod)));
+                const float texel = caster_texel_of(t, b, lod);
+                h.add(candidates_at(tables, size, lod.visible, texel > 0.0f, shown_of(i, tables, lod), texel));
             });
         });
     }
@@ -100,8 +122,8 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
         double& cost = budget.costs[chunk];
         std::size_t plant = begin;
-        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const plant_instance& p,
-                                          lod_state& lod, fade_alpha& fade) {
+        plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
+                                          const plant_instance& p, lod_state& lod, fade_alpha& fade) {
             const std::size_t i = plant++;
             lod.previous = lod.current;
             if (!lod.visible && !lod.in_shadow_range) {
@@ -117,8 +139,9 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             }
             const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
             const float size = size_of(t, p);
+            const float texel = caster_texel_of(t, b, lod);
             const rung_candidates c =
-                candidates_at(tables, size, lod.visible, lod.in_shadow_range, shown_of(i, tables, lod));
+                candidates_at(tables, size, lod.visible, texel > 0.0f, shown_of(i, tables, lod), texel);
             // In the shell's band last frame the plant's own rung was the shell's partner.
             const representation was =
                 solver_rung(lod.current == representation::shell ? fade.partner : lod.current);

@@ -113,8 +113,8 @@ shell_pass::shell_pass(const scene_assets& assets) {
         // Grid 0 is the terrain's own tiles, already in the assets.
         const std::vector<mesh_data> coarser = g > 0 ? terrain_tile_meshes(ground, tiles_per_side, 1.0f, 1u << g)
                                                      : std::vector<mesh_data>{};
-        for (std::size_t t = 0; t < m_tile_ranges.size() && (g == 0 || t < coarser.size()); ++t) {
-            const mesh_data& tile = g == 0 ? assets.meshes.at(assets.terrain_meshes[t]) : coarser[t];
+        for (std::size_t n = 0; n < m_tile_ranges.size() && (g == 0 || n < coarser.size()); ++n) {
+            const mesh_data& tile = g == 0 ? assets.meshes.at(assets.terrain_meshes[n]) : coarser[n];
             const auto first = std::uint32_t(vertices.size());
             for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
                 const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
@@ -122,7 +122,7 @@ shell_pass::shell_pass(const scene_assets& assets) {
                 const glm::vec3 centre = (v[0]->position + v[1]->position + v[2]->position) / 3.0f;
                 for (const vertex* p : v) vertices.push_back({p->position, centre});
             }
-            m_tile_ranges[t].push_back({first, std::uint32_t(vertices.size()) - first});
+            m_tile_ranges[n].push_back({first, std::uint32_t(vertices.size()) - first});
         }
     }
     m_vertices = make_buffer();

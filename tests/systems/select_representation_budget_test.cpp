@@ -1,11 +1,14 @@
-// The budget solver with a ladder ending in the shell (Behrendt 2005 §3.3 end; issue 21 item 5):
-// the shell takes over by its own fade, as by size, and its plants are neither a choice nor a
-// cost of the solver's (systems/select_representation_system.cpp).
+// The budget solver in the frame (systems/select_representation_system.cpp), by hand: with a
+// ladder ending in the shell (Behrendt 2005 §3.3 end) the shell takes over by its own fade, as by
+// size, and its plants are neither a choice nor a cost of the solver's; a plant's shadow is
+// costed at the cascade it casts into, and not at all when it casts into none.
 #include "systems/select_representation_system.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "ecs/executor.h"
@@ -31,8 +34,9 @@ struct shell_budget_scene {
         for (const double z : distances) {
             const ecs::entity e = world.create();
             world.emplace<world_transform>(e, {{0.0, 0.0, -z}, 0.0f, 1.0f});
+            world.emplace<bounds>(e, {1.0f, 0.0f});
             world.emplace<plant_instance>(e, {species_id{0}, 0, 7});
-            world.emplace<lod_state>(e, {representation::none, representation::none, 1, 0});
+            world.emplace<lod_state>(e, {representation::none, representation::none, 1, 0});  // seen, not casting
             world.emplace<fade_alpha>(e);
         }
         camera cam;
@@ -72,6 +76,7 @@ struct shell_budget_scene {
         world.set_resource(std::move(shells));
         world.set_resource(std::move(budget));
         world.set_resource(seen_pixels{});
+        world.set_resource(cascade_set{});  // no shadows: no plant casts
         schedule.add<select_representation_system>();
         schedule.build();
     }
@@ -83,9 +88,10 @@ struct shell_budget_scene {
     const lod_state& lod(std::size_t i) const { return world.table<lod_state>().data()[i]; }
     const fade_alpha& fade(std::size_t i) const { return world.table<fade_alpha>().data()[i]; }
     void move_to(std::size_t i, double z) { world.table<world_transform>().data()[i].position.z = -z; }
+    void place(std::size_t i, glm::dvec3 at) { world.table<world_transform>().data()[i].position = at; }
 };
 
-TEST(select_representation_shell_budget, beyond_the_band_the_shell_near_the_solver_between_a_handover) {
+TEST(select_representation_budget, beyond_the_band_the_shell_near_the_solver_between_a_handover) {
     // 100 m: before the band (fade 0), the solver's choice whole. 275 m: fade 0.75, the shell
     // with the solver's choice as partner at 2(1 − 0.75) = 0.5. 350 m: the shell's alone.
     // A budget of 250 µs holds the two plants the solver weighs on full meshes (200 µs); were
@@ -104,7 +110,7 @@ TEST(select_representation_shell_budget, beyond_the_band_the_shell_near_the_solv
     EXPECT_DOUBLE_EQ(budget.lambda, 0.0);
 }
 
-TEST(select_representation_shell_budget, a_plant_leaving_the_band_keeps_its_rung_without_a_dissolve) {
+TEST(select_representation_budget, a_plant_leaving_the_band_keeps_its_rung_without_a_dissolve) {
     // The plant in the band last frame drew its full mesh as the shell's partner: walked up to
     // (150 m, before the band) it is that full mesh whole, nothing dissolving; walked back into
     // the band's near half (fade 0.3) too, the shell showing through by its own fade.
@@ -124,6 +130,33 @@ TEST(select_representation_shell_budget, a_plant_leaving_the_band_keeps_its_rung
     EXPECT_EQ(scene.lod(0).current, representation::shell);
     EXPECT_EQ(scene.fade(0).partner, representation::mesh_full);
     EXPECT_NEAR(scene.fade(0).value, 0.2f, 1e-6f);
+}
+
+// Two plants out of view but in shadow range, 50 m ahead: one inside the only cascade's box
+// (±100 m across, 0.1 m texels), one 150 m to the side, outside it. The tables measured the
+// full mesh's shadow at 300 µs (200 of it fragments) and the crossed billboard's at 30 µs (20),
+// both at 0.05 m texels. Showing nothing, each takes its cheapest shadow: inside the box the
+// billboard's, its fragments a quarter as many at twice the texel, 10 + 20/4 = 15 µs; outside,
+// casting into no cascade, nothing.
+TEST(select_representation_budget, a_shadow_is_costed_at_its_cascade_and_not_where_none_holds_it) {
+    shell_budget_scene scene({50.0, 50.0}, 1000.0);
+    scene.place(1, {150.0, 0.0, -50.0});
+    for (lod_state& lod : std::span(scene.world.table<lod_state>().data(), 2)) lod = {representation::none, representation::none, 0, 1};
+    rung_budget& budget = scene.world.resource<rung_budget>();
+    for (rung_table& t : budget.tables[0].rungs) {
+        const bool mesh = t.rung == representation::mesh_full;
+        t.shadow_cost_us.fill(mesh ? 300.0f : 30.0f);
+        t.shadow_fragment_cost_us.fill(mesh ? 200.0f : 20.0f);
+        t.shadow_texel_m.fill(0.05f);
+    }
+    cascade_set cascades;
+    cascades.count = 1;
+    cascades.light_view_projection[0] = glm::ortho(-100.0f, 100.0f, -100.0f, 100.0f, -1000.0f, 1000.0f);
+    cascades.texel_world_size[0] = 0.1f;
+    scene.world.set_resource(cascades);
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::crossed_billboard);
+    EXPECT_DOUBLE_EQ(scene.world.resource<rung_budget>().predicted_us, 15.0);
 }
 
 }  // namespace
