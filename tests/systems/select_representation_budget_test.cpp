@@ -7,13 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <numbers>
 #include <span>
 #include <vector>
 
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
-#include "systems/update_camera_system.h"
+#include "tests/systems/origin_camera.h"
 
 namespace sylva {
 namespace {
@@ -39,14 +38,7 @@ struct shell_budget_scene {
             world.emplace<lod_state>(e, {representation::none, representation::none, 1, 0});  // seen, not casting
             world.emplace<fade_alpha>(e);
         }
-        camera cam;
-        cam.position = {0.0, 0.0, 0.0};
-        cam.fov_y = float(std::numbers::pi / 2.0);
-        cam.aspect = 1.0f;
-        cam.viewport_height_px = 500.0f;
-        cam.far_plane = 1e5f;
-        derive_camera_matrices(cam);
-        world.emplace<camera>(world.create(), cam);
+        emplace_origin_camera(world);
         lod_policy policy;
         policy.mode = lod_policy::kind::ladder;
         ladder l;

@@ -10,6 +10,7 @@
 #include "components/fade_alpha.h"
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
+#include "tests/systems/origin_camera.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/select_representation_system.h"
@@ -71,14 +72,7 @@ struct prefix_scene {
             world.emplace<fade_alpha>(e);
         }
         world.align<world_transform, bounds, plant_instance, lod_state, point_prefix, fade_alpha>();
-        camera cam;
-        cam.position = {0.0, 0.0, 0.0};
-        cam.fov_y = float(std::numbers::pi / 2.0);
-        cam.aspect = 1.0f;
-        cam.viewport_height_px = 500.0f;
-        cam.far_plane = 1e5f;
-        derive_camera_matrices(cam);
-        world.emplace<camera>(world.create(), cam);
+        emplace_origin_camera(world);
         world.set_resource(std::move(library));
         world.set_resource(shadow_settings{1, 1024, 1.0f, 0.5f});
         world.set_resource(cascade_set{});
