@@ -88,6 +88,22 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
             EXPECT_GT(full.fragments[i], crossed.fragments[i]);
         }
     }
+    // Where a rung cast, the table holds the texel of the cascade its shadow was shaded at (the
+    // solver scales the shadow's fragments by it); a plant larger on screen stands nearer, in a
+    // cascade at least as fine; where none cast, no texel.
+    std::size_t first_cast = k_rung_table_size_count;
+    for (std::size_t i = 0; i < k_rung_table_size_count; ++i) {
+        SCOPED_TRACE("size " + std::to_string(k_rung_table_sizes_px[i]));
+        if (full.shadow_triangles[i] == 0.0f) {
+            EXPECT_EQ(full.shadow_texel_m[i], 0.0f);
+            continue;
+        }
+        if (first_cast == k_rung_table_size_count) first_cast = i;
+        EXPECT_GT(full.shadow_texel_m[i], 0.001f);
+        EXPECT_LT(full.shadow_texel_m[i], 2.0f);
+    }
+    ASSERT_LT(first_cast, k_rung_table_size_count) << "the tree casts at some size";
+    EXPECT_LE(full.shadow_texel_m.back(), full.shadow_texel_m[first_cast]);
     // The bytes the cache keeps come back equal; a cut entry is refused.
     const std::vector<std::byte> bytes = encode_rung_measurements(tree);
     const species_rung_measurements back = decode_rung_measurements(bytes);
@@ -98,6 +114,7 @@ TEST(rung_tables, each_rung_of_the_single_tree_measured_against_its_full_geometr
     EXPECT_EQ(back.work_counted, tree.work_counted);
     EXPECT_EQ(back.rungs[0].fragments, tree.rungs[0].fragments);
     EXPECT_EQ(back.rungs[4].shadow_fragments, tree.rungs[4].shadow_fragments);
+    EXPECT_EQ(back.rungs[0].shadow_texel_m, tree.rungs[0].shadow_texel_m);
     EXPECT_THROW(decode_rung_measurements(std::span(bytes).first(bytes.size() - 3)), std::runtime_error);
 }
 
