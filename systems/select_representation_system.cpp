@@ -62,13 +62,22 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     // plant. A plant whose ladder ends in it is the shell's beyond the shell's band (no choice, no
     // cost); in the band's far half it draws the solver's choice as the shell's partner, fading
     // out as 2(1 − shell fade), and nearer the solver's choice whole (lod/ladder.h
-    // choose_rung_with_shell, as by size). In the band the partner slot is the handover's: a
-    // plant the solver moves to another rung there swaps at the partner's opacity, undissolved.
+    // choose_rung_with_shell, as by size). There the partner slot is the handover's, so a plant
+    // keeps the rung it came with (a change would swap at the partner's opacity, undissolved),
+    // and the budget counts that rung as fixed.
     const shell_view* shells = ctx.try_resource<shell_view>();
     const auto shell_fade_of = [&](const world_transform& t, const plant_instance& p) {
         const ladder& l = policy.ladders[std::size_t(p.species)];
         if (!shells || l.count < 2 || l.rungs[l.count - 1] != representation::shell) return 0.0f;
         return shell_fade_at(*shells, float(glm::length(t.position - cam.position)));
+    };
+    // The plant's rung last frame: in the shell's band, the shell's partner.
+    const auto rung_before = [&](const lod_state& lod, const fade_alpha& fade) {
+        return solver_rung(lod.current == representation::shell ? fade.partner : lod.current);
+    };
+    // The rung (an index) a plant in the far half of the shell's band holds, k_max_rungs for none.
+    const auto held_in_band = [&](float shell_fade, const species_rung_tables& tables, representation was) {
+        return shell_fade >= 0.5f ? rung_index(tables, was) : std::uint8_t(k_max_rungs);
     };
     // What a plant's shadow costs depends on the cascade it falls in, not on its size on screen:
     // the tables measured it at their views' cascade, and a plant near the camera but out of view
@@ -101,14 +110,18 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             lambda_histogram& h = budget.histograms[chunk];
             std::size_t plant = begin;  // the dense index each_chunk walks
             plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
-                                              const plant_instance& p, lod_state& lod, fade_alpha&) {
+                                              const plant_instance& p, lod_state& lod, fade_alpha& fade) {
                 const std::size_t i = plant++;
                 if (!lod.visible && !lod.in_shadow_range) return;
-                if (!(shell_fade_of(t, p) < 1.0f)) return;  // the shell's: no choice, no cost
+                const float shell_fade = shell_fade_of(t, p);
+                if (!(shell_fade < 1.0f)) return;  // the shell's: no choice, no cost
                 const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
                 const float size = size_of(t, p);
                 const float texel = caster_texel_of(t, b, lod);
-                h.add(candidates_at(tables, size, lod.visible, texel > 0.0f, shown_of(i, tables, lod), texel));
+                rung_candidates c = candidates_at(tables, size, lod.visible, texel > 0.0f, shown_of(i, tables, lod), texel);
+                if (const std::uint8_t held = held_in_band(shell_fade, tables, rung_before(lod, fade)); held < c.count)
+                    c = {{c.error[held]}, {c.cost_us[held]}, c.plant_pixels, 1};  // no choice: no saving to offer
+                h.add(c);
             });
         });
     }
@@ -142,16 +155,16 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             const float texel = caster_texel_of(t, b, lod);
             const rung_candidates c =
                 candidates_at(tables, size, lod.visible, texel > 0.0f, shown_of(i, tables, lod), texel);
-            // In the shell's band last frame the plant's own rung was the shell's partner.
-            const representation was =
-                solver_rung(lod.current == representation::shell ? fade.partner : lod.current);
+            const representation was = rung_before(lod, fade);
             const std::uint8_t previous = rung_index(tables, was);
+            const std::uint8_t held = held_in_band(shell_fade, tables, was);
             // Only under a budget does a plant need its dither (the hash is per plant, per frame).
             const std::uint8_t chosen =
-                by_error ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
-                         : choose_at(c,
-                                     lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis),
-                                     previous, budget.hysteresis);
+                held < c.count ? held
+                : by_error     ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
+                               : choose_at(c,
+                                           lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis),
+                                           previous, budget.hysteresis);
             cost += double(c.cost_us[chosen]);
             const representation rung = tables.rungs[chosen].rung;
             if (fade.partner == representation::eco_tile || (was == representation::points && fade.partner == representation::points))

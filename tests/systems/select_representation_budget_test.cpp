@@ -124,6 +124,24 @@ TEST(select_representation_budget, a_plant_leaving_the_band_keeps_its_rung_witho
     EXPECT_NEAR(scene.fade(0).value, 0.2f, 1e-6f);
 }
 
+// In the far half of the shell's band a plant's rung is the shell's partner, fading out: it keeps
+// the rung it came with even when the budget falls, and the budget counts it. Both plants on full
+// meshes under 250 µs; at 50 µs the plant at 100 m goes to its crossed billboard (1 µs), the one
+// at 275 m keeps its full mesh (100 µs): 101 µs predicted, over the budget by what it holds.
+TEST(select_representation_budget, a_plant_handing_over_to_the_shell_keeps_its_rung) {
+    shell_budget_scene scene({100.0, 275.0}, 250.0);
+    scene.run();
+    ASSERT_EQ(scene.lod(0).current, representation::mesh_full);
+    ASSERT_EQ(scene.fade(1).partner, representation::mesh_full);
+    scene.world.resource<rung_budget>().plant_budget_us = 50.0;
+    scene.run();
+    EXPECT_EQ(scene.lod(0).current, representation::crossed_billboard);
+    EXPECT_EQ(scene.lod(1).current, representation::shell);
+    EXPECT_EQ(scene.fade(1).partner, representation::mesh_full) << "held through the handover";
+    EXPECT_FLOAT_EQ(scene.fade(1).value, 0.5f);
+    EXPECT_DOUBLE_EQ(scene.world.resource<rung_budget>().predicted_us, 101.0);
+}
+
 // Two plants out of view but in shadow range, 50 m ahead: one inside the only cascade's box
 // (±100 m across, 0.1 m texels), one 150 m to the side, outside it. The tables measured the
 // full mesh's shadow at 300 µs (200 of it fragments) and the crossed billboard's at 30 µs (20),
