@@ -136,6 +136,15 @@ cascade_bounds make_cascade_bounds(const glm::mat4& m) {
     return c;
 }
 
+std::array<cascade_bounds, k_max_cascades> cascade_boxes(const cascade_set& set) {
+    std::array<cascade_bounds, k_max_cascades> boxes{};
+    for (int c = 0; c < set.count; ++c) {
+        boxes[std::size_t(c)] = make_cascade_bounds(set.light_view_projection[std::size_t(c)]);
+        boxes[std::size_t(c)].holds_receivers = set.holds_receivers[std::size_t(c)];
+    }
+    return boxes;
+}
+
 bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius) {
     if (!cascade.holds_receivers) return false;
     const glm::vec4 p = cascade.light_view_projection * glm::vec4(center, 1.0f);

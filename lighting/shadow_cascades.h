@@ -69,5 +69,8 @@ struct cascade_bounds {
 // something.
 bool sphere_overlaps_cascade(const cascade_bounds& cascade, glm::vec3 center, float radius);
 cascade_bounds make_cascade_bounds(const glm::mat4& light_view_projection);
+// The boxes of `set`'s cascades (those past set.count stay default), each marked as its cascade
+// holds receivers or not.
+std::array<cascade_bounds, k_max_cascades> cascade_boxes(const cascade_set& set);
 
 }  // namespace sylva

@@ -81,13 +81,9 @@ public:
           m_sample_distance(image_plane_units(policy.points.sample_distance_px, cam.fov_y,
                                               cam.viewport_height_px)),
           m_costs(costs),
-          m_ladders(policy.ladders) {
-        m_cascade_count = cascades.count;
-        for (int c = 0; c < cascades.count; ++c) {
-            m_cascades[std::size_t(c)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(c)]);
-            m_cascades[std::size_t(c)].holds_receivers = cascades.holds_receivers[std::size_t(c)];
-        }
-    }
+          m_cascades(cascade_boxes(cascades)),
+          m_cascade_count(cascades.count),
+          m_ladders(policy.ladders) {}
 
     // The passes a plant is drawn in: the view's when it is visible, and each shadow cascade its
     // bounding sphere overlaps when it is in shadow range.

@@ -86,11 +86,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     // when the whole shadow pass took 26. A plant is drawn into every cascade its sphere
     // overlaps (build_draw_list); its cost is taken at the finest, which has most fragments.
     const cascade_set& cascades = ctx.resource<cascade_set>();
-    std::array<cascade_bounds, k_max_cascades> boxes{};
-    for (int k = 0; k < cascades.count; ++k) {
-        boxes[std::size_t(k)] = make_cascade_bounds(cascades.light_view_projection[std::size_t(k)]);
-        boxes[std::size_t(k)].holds_receivers = cascades.holds_receivers[std::size_t(k)];
-    }
+    const std::array<cascade_bounds, k_max_cascades> boxes = cascade_boxes(cascades);
     // The texel of the finest cascade the plant casts into, 0 when it casts into none.
     const auto caster_texel_of = [&](const world_transform& t, const bounds& b, const lod_state& lod) {
         if (!lod.in_shadow_range) return 0.0f;

@@ -52,12 +52,7 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     const auto terrain_instance = instance_base + std::uint32_t(draws.instances.size());
     const camera& cam = *view.view_camera;
     const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
-    std::array<cascade_bounds, k_max_cascades> cascades{};
-    for (int c = 0; c < cascade_count; ++c) {
-        cascades[std::size_t(c)] =
-            make_cascade_bounds(view.cascades->light_view_projection[std::size_t(c)]);
-        cascades[std::size_t(c)].holds_receivers = view.cascades->holds_receivers[std::size_t(c)];
-    }
+    const std::array<cascade_bounds, k_max_cascades> cascades = cascade_boxes(*view.cascades);
     for (const terrain_tile& tile : m_terrain_tiles) {
         const glm::vec3 center = view.terrain_position + tile.center;
         if (sphere_in_frustum(frustum, center, tile.radius))
