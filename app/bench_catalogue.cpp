@@ -196,6 +196,18 @@ bench_configuration_spec ladder_shells_standard_blending() {
     return c;
 }
 
+// Behrendt 2005 §4 on the shells, measured: the same ladder with its shells lit by their normals
+// even where the tiled plants are lit by SH transfer (otherwise the same image as `ladder`).
+bench_configuration_spec ladder_shells_normal_lit() {
+    bench_configuration_spec c = ladder_configuration();
+    c.name = "ladder_shells_normal_lit";
+    c.family = "shells";
+    c.description = "each species' ladder, its shells lit by the slices' normals even where the plants are lit by SH "
+                    "transfer (measurement only)";
+    c.options.shell_lighting = "normal_mapped";
+    return c;
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
@@ -305,6 +317,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     list.push_back(ladder_without_shells());
     for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
     list.push_back(ladder_shells_standard_blending());
+    list.push_back(ladder_shells_normal_lit());
     // At most 1.25x apart from 60 to 500 ms (1.5x below), where the engine baseline's sweep falls
     // on the shipped scenarios, so that a baseline point has an auto point near its frame time:
     // on `forest` auto_60 and auto_90 fell at 0.83x and 1.03x of `baseline`.

@@ -157,6 +157,7 @@ scenario as_asked(scenario s, const player_options& options) {
     }
     if (options.shell_slant >= 0.0) s.shells.slant = options.shell_slant;
     if (!options.shell_blending.empty()) s.shells.blending = options.shell_blending;
+    if (!options.shell_lighting.empty()) s.shells.lighting = options.shell_lighting;
     return s;
 }
 

@@ -72,6 +72,7 @@ struct player_options {
     // Behrendt 2005 Eq. 2's f for the shells (scenario shells.slant); negative: the scenario's.
     double shell_slant = -1.0;
     std::string shell_blending;  // scenario shells.blending; empty: the scenario's
+    std::string shell_lighting;  // scenario shells.lighting; empty: the scenario's
     // Assets already built for this scenario and these options (build_player_assets), moved
     // from: the viewer re-bakes a tuned species in the background and swaps the player.
     std::shared_ptr<scene_assets> assets;

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/bake/shell_bake.h"
+#include "models/bake/transfer_pages.h"
+
 namespace sylva {
 
 glm::vec4 premultiply(const glm::vec4& straight) {
@@ -96,6 +99,52 @@ std::vector<image_rgba8> next_pyramid_level_standard(const std::vector<image_rgb
 
 std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices) {
     return pair_up(slices, merge_normal_slices);
+}
+
+std::vector<image_rgba8> merge_transfer_slices(std::span<const image_rgba8> lower, std::span<const image_rgba8> upper) {
+    if (lower.size() != k_transfer_pages || upper.size() != k_transfer_pages)
+        throw std::invalid_argument("merge_transfer_slices: a slice's transfer is k_transfer_pages pages");
+    for (std::size_t p = 0; p < k_transfer_pages; ++p)
+        if (lower[p].width != lower[0].width || lower[p].height != lower[0].height ||
+            upper[p].width != lower[0].width || upper[p].height != lower[0].height ||
+            lower[p].texels.size() != upper[p].texels.size())
+            throw std::invalid_argument("merge_transfer_slices: the pages differ in size");
+    std::vector<image_rgba8> out(lower.begin(), lower.end());
+    const std::size_t coverage_page = k_shell_transfer_coverage_channel / 4;
+    const std::size_t coverage_channel = k_shell_transfer_coverage_channel % 4;
+    for (std::size_t i = 0; i < out[0].texels.size(); i += 4) {
+        const float au = float(upper[coverage_page].texels[i + coverage_channel]) / 255.0f;
+        const float al = float(lower[coverage_page].texels[i + coverage_channel]) / 255.0f * (1.0f - au);
+        const float a = au + al;
+        for (std::size_t c = 0; c < k_shell_transfer_coverage_channel; ++c) {
+            const std::size_t p = c / 4, k = i + c % 4;
+            // The bytes encode T linearly (models/bake/transfer_pages.h), so they average as T does.
+            const float v = a > 0.0f ? (float(upper[p].texels[k]) * au + float(lower[p].texels[k]) * al) / a
+                                     : float(upper[p].texels[k]);
+            out[p].texels[k] = std::uint8_t(std::min(255.0f, std::round(v)));
+        }
+        out[coverage_page].texels[i + coverage_channel] = std::uint8_t(std::min(255.0f, std::round(a * 255.0f)));
+    }
+    return out;
+}
+
+std::vector<image_rgba8> next_transfer_pyramid_level(const std::vector<image_rgba8>& slices) {
+    if (slices.empty() || slices.size() % k_transfer_pages != 0)
+        throw std::invalid_argument("next_transfer_pyramid_level: not whole slices of k_transfer_pages pages");
+    const std::size_t count = slices.size() / k_transfer_pages;
+    std::vector<image_rgba8> out;
+    const std::span<const image_rgba8> all(slices);
+    for (std::size_t k = 0; k < count; k += 2) {
+        const auto lower = all.subspan(k * k_transfer_pages, k_transfer_pages);
+        if (k + 1 == count) {
+            out.insert(out.end(), lower.begin(), lower.end());  // an odd top slice carried up
+            break;
+        }
+        const std::vector<image_rgba8> merged =
+            merge_transfer_slices(lower, all.subspan((k + 1) * k_transfer_pages, k_transfer_pages));
+        out.insert(out.end(), merged.begin(), merged.end());
+    }
+    return out;
 }
 
 }  // namespace sylva

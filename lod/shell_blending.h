@@ -9,6 +9,7 @@
 // Colours here are linear RGBA in [0, 1]; a "frame" colour F is what the framebuffer holds.
 #include <cstdint>
 #include <glm/vec4.hpp>
+#include <span>
 #include <vector>
 
 #include "models/image/image.h"
@@ -44,5 +45,13 @@ std::vector<image_rgba8> next_pyramid_level_standard(const std::vector<image_rgb
 // seen from above, the upper's over the lower's by their coverage, and coverage as alpha merges.
 image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upper);
 std::vector<image_rgba8> next_normal_pyramid_level(const std::vector<image_rgba8>& slices);
+// The same for the slices' SH transfer (models/bake/shell_bake.h shell_stack::transfer,
+// k_transfer_pages pages a slice, page 4's alpha the coverage): every coefficient the upper's over
+// the lower's by coverage, t = (t_u·α_u + t_l·α_l·(1 − α_u)) / (α_u + α_l·(1 − α_u)) (Behrendt 2005
+// §4's transfer under §3.3's merge: what is seen from above is lit by the transfer of what
+// covers it), the coverage merged as alpha. `lower` and `upper` are one slice's pages each.
+std::vector<image_rgba8> merge_transfer_slices(std::span<const image_rgba8> lower, std::span<const image_rgba8> upper);
+// `slices` holds k_transfer_pages pages per slice, slice-major.
+std::vector<image_rgba8> next_transfer_pyramid_level(const std::vector<image_rgba8>& slices);
 
 }  // namespace sylva

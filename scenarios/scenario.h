@@ -151,6 +151,10 @@
 //     half_resolution  boolean  true  slices blended at half the frame's resolution
 //     blending         string   "premultiplied"  or "standard" (measurement only: §3.3's pyramid
 //                                    and blending with the standard equation, which pops)
+//     lighting         string   "plants"  lit as the tiled plants are: by SH transfer baked into
+//                                    the slices when every tiled species is SH-lit (Behrendt
+//                                    2005 §4), else by the slices' normals; "normal_mapped"
+//                                    (measurement only): by the normals whatever the plants
 //   }
 //   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true
@@ -409,11 +413,13 @@ struct wang_tile_settings {
 };
 
 inline constexpr std::array<std::string_view, 2> k_shell_blendings{"premultiplied", "standard"};
+inline constexpr std::array<std::string_view, 2> k_shell_lightings{"plants", "normal_mapped"};
 
 struct shell_settings {
     double slant = 1.0;  // Behrendt 2005 Eq. 2's f; the paper's 1
     bool half_resolution = true;
     std::string blending = "premultiplied";  // one of k_shell_blendings
+    std::string lighting = "plants";         // one of k_shell_lightings
     bool operator==(const shell_settings&) const = default;
 };
 

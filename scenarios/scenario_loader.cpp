@@ -363,7 +363,8 @@ const field_table<shell_settings>& shell_fields() {
     static const auto table = field_table<t>()
                                   .number("slant", &t::slant, {0.0, 4.0})
                                   .boolean("half_resolution", &t::half_resolution)
-                                  .choice("blending", &t::blending, k_shell_blendings);
+                                  .choice("blending", &t::blending, k_shell_blendings)
+                                  .choice("lighting", &t::lighting, k_shell_lightings);
     return table;
 }
 

@@ -11,11 +11,12 @@
 namespace sylva {
 namespace {
 
-static_assert(sizeof(shell_bake_settings) == 24, "hashed as bytes: six 32-bit fields, no padding");
+static_assert(sizeof(shell_bake_settings) == 28, "hashed as bytes: seven 32-bit fields, no padding");
 
 std::uint64_t hash_mesh(const mesh_data& mesh, std::uint64_t seed) {
     seed = hash_bytes(std::as_bytes(std::span(mesh.vertices)), seed);
     seed = hash_bytes(std::as_bytes(std::span(mesh.indices)), seed);
+    seed = hash_bytes(std::as_bytes(std::span(mesh.transfer)), seed);
     return hash_bytes(std::as_bytes(std::span(mesh.submeshes)), seed);
 }
 
@@ -45,6 +46,16 @@ shell_textures build_shell_assets(const scenario& s, const scene_assets& assets,
     out.area = s.populations[tiled.front()].area;
     out.standard_blending = s.shells.blending == "standard";
     shell_bake_settings settings = shell_bake_settings_of(s);
+    // Behrendt 2005 §4 on the shells: lit like their plants. When every tiled species is lit by SH
+    // transfer, the slices carry the transfer of what covers them (a quarter of the colour's
+    // texels a side: the transfer varies with depth in the crown, not leaf by leaf); a mix of
+    // SH-lit and normal-lit species keeps the normals, which every species has.
+    bool by_transfer = s.shells.lighting == "plants";
+    for (std::size_t p : tiled) {
+        const species_entry& entry = assets.library.species.at(species_index_of(s, s.populations[p].species));
+        by_transfer = by_transfer && uses_transfer(entry.lighting) && !assets.meshes.at(entry.mesh_reduced).transfer.empty();
+    }
+    if (by_transfer) settings.transfer_texels = std::max(1u, settings.texels / 4);
     // One slice height for every tile (the slices are offset surfaces of the whole terrain):
     // the stack is as tall as the tallest plant any tiled population can have.
     for (std::size_t p : tiled) {

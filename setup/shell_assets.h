@@ -3,7 +3,9 @@
 // (setup/wang_populations.h) is baked once as a slice stack (models/bake/shell_bake.h) from the
 // plants every population with placement "wang_tiles" puts in it and around it (each species'
 // reduced mesh, the far field's detail), through the bake cache; the renderer lays the tiles over
-// the terrain as the tiling does. None when no population is Wang-tiled.
+// the terrain as the tiling does. When every tiled species is lit by SH transfer, the slices carry
+// it too (Behrendt 2005 §4: the shells lit like their plants; scenario shells.lighting). None when
+// no population is Wang-tiled.
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <vector>

@@ -1,12 +1,21 @@
 // Behrendt 2005 §3.3–3.4: a shell slice's fragment finds its Wang tile in the index texture from
 // its terrain position, reads that tile's slice of the current pyramid level (premultiplied
 // colour and the normal seen from above), lights it like the plants (sun with the cascades'
-// shadows, sky, fog) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
+// shadows, sky, fog; under SH_TRANSFER by the SH transfer baked into the slices, §4, as the
+// SH-lit plants are) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
 // GL_ONE_MINUS_SRC_ALPHA), bottom slice first. Near the viewer it fades out where the plants'
 // ladder hands over to it (§3.3 end: a linear fade over the band). Drawn into the shell layer
 // (systems/render/passes/shell_pass.h), it also writes its window depth for the layer's composite.
 #include "common.glsl"
 #include "shading.glsl"
+#ifdef SH_TRANSFER
+#include "transfer.glsl"
+// The slices' transfer, one array per page (models/bake/shell_bake.h shell_stack::transfer; its
+// layers are the colour's), each coefficient (T / range) * 0.5 + 0.5: 0..8 the side facing up,
+// 9..17 the other, world space (the bake turned each plant's by its yaw).
+layout(binding = 5) uniform sampler2DArray u_shell_transfer[5];
+const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
+#endif
 // The depth test before the shader: a slice behind the ground or a plant costs no shading (the
 // pass writes no depth, so testing first changes nothing else).
 layout(early_fragment_tests) in;
@@ -40,8 +49,26 @@ void main() {
     vec4 c = textureGrad(u_shell_colour, vec3(uv, layer), dx, dy);
     float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
     if (c.a * fade < 0.5 / 255.0) discard;
+    vec3 base = u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb;
+#ifdef SH_TRANSFER
+    float seen[9];
+    float other[9];
+    for (int p = 0; p < 5; ++p) {
+        vec4 t = (textureGrad(u_shell_transfer[p], vec3(uv, layer), dx, dy) * 2.0 - 1.0) * k_transfer_page_range;
+        for (int k = 0; k < 4; ++k) {
+            int i = 4 * p + k;
+            if (i < 9) seen[i] = t[k];
+            else if (i < 18) other[i - 9] = t[k];
+        }
+    }
+    // The shadow map at the slice itself (exit 0): the plants the shell stands for cast nothing
+    // into it, so it holds only other objects' shadows, as a plant's lookup outside its sphere does.
+    vec3 lit = shade_transfer(base, sh_transfer_sky(seen), sh_transfer_sun(seen), sh_transfer_sun(other), v_position,
+                              0.0, true);
+#else
     vec3 n = normalize(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
-    vec3 lit = shade_surface(u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb, n, v_position, true);
+    vec3 lit = shade_surface(base, n, v_position, true);
+#endif
     out_color = u_premultiplied != 0 ? vec4(lit * c.a, c.a) * fade : vec4(lit, c.a * fade);
     out_nearest = gl_FragCoord.z;
 }

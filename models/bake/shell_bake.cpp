@@ -6,7 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "lighting/transfer_rotation.h"
 #include "models/bake/billboard_bake.h"
+#include "models/bake/transfer_pages.h"
 
 namespace sylva {
 namespace {
@@ -18,15 +20,18 @@ struct slab_layer {
     std::vector<glm::vec4> colour;  // premultiplied
     std::vector<glm::vec4> normal;  // rgb n·0.5 + 0.5 of the highest surface, a coverage
     std::vector<float> top;         // the highest surface's height, −inf where none
+    // With transfer: the highest surface's (k_billboard_transfer_floats a texel), else empty.
+    std::vector<float> transfer;
 };
 
-slab_layer empty_layer(std::uint32_t side) {
+slab_layer empty_layer(std::uint32_t side, bool transfer) {
     slab_layer l;
     l.side = side;
     const std::size_t n = std::size_t(side) * side;
     l.colour.assign(n, glm::vec4(0.0f));
     l.normal.assign(n, glm::vec4(0.0f));
     l.top.assign(n, -std::numeric_limits<float>::infinity());
+    if (transfer) l.transfer.assign(n * k_billboard_transfer_floats, 0.0f);
     return l;
 }
 
@@ -45,6 +50,9 @@ void composite(slab_layer& layer, const billboard_image& image) {
             layer.colour[i] = c + layer.colour[i] * (1.0f - c.a);
             layer.normal[i] = {glm::vec3(normal), std::min(1.0f, normal.a + layer.normal[i].a * (1.0f - normal.a))};
             layer.top[i] = image.depth[i];
+            if (!layer.transfer.empty())
+                std::copy_n(&image.transfer[i * k_billboard_transfer_floats], k_billboard_transfer_floats,
+                            &layer.transfer[i * k_billboard_transfer_floats]);
         } else {
             layer.colour[i] = layer.colour[i] + c * (1.0f - layer.colour[i].a);
             layer.normal[i].a = std::min(1.0f, layer.normal[i].a + normal.a * (1.0f - layer.normal[i].a));
@@ -94,17 +102,82 @@ void crop(const std::vector<glm::vec4>& values, std::uint32_t side, std::uint32_
         }
 }
 
+// The slab's transfer at transfer_texels² (models/bake/shell_bake.h shell_stack::transfer): each
+// coarse texel the coverage-weighted mean of the tile texels it boxes (x in
+// [⌊j·T/C⌋, ⌊(j + 1)·T/C⌋)), its coverage their mean. No Gaussian: the box is already wider than
+// the colour's. A texel nothing covers takes the slab's mean covered transfer, so bilinear
+// filtering at a crown's edge does not pull in zero light; it is never seen by itself (the
+// colour's alpha is 0 there).
+void downsample_transfer(const slab_layer& layer, std::uint32_t margin, std::uint32_t texels, std::uint32_t coarse,
+                         std::vector<image_rgba8>& out) {
+    constexpr std::size_t n = k_billboard_transfer_floats;
+    std::vector<double> sums(std::size_t(coarse) * coarse * n, 0.0);
+    std::vector<double> weights(std::size_t(coarse) * coarse, 0.0);
+    std::vector<std::uint32_t> counts(std::size_t(coarse) * coarse, 0);
+    std::vector<double> mean(n, 0.0);
+    double mean_weight = 0.0;
+    for (std::uint32_t y = 0; y < texels; ++y)
+        for (std::uint32_t x = 0; x < texels; ++x) {
+            const std::size_t coarse_index =
+                std::size_t(std::uint64_t(y) * coarse / texels) * coarse + std::uint64_t(x) * coarse / texels;
+            const std::size_t fine = std::size_t(y + margin) * layer.side + (x + margin);
+            const double w = layer.normal[fine].a;
+            ++counts[coarse_index];
+            if (!(w > 0.0)) continue;
+            weights[coarse_index] += w;
+            mean_weight += w;
+            for (std::size_t i = 0; i < n; ++i) {
+                const double t = layer.transfer[fine * n + i];
+                sums[coarse_index * n + i] += w * t;
+                mean[i] += w * t;
+            }
+        }
+    std::vector<image_rgba8> pages = blank_transfer_pages(coarse, coarse);
+    for (std::uint32_t y = 0; y < coarse; ++y)
+        for (std::uint32_t x = 0; x < coarse; ++x) {
+            const std::size_t c = std::size_t(y) * coarse + x;
+            for (std::size_t i = 0; i < n; ++i) {
+                const double t = weights[c] > 0.0 ? sums[c * n + i] / weights[c]
+                                 : mean_weight > 0.0 ? mean[i] / mean_weight
+                                                     : 0.0;
+                pages[i / 4].at(x, y)[i % 4] = encode_transfer(float(t));
+            }
+            pages[k_shell_transfer_coverage_channel / 4].at(x, y)[k_shell_transfer_coverage_channel % 4] =
+                to_byte(float(weights[c] / double(counts[c])));
+        }
+    out.insert(out.end(), pages.begin(), pages.end());
+}
+
+// The placed meshes' transfer in the rasterizer's form (floats, both sides per vertex).
+radiance_transfer unpacked_transfer(const mesh_data& placed) {
+    radiance_transfer out;
+    out.bands = 3;
+    out.front.reserve(placed.transfer.size() * 9);
+    out.back.reserve(placed.transfer.size() * 9);
+    for (const vertex_transfer& t : placed.transfer) {
+        const sh9 front = transfer_side(t, 0);
+        const sh9 back = transfer_side(t, 1);
+        out.front.insert(out.front.end(), front.begin(), front.end());
+        out.back.insert(out.back.end(), back.begin(), back.end());
+    }
+    return out;
+}
+
 void validate(std::span<const shell_species> species, std::span<const shell_plant> plants, double tile_size_m,
               const shell_bake_settings& settings) {
     if (!(tile_size_m > 0.0)) throw std::invalid_argument("bake_shell_stack: the tile size must be positive");
     if (settings.texels == 0 || settings.texels > 4096 || settings.slices == 0 || settings.slices > 256 ||
         settings.supersampling == 0 || settings.supersampling > 8 || !(settings.height_m >= 0.0f) ||
-        !(settings.blur_texels >= 0.0f) || settings.margin_texels > 64)
+        !(settings.blur_texels >= 0.0f) || settings.margin_texels > 64 || settings.transfer_texels > settings.texels)
         throw std::invalid_argument(
-            "bake_shell_stack: texels 1..4096, slices 1..256, supersampling 1..8, margin 0..64, height and blur >= 0");
-    for (const shell_species& s : species)
+            "bake_shell_stack: texels 1..4096, slices 1..256, supersampling 1..8, margin 0..64, height and blur >= 0, "
+            "transfer texels 0..texels");
+    for (const shell_species& s : species) {
         if (!s.mesh || !s.leaf_texture || !s.bark_texture)
             throw std::invalid_argument("bake_shell_stack: a species without its mesh or textures");
+        if (settings.transfer_texels > 0 && s.mesh->transfer.size() != s.mesh->vertices.size())
+            throw std::invalid_argument("bake_shell_stack: transfer asked for, and a species' mesh has none");
+    }
     for (const shell_plant& p : plants)
         if (p.species >= species.size()) throw std::invalid_argument("bake_shell_stack: a plant's species is out of range");
 }
@@ -119,6 +192,8 @@ void append_placed(mesh_data& into, const mesh_data& model, const placement& whe
     const glm::vec3 at{float(where.xz.x), 0.0f, float(where.xz.y)};
     for (const vertex& v : model.vertices)
         into.vertices.push_back({turn(v.position * where.scale) + at, turn(v.normal), v.uv});
+    // A uniform scale leaves the transfer as it is (visibility and cosines do not change).
+    for (const vertex_transfer& t : model.transfer) into.transfer.push_back(rotate_about_y(t, where.yaw));
     // Submeshes keep their material; each model's are appended in its order.
     for (const submesh& sub : model.submeshes) {
         submesh placed = sub;
@@ -135,6 +210,9 @@ shell_stack bake_shell_stack(std::span<const shell_species> species, std::span<c
     // Every species' plants as one mesh each (the rasterizer takes one leaf texture).
     std::vector<mesh_data> placed(species.size());
     for (const shell_plant& p : plants) append_placed(placed[p.species], *species[p.species].mesh, p.where);
+    const bool with_transfer = settings.transfer_texels > 0;
+    std::vector<radiance_transfer> transfer(with_transfer ? placed.size() : 0);
+    for (std::size_t s = 0; s < transfer.size(); ++s) transfer[s] = unpacked_transfer(placed[s]);
     float top = 0.0f;
     for (const mesh_data& m : placed)
         for (const vertex& v : m.vertices) top = std::max(top, v.position.y);
@@ -157,19 +235,22 @@ shell_stack bake_shell_stack(std::span<const shell_species> species, std::span<c
     bake.supersampling = settings.supersampling;
     bake.dilation_texels = 0;
     for (std::uint32_t k = 0; k < settings.slices; ++k) {
-        slab_layer layer = empty_layer(side);
+        slab_layer layer = empty_layer(side, with_transfer);
         for (std::size_t s = 0; s < species.size(); ++s) {
             if (placed[s].indices.empty()) continue;
             billboard_source source;
             source.mesh = &placed[s];
             source.leaf_texture = species[s].leaf_texture;
             source.bark_texture = species[s].bark_texture;
+            if (with_transfer) source.transfer = &transfer[s];
             source.slab_min = float(k) * out.slice_height_m;
             // The top slab keeps everything above it too (a plant taller than height_m).
             source.slab_max = k + 1 == settings.slices ? std::numeric_limits<float>::infinity()
                                                        : float(k + 1) * out.slice_height_m;
             composite(layer, bake_billboard(source, plane, bake));
         }
+        if (with_transfer) downsample_transfer(layer, settings.margin_texels, settings.texels, settings.transfer_texels,
+                                               out.transfer);
         blur(layer.colour, side, settings.blur_texels);
         // Normals are blurred weighted by their coverage, then made straight again (up where
         // nothing is covered), so uncovered texels do not pull them toward zero.

@@ -32,6 +32,10 @@ struct shell_bake_settings {
     std::uint32_t supersampling = 3;  // s x s subsamples per texel (1..8)
     float blur_texels = 0.5f;        // σ of the horizontal Gaussian, in texels; 0: none
     std::uint32_t margin_texels = 3;  // baked around the tile for the blur, then cropped
+    // Behrendt 2005 §4 on shells: the SH transfer of the highest surface per slice texel, at
+    // this many texels per side (a divisor-free box of the colour texels; 0: none). Every
+    // species must then carry its transfer (mesh_data::transfer).
+    std::uint32_t transfer_texels = 0;
 };
 
 // One species' model as the bake draws it.
@@ -57,15 +61,28 @@ struct shell_stack {
     // Per slice: rgb the normal of the highest covered surface as n·0.5 + 0.5 (straight), a the
     // coverage, for the shell's lighting.
     std::vector<image_rgba8> normal;
+    // With shell_bake_settings::transfer_texels, else empty: per slice k_transfer_pages pages
+    // (slice-major: slice k's pages at [k·5, k·5 + 5)) of transfer_texels², the world-space
+    // transfer of the highest covered surface, its seen side the one facing up, laid out and
+    // encoded as models/bake/transfer_pages.h lays out a billboard's; page 4's alpha is the
+    // texel's coverage (straight 8-bit), which the slice pyramid weighs merged slices by.
+    std::vector<image_rgba8> transfer;
+    bool has_transfer() const { return !transfer.empty(); }
 };
 
+// The channel of a transfer page set holding the texel's coverage (page 4's alpha): the 18
+// coefficients fill channels 0..17.
+constexpr std::size_t k_shell_transfer_coverage_channel = 19;
+
 // Deterministic (the rasterizer is). Throws std::invalid_argument for a species index out of
-// range, a missing mesh or texture, or settings out of range.
+// range, a missing mesh or texture, settings out of range, or transfer_texels with a species
+// whose mesh has no transfer (or more than `texels`).
 shell_stack bake_shell_stack(std::span<const shell_species> species, std::span<const shell_plant> plants,
                              double tile_size_m, const shell_bake_settings& settings = {});
 
 // The model's triangles placed as the renderer places an instance: turned by `yaw` about +y
-// (x' = c·x + s·z, z' = −s·x + c·z; shaders/instance.glsl), scaled, moved to (x, 0, z).
+// (x' = c·x + s·z, z' = −s·x + c·z; shaders/instance.glsl), scaled, moved to (x, 0, z). The
+// model's transfer, when it has one, is turned with it (lighting/transfer_rotation.h).
 void append_placed(mesh_data& into, const mesh_data& model, const placement& where);
 
 }  // namespace sylva

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "models/cache/bake_cache.h"
+#include "models/bake/transfer_pages.h"
 #include "models/cache/mesh_io.h"
 
 namespace sylva {
@@ -24,6 +25,8 @@ std::vector<std::byte> serialize_shell_stacks(const std::vector<shell_stack>& st
             write_image(out, s.colour[k]);
             write_image(out, s.normal[k]);
         }
+        out.pod(std::uint64_t(s.transfer.size()));
+        for (const image_rgba8& page : s.transfer) write_image(out, page);
     }
     return std::move(out.bytes());
 }
@@ -52,6 +55,20 @@ std::vector<shell_stack> deserialize_shell_stacks(std::span<const std::byte> byt
         }
         if (s.colour.front().width != stacks.front().colour.front().width)
             throw std::runtime_error("shell textures: tiles of different sizes");
+        const auto pages = in.pod<std::uint64_t>();
+        if (pages != 0 && pages != slices * k_transfer_pages)
+            throw std::runtime_error("shell textures: " + std::to_string(pages) + " transfer pages for " +
+                                     std::to_string(slices) + " slices");
+        for (std::uint64_t p = 0; p < pages; ++p) {
+            s.transfer.push_back(read_image(in));
+            const image_rgba8& first = s.transfer.front();
+            if (s.transfer.back().width != first.width || s.transfer.back().height != first.height ||
+                first.width == 0 || first.width > s.colour.front().width)
+                throw std::runtime_error("shell textures: transfer pages of different or impossible sizes");
+        }
+        if (s.transfer.empty() != stacks.front().transfer.empty() ||
+            (!s.transfer.empty() && s.transfer.front().width != stacks.front().transfer.front().width))
+            throw std::runtime_error("shell textures: tiles with and without transfer, or of different sizes");
     }
     if (!in.at_end()) throw std::runtime_error("shell textures: trailing bytes");
     return stacks;

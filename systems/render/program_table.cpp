@@ -73,6 +73,7 @@ program_table::program_table(const program_options& options) : m_options(options
     if (options.shells) {
         std::vector<std::string> defines;
         if (options.toon) defines.push_back("STYLE_TOON");
+        if (options.shell_transfer) defines.push_back("SH_TRANSFER");
         m_screen[std::size_t(screen_program::shell)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
         m_screen[std::size_t(screen_program::shell_layer_depth)] =
             m_shaders.program({"sky.vert", "shell_layer_depth.frag", {}, {}});

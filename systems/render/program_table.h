@@ -83,6 +83,7 @@ struct program_options {
     bool toon = false;           // renderer_settings::toon
     bool normals = false;        // renderer_settings::lines: the view writes its normal buffer
     bool shells = false;         // the scene has shell textures (passes/shell_pass.h)
+    bool shell_transfer = false;  // ... lit by the SH transfer baked into them (SH_TRANSFER)
 };
 
 class program_table {

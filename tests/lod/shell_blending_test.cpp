@@ -6,6 +6,9 @@
 
 #include <cmath>
 
+#include "models/bake/shell_bake.h"
+#include "models/bake/transfer_pages.h"
+
 namespace sylva {
 namespace {
 
@@ -95,6 +98,36 @@ TEST(shell_blending, the_standard_equations_pyramid_shifts_colours) {
     EXPECT_EQ(unpremultiply_slice(pre).texels, (std::vector<std::uint8_t>{255, 0, 0, 128}));
     pre.texels = {0, 0, 0, 0};
     EXPECT_EQ(unpremultiply_slice(pre).texels, (std::vector<std::uint8_t>{0, 0, 0, 0}));
+}
+
+// One slice's transfer pages, every coefficient byte `value`, coverage byte `coverage`.
+std::vector<image_rgba8> transfer_slice(std::uint8_t value, std::uint8_t coverage) {
+    std::vector<image_rgba8> pages(k_transfer_pages, flat(value, value, value, value));
+    for (image_rgba8& page : pages) page.width = 2;
+    for (std::size_t t = 0; t < 2; ++t)
+        pages[k_shell_transfer_coverage_channel / 4].texels[t * 4 + k_shell_transfer_coverage_channel % 4] = coverage;
+    return pages;
+}
+
+// The slices' transfer merges like their normals, by coverage, upper over lower: upper bytes 200
+// at coverage 128/255 = 0.502 over lower bytes 100 at full coverage: weights 0.502 and
+// 1·(1 − 0.502) = 0.498, 200·0.502 + 100·0.498 = 150.2 → 150, coverage 1 → 255. Where neither
+// is covered the upper's is kept (nothing shows it); an odd top slice is carried up.
+TEST(shell_blending, a_pyramid_level_merges_the_transfer_by_coverage) {
+    std::vector<image_rgba8> slices = transfer_slice(100, 255);
+    for (const image_rgba8& page : transfer_slice(200, 128)) slices.push_back(page);
+    for (const image_rgba8& page : transfer_slice(30, 7)) slices.push_back(page);
+    const std::vector<image_rgba8> level = next_transfer_pyramid_level(slices);
+    ASSERT_EQ(level.size(), 2 * k_transfer_pages);
+    for (std::size_t c = 0; c < k_shell_transfer_coverage_channel; ++c)
+        EXPECT_EQ(level[c / 4].texels[4 + c % 4], 150) << "coefficient " << c;
+    EXPECT_EQ(level[k_shell_transfer_coverage_channel / 4].texels[4 + k_shell_transfer_coverage_channel % 4], 255);
+    for (std::size_t p = 0; p < k_transfer_pages; ++p) EXPECT_EQ(level[k_transfer_pages + p].texels, slices[10 + p].texels);
+    const std::vector<image_rgba8> bare = merge_transfer_slices(transfer_slice(90, 0), transfer_slice(170, 0));
+    EXPECT_EQ(bare[0].texels[0], 170);
+    EXPECT_EQ(bare[k_shell_transfer_coverage_channel / 4].texels[k_shell_transfer_coverage_channel % 4], 0);
+    slices.pop_back();
+    EXPECT_THROW(next_transfer_pyramid_level(slices), std::invalid_argument) << "not whole slices";
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "lod/shell_blending.h"
+#include "models/bake/transfer_pages.h"
 #include "models/terrain/terrain.h"
 #include "models/terrain/wang_tiles.h"
 #include "systems/render/renderer.h"
@@ -59,23 +60,31 @@ shell_pass::shell_pass(const scene_assets& assets) {
     }
     std::vector<image_rgba8> colour;
     std::vector<image_rgba8> normal;
+    std::vector<std::vector<image_rgba8>> transfer(shells.tiles.front().has_transfer() ? k_transfer_pages : 0);
     m_standard_blending = shells.standard_blending;
     for (const shell_stack& stack : shells.tiles) {
         std::vector<image_rgba8> c = stack.colour;
         if (m_standard_blending)
             for (image_rgba8& slice : c) slice = unpremultiply_slice(slice);
         std::vector<image_rgba8> n = stack.normal;
+        std::vector<image_rgba8> t = stack.transfer;
         for (;;) {
             colour.insert(colour.end(), c.begin(), c.end());
             normal.insert(normal.end(), n.begin(), n.end());
+            for (std::size_t k = 0; k < t.size(); ++k) transfer[k % k_transfer_pages].push_back(t[k]);
             if (c.size() == 1) break;
             c = m_standard_blending ? next_pyramid_level_standard(c) : next_pyramid_level(c);
             n = next_normal_pyramid_level(n);
+            if (!t.empty()) t = next_transfer_pyramid_level(t);
         }
     }
     m_colour = make_texture_array(colour, false);
     m_normal = make_texture_array(normal, false);
     for (const image_rgba8& i : colour) m_uploaded_bytes += 2 * i.texels.size() * 4 / 3;  // both, with mips
+    for (const std::vector<image_rgba8>& page : transfer) {
+        m_transfer.push_back(make_texture_array(page, false));
+        for (const image_rgba8& i : page) m_uploaded_bytes += i.texels.size() * 4 / 3;
+    }
     // The tiling over the terrain: one texel per lattice cell, terrain-local.
     const double t = shells.tile_size_m;
     const heightfield& ground = assets.terrain;
@@ -152,6 +161,7 @@ void shell_pass::draw(pass_context& context) {
     glBindTextureUnit(2, m_colour.id());
     glBindTextureUnit(3, m_normal.id());
     glBindTextureUnit(4, m_index.id());
+    for (std::size_t p = 0; p < m_transfer.size(); ++p) glBindTextureUnit(GLuint(5 + p), m_transfer[p].id());
     if (context.shadows) glBindTextureUnit(1, context.shadows->texture());
     glUniform3fv(u.terrain_position, 1, &view.terrain_position.x);
     glUniform1f(u.slice_height, m_slice_height);

@@ -5,7 +5,9 @@
 //
 // On the GPU: the terrain's triangles once more with each triangle's centre per vertex (for the
 // slanting, §3.2; static), the Wang tiles' slice pyramids as two 2-D array textures (colour and
-// normal, layer = tile · layers_per_tile + first layer of the level + slice), and the tiling as
+// normal, layer = tile · layers_per_tile + first layer of the level + slice; with SH-lit plants,
+// five more of the SH transfer, one per page, at a quarter of the texels a side: one array
+// of all pages would pass GL's 2048 layers on `valley`), and the tiling as
 // an index texture of tile types, one texel per lattice cell (§3.4). Mip levels are each layer's
 // own: a tile's border texels were baked with the plants across it (models/bake/shell_bake.h),
 // so neighbouring tiles' mips agree where their content does.
@@ -74,6 +76,8 @@ private:
     glm::vec4 m_area{0.0f};
     gl_texture m_colour;
     gl_texture m_normal;
+    // Under SH transfer (shell_stack::transfer): one array per transfer page, the colour's layers.
+    std::vector<gl_texture> m_transfer;
     gl_texture m_index;
     gl_buffer m_vertices;
     gl_vertex_array m_vertex_array;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "lighting/transfer_rotation.h"
+#include "models/bake/transfer_pages.h"
 #include "models/generate/plant_library.h"
 
 namespace sylva {
@@ -101,6 +103,61 @@ TEST(shell_bake, the_higher_surface_wins_and_neighbours_reach_in) {
     EXPECT_EQ(t.colour[0].at(3, 3)[3], 255);
     EXPECT_EQ(t.colour[0].at(4, 4)[3], 0) << "nothing on the +z side";
     EXPECT_EQ(t.colour[0].at(5, 2)[3], 0);
+}
+
+// Behrendt 2005 §4 on the shells: a slab's transfer is that of the surface seen from above, in
+// world space. A leaf facing up with the same transfer at every vertex, turned a quarter about y,
+// lands in slab 2 with its coefficients turned by lighting/transfer_rotation.h's closed form
+// (c = 0, s = 1): front t2 = 0.5, t4 = 0.2 give w2 = c·t2 − s·t3 = 0, w3 = s·t2 + c·t3 = 0.5,
+// w4 = c·t4 + s·t5 = 0, w5 = −s·t4 + c·t5 = −0.2; back t8 = 0.05 gives w6 = (√3/2)·s²·t8 = 0.0433,
+// w7 = −c·s·t8 = 0, w8 = (1 − s²/2)·t8 = 0.025. At 4 transfer texels a side over 8 colour texels,
+// the leaf's colour texels 2..5 are transfer texels 1..2, wholly covered; texels 0 and 3 take the
+// slab's covered mean (the same transfer) with coverage 0, and the empty slabs zero transfer.
+TEST(shell_bake, a_slab_carries_the_world_space_transfer_of_the_surface_seen_from_above) {
+    mesh_data model;
+    add_leaf(model, -1.0f, 1.0f, -1.0f, 1.0f, 2.5f);
+    sh9 front{}, back{};
+    front[0] = 0.8f;
+    front[1] = 0.1f;
+    front[2] = 0.5f;
+    front[4] = 0.2f;
+    back[0] = 0.3f;
+    back[1] = -0.1f;
+    back[8] = 0.05f;
+    model.transfer.assign(model.vertices.size(), pack_transfer(front, back));
+    const image_rgba8 green = solid(0, 200, 0);
+    const image_rgba8 bark = solid(90, 60, 30);
+    const shell_species species[] = {{&model, &green, &bark}};
+    shell_plant plant;
+    plant.where.xz = {2.0, 2.0};
+    plant.where.yaw = 1.5707963f;
+    shell_bake_settings settings = exact(8, 4, 4.0f);
+    settings.transfer_texels = 4;
+    const shell_stack stack = bake_shell_stack(species, std::span(&plant, 1), 4.0, settings);
+    ASSERT_EQ(stack.transfer.size(), 4u * k_transfer_pages);
+    const float seen[9] = {0.8f, 0.1f, 0.0f, 0.5f, 0.0f, -0.2f, 0.0f, 0.0f, 0.0f};
+    const float other[9] = {0.3f, -0.1f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0433f, 0.0f, 0.025f};
+    const auto channel = [&](std::uint32_t slab, std::uint32_t x, std::uint32_t z, std::size_t i) {
+        return stack.transfer[slab * k_transfer_pages + i / 4].at(x, z)[i % 4];
+    };
+    for (std::uint32_t z = 0; z < 4; ++z)
+        for (std::uint32_t x = 0; x < 4; ++x) {
+            const bool covered = x >= 1 && x <= 2 && z >= 1 && z <= 2;
+            EXPECT_EQ(channel(2, x, z, k_shell_transfer_coverage_channel), covered ? 255 : 0) << x << " " << z;
+            for (std::size_t i = 0; i < 9; ++i) {
+                EXPECT_NEAR(decode_transfer(channel(2, x, z, i)), seen[i], 0.006) << "seen " << i << " at " << x << " " << z;
+                EXPECT_NEAR(decode_transfer(channel(2, x, z, 9 + i)), other[i], 0.006) << "other " << i;
+                EXPECT_EQ(channel(0, x, z, i), encode_transfer(0.0f)) << "an empty slab";
+            }
+            EXPECT_EQ(channel(0, x, z, k_shell_transfer_coverage_channel), 0);
+        }
+    // Transfer asked of a species without it is refused.
+    mesh_data bare;
+    add_leaf(bare, -1.0f, 1.0f, -1.0f, 1.0f, 2.5f);
+    const shell_species without[] = {{&bare, &green, &bark}};
+    EXPECT_THROW(bake_shell_stack(without, std::span(&plant, 1), 4.0, settings), std::invalid_argument);
+    settings.transfer_texels = 9;
+    EXPECT_THROW(bake_shell_stack(species, std::span(&plant, 1), 4.0, settings), std::invalid_argument);
 }
 
 // A generated shrub: its slabs hold its parts from the ground up, the blur spreads coverage
