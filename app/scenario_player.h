@@ -157,6 +157,9 @@ public:
     ecs::world& world() { return m_world; }
     const ecs::schedule& schedule() const { return m_schedule; }
     run_info info() const { return m_info; }
+    // How often the shells' SH transfer was summed with a light that held still (0 without a
+    // renderer or SH-lit shells; systems/render/passes/shell_pass.h).
+    std::uint32_t shell_relights() const { return m_renderer ? m_renderer->shell_relights() : 0; }
     // What primitives cost where this player draws (measured, or as given in its options).
     const primitive_costs& costs() const { return m_world.resource<primitive_costs>(); }
 

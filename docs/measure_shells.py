@@ -13,8 +13,13 @@
   more and more triangles are replaced by their pyramid's merged levels: popping with the
   premultiplied pyramid and blending against the same pyramid built and blended with the
   standard equation (`ladder_shells_standard_blending`).
-- Memory: `valley` itself, with its shells and without (the ladder without the shell rung): the
-  shells' bytes, everything uploaded at start, the process's peak resident memory, frame time.
+- SH lighting (§4 on the shells): the 10° view with every plant lit by SH transfer, under the
+  valley's sun (32°) and a low one (12°): shells lit by the transfer baked into their slices
+  (`ladder`) against the same shells lit by their normals (`ladder_shells_normal_lit`) and the
+  ladder without shells (crossed billboards, SH-lit from their transfer pages).
+- Memory: `valley` itself, with its shells and without (the ladder without the shell rung), and
+  with every plant SH-lit (the shells then carry transfer pages): the shells' bytes, everything
+  uploaded at start, the process's peak resident memory, frame time.
 
 Usage: docs/measure_shells.py [--frames 3] [--timing-rounds 3] [--rounds 3] [--dolly-frames 8]
                               [--width 480 --height 270]
@@ -35,6 +40,8 @@ import measure_meta
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 ANGLES = [5, 10, 20]
+SUN_ELEVATIONS = [32, 12]
+SH_CONFIGURATIONS = ["ladder", "ladder_shells_normal_lit", "ladder_no_shells"]
 FAR_CONFIGURATIONS = ["ladder", "ladder_shells_f0.25", "ladder_shells_f0", "ladder_no_shells",
                       "crossed_billboard_only", "billboard_cloud_only", "points_lines", "points_lines_d2"]
 
@@ -67,6 +74,15 @@ def far_field(angle_deg, density=1.0):
     s["camera"] = {"far_m": 3000, "keyframes": [
         {"t": 0.0, "position": [0, y, 380], "target": [0, 8, -250]},
         {"t": 0.5, "position": [0, y, 370], "target": [0, 8, -260]}]}
+    return s
+
+
+def sh_lit(s, elevation_deg):
+    """`s` with every plant lit by SH transfer and the sun `elevation_deg` above the horizon."""
+    s = copy.deepcopy(s)
+    s["name"] += f"_sh_sun{elevation_deg}"
+    s["lod"]["lighting"] = "sh"
+    s["sun"] = {"keyframes": [{"t": 0, "elevation_deg": elevation_deg, "azimuth_deg": 140}]}
     return s
 
 
@@ -116,12 +132,12 @@ def fmt(v, digits=3):
     return "n/a" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.{digits}f}"
 
 
-def far_field_table(report):
+def far_field_table(report, configurations=FAR_CONFIGURATIONS):
     rows = {c["name"]: c for c in report["configurations"]}
     ladder_ms = rows["ladder_no_shells"]["frame_ms"]["median"]
     lines = ["| configuration | frame ms (median) | time vs ladder_no_shells | SSIM | FLIP | coverage IoU | popping |",
              "|---|---:|---:|---:|---:|---:|---:|"]
-    for name in FAR_CONFIGURATIONS:
+    for name in configurations:
         c = rows.get(name)
         if not c:
             continue
@@ -146,6 +162,7 @@ def main():
         far = {}
         for angle in ANGLES:
             far[angle] = bench(tmp, write(tmp, far_field(angle)), args)
+        sh = {e: bench(tmp, write(tmp, sh_lit(far_field(10), e)), args, SH_CONFIGURATIONS) for e in SUN_ELEVATIONS}
         merging = bench(tmp, write(tmp, dolly_away(far_field(10), args.dolly_frames)), args,
                         ["ladder", "ladder_shells_standard_blending"], args.dolly_frames)
         # Plant count: base and four times the plants, in alternation.
@@ -164,7 +181,8 @@ def main():
             density[label] = (statistics.median(times[0]), statistics.median(times[1]), plants)
         # Memory: valley with and without its shells.
         memory = {}
-        for label, s in (("shells", valley()), ("no shells", without_shells(valley()))):
+        for label, s in (("shells", valley()), ("no shells", without_shells(valley())),
+                         ("shells, SH-lit plants", sh_lit(valley(), 32))):
             memory[label] = play(tmp, write(tmp, s), args, args.frames)["summary"]
 
     page += [f"# Shells (Behrendt 2005 §3)", "",
@@ -181,6 +199,14 @@ def main():
     for angle in ANGLES:
         lines, _ = far_field_table(far[angle])
         page += [f"### {angle}° above the canopy", ""] + lines + [""]
+    page += ["## SH lighting", "",
+             "The 10° view with every plant lit by SH transfer (Behrendt 2005 §4; `lod.lighting` \"sh\"), "
+             "against its own reference (every plant at full geometry, SH-lit). `ladder`: the shells lit by the "
+             "transfer baked into their slices; `ladder_shells_normal_lit`: the same shells lit by their normals, "
+             "as they were before; `ladder_no_shells`: crossed billboards, lit from their transfer pages.", ""]
+    for elevation in SUN_ELEVATIONS:
+        lines, _ = far_field_table(sh[elevation], SH_CONFIGURATIONS)
+        page += [f"### Sun {elevation}° above the horizon", ""] + lines + [""]
     rows = {c["name"]: c for c in merging["configurations"]}
     page += ["## Slice merging", "",
              f"The 10° view backing away 150 m over {args.dolly_frames} frames, so the slices of more and more "

@@ -2,17 +2,25 @@
 // its terrain position, reads that tile's slice of the current pyramid level (premultiplied
 // colour and the normal seen from above), lights it like the plants (sun with the cascades'
 // shadows, sky, fog; under SH_TRANSFER by the SH transfer baked into the slices, §4, as the
-// SH-lit plants are) and is blended with the modified equation c + F·(1 − α) (GL_ONE,
+// SH-lit plants are, its sums with this light made ahead by shaders/shell_relight.comp) and is
+// blended with the modified equation c + F·(1 − α) (GL_ONE,
 // GL_ONE_MINUS_SRC_ALPHA), bottom slice first. Near the viewer it fades out where the plants'
 // ladder hands over to it (§3.3 end: a linear fade over the band). Drawn into the shell layer
 // (systems/render/passes/shell_pass.h), it also writes its window depth for the layer's composite.
 #include "common.glsl"
 #include "shading.glsl"
-#ifdef SH_TRANSFER
+#if defined(SH_TRANSFER) && defined(SHELL_RELIT)
+// The slices' SH transfer summed with this light (shaders/shell_relight.comp, run once the light
+// holds still; the colour's layers at the transfer's resolution): rgb T_seen . L_sky and a
+// T_seen . Y(sun) for the side facing up, r T_other . Y(sun) for the other.
+layout(binding = 5) uniform sampler2DArray u_lit_seen;
+layout(binding = 6) uniform sampler2DArray u_lit_other;
+#elif defined(SH_TRANSFER)
 #include "transfer.glsl"
 // The slices' transfer, one array per page (models/bake/shell_bake.h shell_stack::transfer; its
 // layers are the colour's), each coefficient (T / range) * 0.5 + 0.5: 0..8 the side facing up,
-// 9..17 the other, world space (the bake turned each plant's by its yaw).
+// 9..17 the other, world space (the bake turned each plant's by its yaw). Summed here with a
+// light that changes every frame.
 layout(binding = 5) uniform sampler2DArray u_shell_transfer[5];
 const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
 #endif
@@ -51,6 +59,12 @@ void main() {
     if (c.a * fade < 0.5 / 255.0) discard;
     vec3 base = u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb;
 #ifdef SH_TRANSFER
+#ifdef SHELL_RELIT
+    vec4 sums = textureGrad(u_lit_seen, vec3(uv, layer), dx, dy);
+    vec3 sky_seen = sums.rgb;
+    float sun_seen = sums.a;
+    float sun_other = textureGrad(u_lit_other, vec3(uv, layer), dx, dy).r;
+#else
     float seen[9];
     float other[9];
     for (int p = 0; p < 5; ++p) {
@@ -61,10 +75,13 @@ void main() {
             else if (i < 18) other[i - 9] = t[k];
         }
     }
+    vec3 sky_seen = sh_transfer_sky(seen);
+    float sun_seen = sh_transfer_sun(seen);
+    float sun_other = sh_transfer_sun(other);
+#endif
     // The shadow map at the slice itself (exit 0): the plants the shell stands for cast nothing
     // into it, so it holds only other objects' shadows, as a plant's lookup outside its sphere does.
-    vec3 lit = shade_transfer(base, sh_transfer_sky(seen), sh_transfer_sun(seen), sh_transfer_sun(other), v_position,
-                              0.0, true);
+    vec3 lit = shade_transfer(base, sky_seen, sun_seen, sun_other, v_position, 0.0, true);
 #else
     vec3 n = normalize(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
     vec3 lit = shade_surface(base, n, v_position, true);

@@ -75,6 +75,12 @@ program_table::program_table(const program_options& options) : m_options(options
         if (options.toon) defines.push_back("STYLE_TOON");
         if (options.shell_transfer) defines.push_back("SH_TRANSFER");
         m_screen[std::size_t(screen_program::shell)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
+        if (options.shell_transfer) {
+            m_screen[std::size_t(screen_program::shell_relight)] =
+                m_shaders.program({{}, {}, {}, {}, "shell_relight.comp"});
+            defines.push_back("SHELL_RELIT");
+            m_screen[std::size_t(screen_program::shell_relit)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
+        }
         m_screen[std::size_t(screen_program::shell_layer_depth)] =
             m_shaders.program({"sky.vert", "shell_layer_depth.frag", {}, {}});
         m_screen[std::size_t(screen_program::shell_composite)] =

@@ -39,7 +39,9 @@ enum class surface_primitive : std::uint8_t { triangles, points, lines, line_qua
 // shell: the shell slices over the terrain (passes/shell_pass.h), built when the scene has them,
 // with shell_layer_depth and shell_composite, which fill the shell layer's depth and draw it over
 // the frame (passes/shell_pass.h), and with an ID buffer shell_composite_ids, which
-// writes the shells' ID where the layer covers a pixel.
+// writes the shells' ID where the layer covers a pixel. When the plants are SH-lit, `shell` sums the
+// shells' SH transfer with the light per fragment, shell_relight (a compute program) sums it
+// once for a light that holds still, and shell_relit draws with those sums.
 enum class screen_program : std::uint8_t {
     sky,
     splat_composite,
@@ -49,6 +51,8 @@ enum class screen_program : std::uint8_t {
     shell_layer_depth,
     shell_composite,
     shell_composite_ids,
+    shell_relight,
+    shell_relit,
     count
 };
 

@@ -130,6 +130,8 @@ public:
     std::size_t programs_compiled() const { return m_programs.compiled_count(); }
     std::uint64_t static_upload_bytes() const { return m_static_upload_bytes; }
     std::uint64_t shell_bytes() const { return m_shell_pass.uploaded_bytes(); }
+    // How often the shells' SH transfer was summed with a light that held still (shell_pass).
+    std::uint32_t shell_relights() const { return m_shell_pass.relights(); }
     // Uploads a mesh after construction (its id follows the scene's meshes) and builds the
     // programs it is drawn with; draw lists may then name it. Used by the primitive-cost
     // calibration.

@@ -60,7 +60,7 @@ GLuint compile(GLenum stage, const std::string& text, std::string_view path) {
 }
 
 std::string key_of(const program_source& source) {
-    std::string key = source.vertex + "|" + source.geometry + "|" + source.fragment;
+    std::string key = source.vertex + "|" + source.geometry + "|" + source.fragment + "|" + source.compute;
     for (const auto& d : source.defines) key += "|" + d;
     return key;
 }
@@ -80,7 +80,9 @@ GLuint shader_library::program(const program_source& source) {
     if (auto it = m_programs.find(key); it != m_programs.end()) return it->second.id();
 
     gl_program program(glCreateProgram());
-    GLuint vs = compile(GL_VERTEX_SHADER, expand(source.vertex, source.defines), source.vertex);
+    const bool compute = !source.compute.empty();
+    const std::string& first = compute ? source.compute : source.vertex;
+    GLuint vs = compile(compute ? GL_COMPUTE_SHADER : GL_VERTEX_SHADER, expand(first, source.defines), first);
     glAttachShader(program.id(), vs);
     GLuint gs = 0;
     if (!source.geometry.empty()) {

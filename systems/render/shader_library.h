@@ -16,6 +16,8 @@ struct program_source {
     std::string fragment;  // may be empty (depth-only programs)
     std::vector<std::string> defines;  // "MATERIAL_LEAF", "SH_TRANSFER", ...
     std::string geometry;  // optional geometry shader (GL 3.2), e.g. "line.geom"
+    // A compute program (GL 4.3) instead: this stage alone, `vertex` and `fragment` empty.
+    std::string compute;
 };
 
 class shader_library {

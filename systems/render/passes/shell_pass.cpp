@@ -1,7 +1,10 @@
 #include "systems/render/passes/shell_pass.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 #include <glm/geometric.hpp>
@@ -85,6 +88,24 @@ shell_pass::shell_pass(const scene_assets& assets) {
         m_transfer.push_back(make_texture_array(page, false));
         for (const image_rgba8& i : page) m_uploaded_bytes += i.texels.size() * 4 / 3;
     }
+    m_lit_for.fill(std::numeric_limits<float>::quiet_NaN());
+    m_last_light.fill(std::numeric_limits<float>::quiet_NaN());
+    if (!transfer.empty()) {
+        m_transfer_texels = GLsizei(transfer.front().front().width);
+        m_transfer_layers = GLsizei(transfer.front().size());
+        const int levels = std::bit_width(std::uint32_t(m_transfer_texels));
+        for (auto [texture, format, bytes] : {std::tuple{&m_lit_seen, GL_RGBA32F, 16}, {&m_lit_other, GL_R32F, 4}}) {
+            *texture = make_texture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(texture->id(), levels, format, m_transfer_texels, m_transfer_texels, m_transfer_layers);
+            // As the colour arrays are sampled (systems/render/textures.cpp make_texture_array).
+            glTextureParameteri(texture->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(texture->id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(texture->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+            glTextureParameteri(texture->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            m_uploaded_bytes += std::uint64_t(m_transfer_texels) * std::uint64_t(m_transfer_texels) *
+                                std::uint64_t(m_transfer_layers) * std::uint64_t(bytes) * 4 / 3;
+        }
+    }
     // The tiling over the terrain: one texel per lattice cell, terrain-local.
     const double t = shells.tile_size_m;
     const heightfield& ground = assets.terrain;
@@ -147,21 +168,59 @@ shell_pass::shell_pass(const scene_assets& assets) {
     }
 }
 
+bool shell_pass::relight(pass_context& context) {
+    const frame_view& view = *context.view;
+    std::array<float, 30> light{};
+    for (std::size_t i = 0; i < 9; ++i)
+        for (int c = 0; c < 3; ++c) light[i * 3 + std::size_t(c)] = view.sky->radiance_sh[i][c];
+    for (int c = 0; c < 3; ++c) light[27 + std::size_t(c)] = view.sun_light->direction[c];
+    const bool steady = light == m_last_light;
+    m_last_light = light;
+    if (light == m_lit_for) return true;
+    // Summing every texel of every tile cost 45 ms a frame on `valley`'s tiles (llvmpipe, 2
+    // cores) against about 5 ms more shading per fragment: a light that changes every frame (a
+    // moving sun) is summed per fragment, and a light that holds still for a frame is summed once.
+    if (!steady) return false;
+    m_lit_for = light;
+    ++m_relights;
+    glUseProgram(context.programs->screen(screen_program::shell_relight));
+    for (std::size_t p = 0; p < m_transfer.size(); ++p) glBindTextureUnit(GLuint(5 + p), m_transfer[p].id());
+    const GLint level_location = glGetUniformLocation(context.programs->screen(screen_program::shell_relight), "u_level");
+    const int levels = std::bit_width(std::uint32_t(m_transfer_texels));
+    for (int level = 0; level < levels; ++level) {
+        glBindImageTexture(0, m_lit_seen.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(1, m_lit_other.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+        glUniform1i(level_location, level);
+        const GLuint groups = (GLuint(std::max(m_transfer_texels >> level, 1)) + 7) / 8;
+        glDispatchCompute(groups, groups, GLuint(m_transfer_layers));
+        ++context.draw_calls;
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    return true;
+}
+
 void shell_pass::draw(pass_context& context) {
     const frame_view& view = *context.view;
     if (!active() || !view.shells || !(view.shells->fade_end_m > 0.0f)) return;
     const shell_view& shells = *view.shells;
     context.timer->begin(gpu_pass::shells);
+    // Behrendt 2005 §4: the shells' transfer summed with this frame's light once it holds still.
+    const bool relit = !m_transfer.empty() && relight(context);
     context.target->draw_ids(false);
-    const GLuint program = context.programs->screen(screen_program::shell);
-    if (m_uniforms.program != program) m_uniforms = uniforms_of(program);
-    const uniform_locations& u = m_uniforms;
+    const GLuint program = context.programs->screen(relit ? screen_program::shell_relit : screen_program::shell);
+    uniform_locations& u = m_uniforms[relit ? 1 : 0];
+    if (u.program != program) u = uniforms_of(program);
     glUseProgram(program);
     glBindVertexArray(m_vertex_array.id());
     glBindTextureUnit(2, m_colour.id());
     glBindTextureUnit(3, m_normal.id());
     glBindTextureUnit(4, m_index.id());
-    for (std::size_t p = 0; p < m_transfer.size(); ++p) glBindTextureUnit(GLuint(5 + p), m_transfer[p].id());
+    if (relit) {
+        glBindTextureUnit(5, m_lit_seen.id());
+        glBindTextureUnit(6, m_lit_other.id());
+    } else {
+        for (std::size_t p = 0; p < m_transfer.size(); ++p) glBindTextureUnit(GLuint(5 + p), m_transfer[p].id());
+    }
     if (context.shadows) glBindTextureUnit(1, context.shadows->texture());
     glUniform3fv(u.terrain_position, 1, &view.terrain_position.x);
     glUniform1f(u.slice_height, m_slice_height);

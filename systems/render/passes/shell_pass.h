@@ -30,6 +30,7 @@
 // their nearest window depth (R32F, MIN-blended), and the composite (shaders/shell_composite.frag)
 // is drawn at the nearest of the 2x2 texels its filter reads, so the frame's depth test cuts the
 // layer pixel by pixel where a plant or the ground lies in front.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -52,6 +53,8 @@ public:
     std::uint32_t levels() const { return std::uint32_t(m_level_first_layer.size()); }
     float slice_height_m() const { return m_slice_height; }
     std::uint64_t uploaded_bytes() const { return m_uploaded_bytes; }
+    // How many times the SH transfer was summed with a new light (0 without transfer).
+    std::uint32_t relights() const { return m_relights; }
 
 private:
     // The program's uniforms, asked once (the frame does no string work).
@@ -64,8 +67,12 @@ private:
     // Binds the half-resolution layer (made or resized for the frame), cleared, with its depth
     // taken from the frame's.
     void begin_layer(pass_context& context);
+    // True when m_lit_* hold the frame's light (summed now if the light held still since the
+    // last frame); false when the light changed since the last frame: the shells then sum the
+    // transfer per fragment.
+    bool relight(pass_context& context);
 
-    uniform_locations m_uniforms;
+    uniform_locations m_uniforms[2];  // the per-fragment program's, the relit one's
     std::uint32_t m_slices = 0;  // level 0's
     float m_slice_height = 0.0f;
     std::uint32_t m_layers_per_tile = 0;
@@ -76,8 +83,20 @@ private:
     glm::vec4 m_area{0.0f};
     gl_texture m_colour;
     gl_texture m_normal;
-    // Under SH transfer (shell_stack::transfer): one array per transfer page, the colour's layers.
+    // Under SH transfer (shell_stack::transfer): one array per transfer page, the colour's layers,
+    // and their sums with the light the shells were last lit by (shaders/shell_relight.comp):
+    // rgb sky_seen and a sun_seen, r sun_other, 32-bit floats (half floats overflow at the
+    // scenario format's brightest skies, as the sky texture's would).
     std::vector<gl_texture> m_transfer;
+    gl_texture m_lit_seen;
+    gl_texture m_lit_other;
+    GLsizei m_transfer_texels = 0;
+    GLsizei m_transfer_layers = 0;
+    // The light m_lit_* hold: the sky's radiance SH (27) and the sun's direction (3); NaN until
+    // the first frame, so the first frame always sums.
+    std::array<float, 30> m_lit_for;
+    std::array<float, 30> m_last_light;  // the previous frame's
+    std::uint32_t m_relights = 0;
     gl_texture m_index;
     gl_buffer m_vertices;
     gl_vertex_array m_vertex_array;
