@@ -32,7 +32,9 @@ in vec2 v_local_xz;
 flat in int v_layer;  // in the tile's stack: the level's first layer + the slice
 
 layout(binding = 2) uniform sampler2DArray u_shell_colour;
+#ifndef SH_TRANSFER
 layout(binding = 3) uniform sampler2DArray u_shell_normal;
+#endif
 layout(binding = 4) uniform usampler2D u_wang_index;
 uniform vec4 u_lattice;  // xy: lattice corner (0, 0), terrain-local; z: tile size; w: 1 / tile size
 uniform int u_layers_per_tile;

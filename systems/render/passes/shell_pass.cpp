@@ -63,13 +63,15 @@ shell_pass::shell_pass(const scene_assets& assets) {
     }
     std::vector<image_rgba8> colour;
     std::vector<image_rgba8> normal;
-    std::vector<std::vector<image_rgba8>> transfer(shells.tiles.front().has_transfer() ? k_transfer_pages : 0);
+    // Lit by transfer, the slices need no normals: that array is neither merged nor uploaded.
+    const bool by_transfer = shells.tiles.front().has_transfer();
+    std::vector<std::vector<image_rgba8>> transfer(by_transfer ? k_transfer_pages : 0);
     m_standard_blending = shells.standard_blending;
     for (const shell_stack& stack : shells.tiles) {
         std::vector<image_rgba8> c = stack.colour;
         if (m_standard_blending)
             for (image_rgba8& slice : c) slice = unpremultiply_slice(slice);
-        std::vector<image_rgba8> n = stack.normal;
+        std::vector<image_rgba8> n = by_transfer ? std::vector<image_rgba8>{} : stack.normal;
         std::vector<image_rgba8> t = stack.transfer;
         for (;;) {
             colour.insert(colour.end(), c.begin(), c.end());
@@ -77,13 +79,16 @@ shell_pass::shell_pass(const scene_assets& assets) {
             for (std::size_t k = 0; k < t.size(); ++k) transfer[k % k_transfer_pages].push_back(t[k]);
             if (c.size() == 1) break;
             c = m_standard_blending ? next_pyramid_level_standard(c) : next_pyramid_level(c);
-            n = next_normal_pyramid_level(n);
+            if (!n.empty()) n = next_normal_pyramid_level(n);
             if (!t.empty()) t = next_transfer_pyramid_level(t);
         }
     }
     m_colour = make_texture_array(colour, false);
-    m_normal = make_texture_array(normal, false);
-    for (const image_rgba8& i : colour) m_uploaded_bytes += 2 * i.texels.size() * 4 / 3;  // both, with mips
+    for (const image_rgba8& i : colour) m_uploaded_bytes += i.texels.size() * 4 / 3;  // with mips
+    if (!normal.empty()) {
+        m_normal = make_texture_array(normal, false);
+        for (const image_rgba8& i : normal) m_uploaded_bytes += i.texels.size() * 4 / 3;
+    }
     for (const std::vector<image_rgba8>& page : transfer) {
         m_transfer.push_back(make_texture_array(page, false));
         for (const image_rgba8& i : page) m_uploaded_bytes += i.texels.size() * 4 / 3;
@@ -185,7 +190,9 @@ bool shell_pass::relight(pass_context& context) {
     ++m_relights;
     glUseProgram(context.programs->screen(screen_program::shell_relight));
     for (std::size_t p = 0; p < m_transfer.size(); ++p) glBindTextureUnit(GLuint(5 + p), m_transfer[p].id());
-    const GLint level_location = glGetUniformLocation(context.programs->screen(screen_program::shell_relight), "u_level");
+    if (m_relight_level < -1)  // asked once (the frame does no string work)
+        m_relight_level = glGetUniformLocation(context.programs->screen(screen_program::shell_relight), "u_level");
+    const GLint level_location = m_relight_level;
     const int levels = std::bit_width(std::uint32_t(m_transfer_texels));
     for (int level = 0; level < levels; ++level) {
         glBindImageTexture(0, m_lit_seen.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -213,7 +220,7 @@ void shell_pass::draw(pass_context& context) {
     glUseProgram(program);
     glBindVertexArray(m_vertex_array.id());
     glBindTextureUnit(2, m_colour.id());
-    glBindTextureUnit(3, m_normal.id());
+    if (m_normal) glBindTextureUnit(3, m_normal.id());
     glBindTextureUnit(4, m_index.id());
     if (relit) {
         glBindTextureUnit(5, m_lit_seen.id());

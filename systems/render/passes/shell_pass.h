@@ -6,8 +6,9 @@
 // On the GPU: the terrain's triangles once more with each triangle's centre per vertex (for the
 // slanting, §3.2; static), the Wang tiles' slice pyramids as two 2-D array textures (colour and
 // normal, layer = tile · layers_per_tile + first layer of the level + slice; with SH-lit plants,
-// five more of the SH transfer, one per page, at a quarter of the texels a side: one array
-// of all pages would pass GL's 2048 layers on `valley`), and the tiling as
+// five of the SH transfer instead of the normal one, one per page, at a quarter of the texels a
+// side (one array of all pages would pass GL's 2048 layers on `valley`), and two float arrays of
+// their sums with the light), and the tiling as
 // an index texture of tile types, one texel per lattice cell (§3.4). Mip levels are each layer's
 // own: a tile's border texels were baked with the plants across it (models/bake/shell_bake.h),
 // so neighbouring tiles' mips agree where their content does.
@@ -82,7 +83,7 @@ private:
     glm::vec4 m_lattice{0.0f};
     glm::vec4 m_area{0.0f};
     gl_texture m_colour;
-    gl_texture m_normal;
+    gl_texture m_normal;  // none when the slices are lit by transfer
     // Under SH transfer (shell_stack::transfer): one array per transfer page, the colour's layers,
     // and their sums with the light the shells were last lit by (shaders/shell_relight.comp):
     // rgb sky_seen and a sun_seen, r sun_other, 32-bit floats (half floats overflow at the
@@ -97,6 +98,7 @@ private:
     std::array<float, 30> m_lit_for;
     std::array<float, 30> m_last_light;  // the previous frame's
     std::uint32_t m_relights = 0;
+    GLint m_relight_level = -2;  // shell_relight's u_level, once asked
     gl_texture m_index;
     gl_buffer m_vertices;
     gl_vertex_array m_vertex_array;
