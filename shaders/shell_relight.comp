@@ -30,6 +30,9 @@ void main() {
             else if (i < 18) other[i - 9] = t[k];
         }
     }
-    imageStore(u_lit_seen, p, vec4(sh_transfer_sky(seen), sh_transfer_sun(seen)));
-    imageStore(u_lit_other, p, vec4(sh_transfer_sun(other), 0.0, 0.0, 0.0));
+    // Half floats: within their range (a sky at the scenario format's brightest would pass 65504
+    // and store infinity, which tone mapping turns into NaN; held there it still maps to white).
+    const float k_half_max = 65000.0;
+    imageStore(u_lit_seen, p, clamp(vec4(sh_transfer_sky(seen), sh_transfer_sun(seen)), -k_half_max, k_half_max));
+    imageStore(u_lit_other, p, vec4(clamp(sh_transfer_sun(other), -k_half_max, k_half_max), 0.0, 0.0, 0.0));
 }

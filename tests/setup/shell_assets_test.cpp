@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "models/bake/transfer_pages.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
 #include "setup/wang_populations.h"
@@ -82,6 +83,54 @@ TEST(shell_assets, the_shell_shows_the_plants_the_tiling_places) {
     everywhere /= 16.0 * 64.0 * 64.0;
     EXPECT_GT(under_plants / double(n), 0.8);
     EXPECT_GT(under_plants / double(n), everywhere + 0.1);
+}
+
+// Behrendt 2005 §4 on the shells: the slices of SH-lit plants carry the plants' transfer, at a
+// quarter of the colour's texels a side, five pages a slice. Its band-0 coefficient is the
+// visible fraction of the sky's cosine lobe: at most π·Y₀₀ = 0.886 (an unoccluded upward
+// surface), and lower deep in the shrubs than at their tops (the self-shadowing the transfer
+// holds). A normal-lit species among the tiled ones, or shells.lighting "normal_mapped",
+// keeps the normals.
+TEST(shell_assets, the_slices_of_sh_lit_plants_carry_their_transfer) {
+    scenario s = shrubland();
+    s.lod.lighting = "sh";
+    s.populations[0].count = 300;
+    const scene_assets assets = build_scene_assets(s, nullptr);
+    const shell_textures shells = build_shell_assets(s, assets, nullptr);
+    ASSERT_EQ(shells.tiles.size(), 16u);
+    double sum_low = 0.0, sum_high = 0.0;
+    std::size_t n_low = 0, n_high = 0;
+    for (const shell_stack& t : shells.tiles) {
+        ASSERT_EQ(t.transfer.size(), t.colour.size() * k_transfer_pages);
+        EXPECT_EQ(t.transfer.front().width, 16u) << "64 colour texels / 4";
+        for (std::size_t k = 0; k < t.colour.size(); ++k) {
+            const image_rgba8& coverage_page = t.transfer[k * k_transfer_pages + k_shell_transfer_coverage_channel / 4];
+            const image_rgba8& dc_page = t.transfer[k * k_transfer_pages];
+            for (std::uint32_t z = 0; z < 16; ++z)
+                for (std::uint32_t x = 0; x < 16; ++x) {
+                    if (coverage_page.at(x, z)[k_shell_transfer_coverage_channel % 4] < 128) continue;
+                    const float dc = decode_transfer(dc_page.at(x, z)[0]);
+                    EXPECT_LE(dc, 0.886f + 0.02f);
+                    (k < t.colour.size() / 2 ? sum_low : sum_high) += dc;
+                    ++(k < t.colour.size() / 2 ? n_low : n_high);
+                }
+        }
+    }
+    ASSERT_GT(n_low, 50u);
+    ASSERT_GT(n_high, 50u);
+    EXPECT_GT(sum_high / double(n_high), sum_low / double(n_low) + 0.05)
+        << "the tops see more sky than the inside: " << sum_high / double(n_high) << " against " << sum_low / double(n_low);
+    scenario normals = s;
+    normals.shells.lighting = "normal_mapped";
+    EXPECT_TRUE(build_shell_assets(normals, assets, nullptr).tiles.front().transfer.empty());
+    scenario mixed = s;
+    mixed.species.push_back(mixed.species.front());
+    mixed.species.back().name = "fern";
+    mixed.species.back().lighting = "normal_mapped";
+    mixed.populations.push_back(mixed.populations.front());
+    mixed.populations.back().species = "fern";
+    const scene_assets mixed_assets = build_scene_assets(mixed, nullptr);
+    EXPECT_TRUE(build_shell_assets(mixed, mixed_assets, nullptr).tiles.front().transfer.empty());
 }
 
 // Seams: across the border between two tiles the tiling puts side by side, neighbouring texels

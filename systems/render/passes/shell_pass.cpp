@@ -99,7 +99,7 @@ shell_pass::shell_pass(const scene_assets& assets) {
         m_transfer_texels = GLsizei(transfer.front().front().width);
         m_transfer_layers = GLsizei(transfer.front().size());
         const int levels = std::bit_width(std::uint32_t(m_transfer_texels));
-        for (auto [texture, format, bytes] : {std::tuple{&m_lit_seen, GL_RGBA32F, 16}, {&m_lit_other, GL_R32F, 4}}) {
+        for (auto [texture, format, bytes] : {std::tuple{&m_lit_seen, GL_RGBA16F, 8}, {&m_lit_other, GL_R16F, 2}}) {
             *texture = make_texture(GL_TEXTURE_2D_ARRAY);
             glTextureStorage3D(texture->id(), levels, format, m_transfer_texels, m_transfer_texels, m_transfer_layers);
             // As the colour arrays are sampled (systems/render/textures.cpp make_texture_array).
@@ -195,8 +195,8 @@ bool shell_pass::relight(pass_context& context) {
     const GLint level_location = m_relight_level;
     const int levels = std::bit_width(std::uint32_t(m_transfer_texels));
     for (int level = 0; level < levels; ++level) {
-        glBindImageTexture(0, m_lit_seen.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glBindImageTexture(1, m_lit_other.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindImageTexture(0, m_lit_seen.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glBindImageTexture(1, m_lit_other.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F);
         glUniform1i(level_location, level);
         const GLuint groups = (GLuint(std::max(m_transfer_texels >> level, 1)) + 7) / 8;
         glDispatchCompute(groups, groups, GLuint(m_transfer_layers));
