@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace sylva {
 namespace {
@@ -157,28 +158,33 @@ bench_configuration_spec ladder_lodf(double factor = 1.0) {
     return c;
 }
 
-// Behrendt 2005 §3: the shell rung against what it replaces. `ladder_no_shells`: each species'
-// ladder with its shell rung dropped, so the rung before draws the far field (the same
-// Wang-tiled plants, one by one); `ladder_shells_f<f>`: the shells slanted by f (Eq. 2; the
-// scenario's own is in `ladder`). On a scenario without shells each is `ladder` again.
-bench_configuration_spec ladder_without_shells() {
+// Behrendt 2005 §3: the shell rung against what it replaces, each a `ladder` configuration of
+// the "shells" family drawn another way (on a scenario without shells each is `ladder` again).
+bench_configuration_spec shells_variant(std::string name, std::string description) {
     bench_configuration_spec c = ladder_configuration();
-    c.name = "ladder_no_shells";
+    c.name = std::move(name);
     c.family = "shells";
-    c.description = "each species' ladder with its shell rung dropped: the far field's plants drawn one by one by "
-                    "the rung before (Behrendt 2005 §3's alternative)";
+    c.description = std::move(description);
+    return c;
+}
+
+// `ladder_no_shells`: each species' ladder with its shell rung dropped, so the rung before draws
+// the far field (the same Wang-tiled plants, one by one).
+bench_configuration_spec ladder_without_shells() {
+    bench_configuration_spec c = shells_variant(
+        "ladder_no_shells", "each species' ladder with its shell rung dropped: the far field's plants drawn one by one "
+                            "by the rung before (Behrendt 2005 §3's alternative)");
     c.options.policy.without_shells = true;
     return c;
 }
 
+// `ladder_shells_f<f>`: the shells slanted by f (Eq. 2; the scenario's own is in `ladder`).
 bench_configuration_spec ladder_shells_slanted(double slant) {
-    bench_configuration_spec c = ladder_configuration();
     std::ostringstream value;
     value << slant;
-    c.name = "ladder_shells_f" + value.str();
-    c.family = "shells";
-    c.description = "each species' ladder, its shells slanted toward the viewer by f = " + value.str() +
-                    " (Behrendt 2005 Eq. 2, limited; 0: flat slices)";
+    bench_configuration_spec c = shells_variant("ladder_shells_f" + value.str(),
+                                                "each species' ladder, its shells slanted toward the viewer by f = " +
+                                                    value.str() + " (Behrendt 2005 Eq. 2, limited; 0: flat slices)");
     c.quality = slant;
     c.options.shell_slant = slant;
     return c;
@@ -187,11 +193,10 @@ bench_configuration_spec ladder_shells_slanted(double slant) {
 // §3.3's claim, measured: the same ladder with the shells' pyramid built and blended with the
 // standard equation, which shifts colours where a level replaces its slices.
 bench_configuration_spec ladder_shells_standard_blending() {
-    bench_configuration_spec c = ladder_configuration();
-    c.name = "ladder_shells_standard_blending";
-    c.family = "shells";
-    c.description = "each species' ladder, its shells' slice pyramid merged and blended with the standard equation "
-                    "instead of Behrendt 2005 §3.3's premultiplied one (measurement only)";
+    bench_configuration_spec c = shells_variant(
+        "ladder_shells_standard_blending", "each species' ladder, its shells' slice pyramid merged and blended with the "
+                                           "standard equation instead of Behrendt 2005 §3.3's premultiplied one "
+                                           "(measurement only)");
     c.options.shell_blending = "standard";
     return c;
 }
@@ -199,11 +204,9 @@ bench_configuration_spec ladder_shells_standard_blending() {
 // Behrendt 2005 §4 on the shells, measured: the same ladder with its shells lit by their normals
 // even where the tiled plants are lit by SH transfer (otherwise the same image as `ladder`).
 bench_configuration_spec ladder_shells_normal_lit() {
-    bench_configuration_spec c = ladder_configuration();
-    c.name = "ladder_shells_normal_lit";
-    c.family = "shells";
-    c.description = "each species' ladder, its shells lit by the slices' normals even where the plants are lit by SH "
-                    "transfer (measurement only)";
+    bench_configuration_spec c = shells_variant(
+        "ladder_shells_normal_lit", "each species' ladder, its shells lit by the slices' normals even where the plants "
+                                    "are lit by SH transfer (measurement only)");
     c.options.shell_lighting = "normal_mapped";
     return c;
 }
