@@ -70,7 +70,10 @@ void main() {
     float seen[9];
     float other[9];
     for (int p = 0; p < 5; ++p) {
-        vec4 t = (textureGrad(u_shell_transfer[p], vec3(uv, layer), dx, dy) * 2.0 - 1.0) * k_transfer_page_range;
+        vec4 page = textureGrad(u_shell_transfer[p], vec3(uv, layer), dx, dy);
+        // Luft 2007's k_a on the sky's light (page 4's blue, straight; 1 for a plain model).
+        if (p == 4) sh_ambient = page.b;
+        vec4 t = (page * 2.0 - 1.0) * k_transfer_page_range;
         for (int k = 0; k < 4; ++k) {
             int i = 4 * p + k;
             if (i < 9) seen[i] = t[k];

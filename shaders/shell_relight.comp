@@ -3,7 +3,7 @@
 // radiance and the sun's basis (transfer.glsl), and the light is the same for every texel of
 // every tile, so the passes/shell_pass.h shell pass runs this when the sky or the sun changes,
 // not per fragment: per transfer texel and mip level, sky_seen = T_seen . L_sky (rgb), sun_seen
-// = T_seen . Y(l), sun_other = T_other . Y(l), unclamped (shade_transfer clamps, as it does for
+// = T_seen . Y(l), sun_other = T_other . Y(l) (the sky's times Luft 2007's k_a), unclamped (shade_transfer clamps, as it does for
 // the plants). The sums are linear in T, so a mip level of them is the sums of the transfer's
 // mip level. The shell fragment then reads two textures instead of five and does no dot
 // products.
@@ -22,8 +22,12 @@ void main() {
     if (any(greaterThanEqual(p.xy, imageSize(u_lit_seen).xy))) return;
     float seen[9];
     float other[9];
+    float ambient = 1.0;
     for (int page = 0; page < 5; ++page) {
-        vec4 t = (texelFetch(u_shell_transfer[page], p, u_level) * 2.0 - 1.0) * k_transfer_page_range;
+        vec4 raw = texelFetch(u_shell_transfer[page], p, u_level);
+        // Luft 2007's k_a (models/bake/shell_bake.h: page 4's blue, straight): the sky's light times it.
+        if (page == 4) ambient = raw.b;
+        vec4 t = (raw * 2.0 - 1.0) * k_transfer_page_range;
         for (int k = 0; k < 4; ++k) {
             int i = 4 * page + k;
             if (i < 9) seen[i] = t[k];
@@ -33,6 +37,6 @@ void main() {
     // Half floats: within their range (a sky at the scenario format's brightest would pass 65504
     // and store infinity, which tone mapping turns into NaN; held there it still maps to white).
     const float k_half_max = 65000.0;
-    imageStore(u_lit_seen, p, clamp(vec4(sh_transfer_sky(seen), sh_transfer_sun(seen)), -k_half_max, k_half_max));
+    imageStore(u_lit_seen, p, clamp(vec4(ambient * sh_transfer_sky(seen), sh_transfer_sun(seen)), -k_half_max, k_half_max));
     imageStore(u_lit_other, p, vec4(clamp(sh_transfer_sun(other), -k_half_max, k_half_max), 0.0, 0.0, 0.0));
 }

@@ -20,8 +20,10 @@ struct slab_layer {
     std::vector<glm::vec4> colour;  // premultiplied
     std::vector<glm::vec4> normal;  // rgb n·0.5 + 0.5 of the highest surface, a coverage
     std::vector<float> top;         // the highest surface's height, −inf where none
-    // With transfer: the highest surface's (k_billboard_transfer_floats a texel), else empty.
+    // With transfer: the highest surface's (k_billboard_transfer_floats a texel) and its Luft
+    // 2007 k_a (1 for a plain model), else empty.
     std::vector<float> transfer;
+    std::vector<float> ambient;
 };
 
 slab_layer empty_layer(std::uint32_t side, bool transfer) {
@@ -31,7 +33,10 @@ slab_layer empty_layer(std::uint32_t side, bool transfer) {
     l.colour.assign(n, glm::vec4(0.0f));
     l.normal.assign(n, glm::vec4(0.0f));
     l.top.assign(n, -std::numeric_limits<float>::infinity());
-    if (transfer) l.transfer.assign(n * k_billboard_transfer_floats, 0.0f);
+    if (transfer) {
+        l.transfer.assign(n * k_billboard_transfer_floats, 0.0f);
+        l.ambient.assign(n, 1.0f);
+    }
     return l;
 }
 
@@ -50,9 +55,11 @@ void composite(slab_layer& layer, const billboard_image& image) {
             layer.colour[i] = c + layer.colour[i] * (1.0f - c.a);
             layer.normal[i] = {glm::vec3(normal), std::min(1.0f, normal.a + layer.normal[i].a * (1.0f - normal.a))};
             layer.top[i] = image.depth[i];
-            if (!layer.transfer.empty())
+            if (!layer.transfer.empty()) {
                 std::copy_n(&image.transfer[i * k_billboard_transfer_floats], k_billboard_transfer_floats,
                             &layer.transfer[i * k_billboard_transfer_floats]);
+                layer.ambient[i] = image.ambient[i];
+            }
         } else {
             layer.colour[i] = layer.colour[i] + c * (1.0f - layer.colour[i].a);
             layer.normal[i].a = std::min(1.0f, layer.normal[i].a + normal.a * (1.0f - layer.normal[i].a));
@@ -104,7 +111,7 @@ void crop(const std::vector<glm::vec4>& values, std::uint32_t side, std::uint32_
 
 // The slab's transfer at transfer_texels² (models/bake/shell_bake.h shell_stack::transfer): each
 // coarse texel the coverage-weighted mean of the tile texels it boxes (x in
-// [⌊j·T/C⌋, ⌊(j + 1)·T/C⌋)), its coverage their mean. No Gaussian: the box is already wider than
+// [⌊j·T/C⌋, ⌊(j + 1)·T/C⌋)), likewise Luft 2007's k_a, its coverage their mean. No Gaussian: the box is already wider than
 // the colour's. A texel nothing covers takes the slab's mean covered transfer, so bilinear
 // filtering at a crown's edge does not pull in zero light; it is never seen by itself (the
 // colour's alpha is 0 there).
@@ -115,6 +122,8 @@ void downsample_transfer(const slab_layer& layer, std::uint32_t margin, std::uin
     std::vector<double> weights(std::size_t(coarse) * coarse, 0.0);
     std::vector<std::uint32_t> counts(std::size_t(coarse) * coarse, 0);
     std::vector<double> mean(n, 0.0);
+    std::vector<double> ambient(std::size_t(coarse) * coarse, 0.0);
+    double mean_ambient = 0.0;
     double mean_weight = 0.0;
     for (std::uint32_t y = 0; y < texels; ++y)
         for (std::uint32_t x = 0; x < texels; ++x) {
@@ -126,6 +135,8 @@ void downsample_transfer(const slab_layer& layer, std::uint32_t margin, std::uin
             if (!(w > 0.0)) continue;
             weights[coarse_index] += w;
             mean_weight += w;
+            ambient[coarse_index] += w * layer.ambient[fine];
+            mean_ambient += w * layer.ambient[fine];
             for (std::size_t i = 0; i < n; ++i) {
                 const double t = layer.transfer[fine * n + i];
                 sums[coarse_index * n + i] += w * t;
@@ -144,6 +155,8 @@ void downsample_transfer(const slab_layer& layer, std::uint32_t margin, std::uin
             }
             pages[k_shell_transfer_coverage_channel / 4].at(x, y)[k_shell_transfer_coverage_channel % 4] =
                 to_byte(float(weights[c] / double(counts[c])));
+            const double k_a = weights[c] > 0.0 ? ambient[c] / weights[c] : mean_weight > 0.0 ? mean_ambient / mean_weight : 1.0;
+            pages[k_shell_transfer_ambient_channel / 4].at(x, y)[k_shell_transfer_ambient_channel % 4] = to_byte(float(k_a));
         }
     out.insert(out.end(), pages.begin(), pages.end());
 }

@@ -64,14 +64,17 @@ struct shell_stack {
     // With shell_bake_settings::transfer_texels, else empty: per slice k_transfer_pages pages
     // (slice-major: slice k's pages at [k·5, k·5 + 5)) of transfer_texels², the world-space
     // transfer of the highest covered surface, its seen side the one facing up, laid out and
-    // encoded as models/bake/transfer_pages.h lays out a billboard's; page 4's alpha is the
-    // texel's coverage (straight 8-bit), which the slice pyramid weighs merged slices by.
+    // encoded as models/bake/transfer_pages.h lays out a billboard's; page 4's blue is Luft 2007's
+    // k_a of those surfaces (straight 8-bit, 1 for a plain model; it scales the sky's light, as
+    // lighting "sh_implicit" does), page 4's alpha the texel's coverage (straight 8-bit), which
+    // the slice pyramid weighs merged slices by.
     std::vector<image_rgba8> transfer;
     bool has_transfer() const { return !transfer.empty(); }
 };
 
-// The channel of a transfer page set holding the texel's coverage (page 4's alpha): the 18
-// coefficients fill channels 0..17.
+// The channels of a transfer page set holding the texel's k_a (page 4's blue) and its coverage
+// (page 4's alpha): the 18 coefficients fill channels 0..17.
+constexpr std::size_t k_shell_transfer_ambient_channel = 18;
 constexpr std::size_t k_shell_transfer_coverage_channel = 19;
 
 // Deterministic (the rasterizer is). Throws std::invalid_argument for a species index out of

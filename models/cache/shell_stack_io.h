@@ -11,8 +11,8 @@
 
 namespace sylva {
 
-// 2: slices may carry SH transfer pages (shell_stack::transfer).
-constexpr std::uint32_t k_shell_format = 2;
+// 2: slices may carry SH transfer pages (shell_stack::transfer). 3: with k_a in page 4's blue.
+constexpr std::uint32_t k_shell_format = 3;
 
 std::vector<std::byte> serialize_shell_stacks(const std::vector<shell_stack>& stacks);
 // Throws std::runtime_error naming the problem on a truncated, corrupted or other-version entry,

@@ -112,7 +112,8 @@ TEST(shell_bake, the_higher_surface_wins_and_neighbours_reach_in) {
 // w4 = c·t4 + s·t5 = 0, w5 = −s·t4 + c·t5 = −0.2; back t8 = 0.05 gives w6 = (√3/2)·s²·t8 = 0.0433,
 // w7 = −c·s·t8 = 0, w8 = (1 − s²/2)·t8 = 0.025. At 4 transfer texels a side over 8 colour texels,
 // the leaf's colour texels 2..5 are transfer texels 1..2, wholly covered; texels 0 and 3 take the
-// slab's covered mean (the same transfer) with coverage 0, and the empty slabs zero transfer.
+// slab's covered mean (the same transfer) with coverage 0, and the empty slabs zero transfer;
+// Luft 2007's k_a, 1 for unit normals, rides along.
 TEST(shell_bake, a_slab_carries_the_world_space_transfer_of_the_surface_seen_from_above) {
     mesh_data model;
     add_leaf(model, -1.0f, 1.0f, -1.0f, 1.0f, 2.5f);
@@ -150,7 +151,18 @@ TEST(shell_bake, a_slab_carries_the_world_space_transfer_of_the_surface_seen_fro
                 EXPECT_EQ(channel(0, x, z, i), encode_transfer(0.0f)) << "an empty slab";
             }
             EXPECT_EQ(channel(0, x, z, k_shell_transfer_coverage_channel), 0);
+            EXPECT_EQ(channel(2, x, z, k_shell_transfer_ambient_channel), 255) << "k_a 1: unit normals";
+            EXPECT_EQ(channel(0, x, z, k_shell_transfer_ambient_channel), 255) << "nothing to darken";
         }
+    // Luft 2007's k_a rides in the normal's length (lighting "sh_implicit"): normals of length 0.6
+    // give k_a 0.6, byte 0.6 * 255 = 153, where the leaf is and (the slab's mean) where it is not.
+    mesh_data implicit = model;
+    for (vertex& v : implicit.vertices) v.normal *= 0.6f;
+    const shell_species darkened[] = {{&implicit, &green, &bark}};
+    const shell_stack dark = bake_shell_stack(darkened, std::span(&plant, 1), 4.0, settings);
+    for (const auto& [x, z] : {std::pair{1u, 1u}, {2u, 2u}, {0u, 3u}})
+        EXPECT_EQ(dark.transfer[2 * k_transfer_pages + k_shell_transfer_ambient_channel / 4].at(x, z)[k_shell_transfer_ambient_channel % 4], 153)
+            << x << " " << z;
     // Transfer asked of a species without it is refused.
     mesh_data bare;
     add_leaf(bare, -1.0f, 1.0f, -1.0f, 1.0f, 2.5f);
