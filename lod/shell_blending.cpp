@@ -43,6 +43,22 @@ std::vector<image_rgba8> pair_up(const std::vector<image_rgba8>& slices, const M
     return level;
 }
 
+// One texel's "upper over lower by coverage" (the normals' and the transfer's merge): weights
+// α_u and α_l·(1 − α_u) from the two coverage bytes, each value their weighted mean (the upper's
+// where neither is covered), the coverage merged as alpha.
+struct coverage_merge {
+    float upper = 0.0f, lower = 0.0f, total = 0.0f;
+    coverage_merge(std::uint8_t upper_coverage, std::uint8_t lower_coverage)
+        : upper(float(upper_coverage) / 255.0f),
+          lower(float(lower_coverage) / 255.0f * (1.0f - upper)),
+          total(upper + lower) {}
+    std::uint8_t value(std::uint8_t u, std::uint8_t l) const {
+        const float v = total > 0.0f ? (float(u) * upper + float(l) * lower) / total : float(u);
+        return std::uint8_t(std::min(255.0f, std::round(v)));
+    }
+    std::uint8_t coverage() const { return std::uint8_t(std::min(255.0f, std::round(total * 255.0f))); }
+};
+
 }  // namespace
 
 std::vector<image_rgba8> next_pyramid_level(const std::vector<image_rgba8>& slices) {
@@ -54,15 +70,9 @@ image_rgba8 merge_normal_slices(const image_rgba8& lower, const image_rgba8& upp
         throw std::invalid_argument("merge_normal_slices: the slices differ in size");
     image_rgba8 out = lower;
     for (std::size_t i = 0; i < out.texels.size(); i += 4) {
-        const float au = float(upper.texels[i + 3]) / 255.0f;
-        const float al = float(lower.texels[i + 3]) / 255.0f * (1.0f - au);
-        const float a = au + al;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const float v = a > 0.0f ? (float(upper.texels[i + k]) * au + float(lower.texels[i + k]) * al) / a
-                                     : float(upper.texels[i + k]);
-            out.texels[i + k] = std::uint8_t(std::min(255.0f, std::round(v)));
-        }
-        out.texels[i + 3] = std::uint8_t(std::min(255.0f, std::round(a * 255.0f)));
+        const coverage_merge m(upper.texels[i + 3], lower.texels[i + 3]);
+        for (std::size_t k = 0; k < 3; ++k) out.texels[i + k] = m.value(upper.texels[i + k], lower.texels[i + k]);
+        out.texels[i + 3] = m.coverage();
     }
     return out;
 }
@@ -113,17 +123,14 @@ std::vector<image_rgba8> merge_transfer_slices(std::span<const image_rgba8> lowe
     const std::size_t coverage_page = k_shell_transfer_coverage_channel / 4;
     const std::size_t coverage_channel = k_shell_transfer_coverage_channel % 4;
     for (std::size_t i = 0; i < out[0].texels.size(); i += 4) {
-        const float au = float(upper[coverage_page].texels[i + coverage_channel]) / 255.0f;
-        const float al = float(lower[coverage_page].texels[i + coverage_channel]) / 255.0f * (1.0f - au);
-        const float a = au + al;
+        const coverage_merge m(upper[coverage_page].texels[i + coverage_channel],
+                               lower[coverage_page].texels[i + coverage_channel]);
+        // The bytes encode T linearly (models/bake/transfer_pages.h), so they average as T does.
         for (std::size_t c = 0; c < k_shell_transfer_coverage_channel; ++c) {
             const std::size_t p = c / 4, k = i + c % 4;
-            // The bytes encode T linearly (models/bake/transfer_pages.h), so they average as T does.
-            const float v = a > 0.0f ? (float(upper[p].texels[k]) * au + float(lower[p].texels[k]) * al) / a
-                                     : float(upper[p].texels[k]);
-            out[p].texels[k] = std::uint8_t(std::min(255.0f, std::round(v)));
+            out[p].texels[k] = m.value(upper[p].texels[k], lower[p].texels[k]);
         }
-        out[coverage_page].texels[i + coverage_channel] = std::uint8_t(std::min(255.0f, std::round(a * 255.0f)));
+        out[coverage_page].texels[i + coverage_channel] = m.coverage();
     }
     return out;
 }

@@ -22,7 +22,6 @@ layout(binding = 6) uniform sampler2DArray u_lit_other;
 // 9..17 the other, world space (the bake turned each plant's by its yaw). Summed here with a
 // light that changes every frame.
 layout(binding = 5) uniform sampler2DArray u_shell_transfer[5];
-const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
 #endif
 // The depth test before the shader: a slice behind the ground or a plant costs no shading (the
 // pass writes no depth, so testing first changes nothing else).
@@ -73,12 +72,7 @@ void main() {
         vec4 page = textureGrad(u_shell_transfer[p], vec3(uv, layer), dx, dy);
         // Luft 2007's k_a on the sky's light (page 4's blue, straight; 1 for a plain model).
         if (p == 4) sh_ambient = page.b;
-        vec4 t = (page * 2.0 - 1.0) * k_transfer_page_range;
-        for (int k = 0; k < 4; ++k) {
-            int i = 4 * p + k;
-            if (i < 9) seen[i] = t[k];
-            else if (i < 18) other[i - 9] = t[k];
-        }
+        decode_transfer_page(p, page, seen, other);
     }
     vec3 sky_seen = sh_transfer_sky(seen);
     float sun_seen = sh_transfer_sun(seen);

@@ -15,7 +15,6 @@ layout(binding = 5) uniform sampler2DArray u_shell_transfer[5];  // shell.frag's
 layout(binding = 0, rgba16f) uniform writeonly image2DArray u_lit_seen;  // rgb sky_seen, a sun_seen
 layout(binding = 1, r16f) uniform writeonly image2DArray u_lit_other;    // r sun_other
 uniform int u_level;
-const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
 
 void main() {
     ivec3 p = ivec3(gl_GlobalInvocationID);
@@ -27,12 +26,7 @@ void main() {
         vec4 raw = texelFetch(u_shell_transfer[page], p, u_level);
         // Luft 2007's k_a (models/bake/shell_bake.h: page 4's blue, straight): the sky's light times it.
         if (page == 4) ambient = raw.b;
-        vec4 t = (raw * 2.0 - 1.0) * k_transfer_page_range;
-        for (int k = 0; k < 4; ++k) {
-            int i = 4 * page + k;
-            if (i < 9) seen[i] = t[k];
-            else if (i < 18) other[i - 9] = t[k];
-        }
+        decode_transfer_page(page, raw, seen, other);
     }
     // Half floats: within their range (a sky at the scenario format's brightest would pass 65504
     // and store infinity, which tone mapping turns into NaN; held there it still maps to white).

@@ -55,6 +55,19 @@ void sh_rotate_about_y(inout float t[9], float c, float s) {
     t[8] = 0.5 * sqrt3 * s * s * t6 + c * s * t7 + (1.0 - 0.5 * s * s) * t8;
 }
 
+// The transfer pages' texel layout (models/bake/transfer_pages.h, mirrored): five RGBA8 pages,
+// coefficients 0..8 of the side seen then 9..17 of the other, each (T / range) * 0.5 + 0.5.
+// Billboard atlases (transfer_pages.glsl) and shell slices (shell.frag, shell_relight.comp) alike.
+const float k_transfer_page_range = 1.25;
+void decode_transfer_page(int page, vec4 texel, inout float seen[9], inout float other[9]) {
+    vec4 t = (texel * 2.0 - 1.0) * k_transfer_page_range;
+    for (int k = 0; k < 4; ++k) {
+        int i = 4 * page + k;
+        if (i < 9) seen[i] = t[k];
+        else if (i < 18) other[i - 9] = t[k];
+    }
+}
+
 // Sky light through the transfer: sum_i T_i L_i per channel (irradiance-like: the albedo/pi
 // is applied by the caller).
 vec3 sh_transfer_sky(float t[9]) {

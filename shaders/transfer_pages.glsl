@@ -5,20 +5,13 @@
 // first, and v_uv, v_layer, v_yaw_cos_sin, v_position declared.
 
 layout(binding = 3) uniform sampler2DArray u_transfer_pages;
-const float k_transfer_page_range = 1.25;  // mirrors models/bake/transfer_pages.h
 flat in vec4 v_sh_sphere;
 
 // The model-space transfer of the texel, both sides.
 void read_transfer_pages(out float seen[9], out float other[9]) {
     float first_page = u_species[int(v_layer + 0.5)].z;
-    for (int p = 0; p < 5; ++p) {
-        vec4 t = (texture(u_transfer_pages, vec3(v_uv, first_page + float(p))) * 2.0 - 1.0) * k_transfer_page_range;
-        for (int k = 0; k < 4; ++k) {
-            int i = 4 * p + k;
-            if (i < 9) seen[i] = t[k];
-            else if (i < 18) other[i - 9] = t[k];
-        }
-    }
+    for (int p = 0; p < 5; ++p)
+        decode_transfer_page(p, texture(u_transfer_pages, vec3(v_uv, first_page + float(p))), seen, other);
 }
 
 // The atlas holds model-space transfer; turn it by the plant's yaw, as surface.vert does for
