@@ -158,7 +158,13 @@ void run_frame_update(benchmark::State& state, bool solver) {
     state.counters["visible_reduced"] = double(draws.instances_by_representation[2]);
     state.counters["visible_far"] = double(draws.instances_by_representation[3]);
     for (const auto& [name, ms] : l.schedule.last_timings()) state.counters[std::string(name) + "_ms"] = ms;
-    if (solver) state.counters["lambda"] = l.world.resource<rung_budget>().lambda;
+    if (solver) {
+        const rung_budget& budget = l.world.resource<rung_budget>();
+        state.counters["lambda"] = budget.lambda;
+        double judged = 0.0;  // the plants seen or casting: the solver's per-plant work
+        for (const auto& offers : budget.offers) judged += double(offers.size());
+        state.counters["judged"] = judged;
+    }
 }
 
 void frame_update(benchmark::State& state) { run_frame_update(state, false); }

@@ -37,6 +37,9 @@ struct rung_budget {
     double least_possible_us = 0.0;
     std::vector<lambda_histogram> histograms;  // per chunk, scratch kept warm
     std::vector<double> costs;                 // per chunk, scratch kept warm
+    // Per chunk, the candidates of its plants the budget's first pass judged, in walk order, for
+    // its second pass to choose from without judging them again; scratch kept warm.
+    std::vector<std::vector<rung_candidates>> offers;
 
     bool active() const { return !tables.empty(); }
 };
