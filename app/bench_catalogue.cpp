@@ -211,6 +211,17 @@ bench_configuration_spec ladder_shells_normal_lit() {
     return c;
 }
 
+// The same ladder with its shells blended straight into the frame at full resolution instead of
+// the half-size layer: what the layer's resolution costs in error, and saves in time. Its plants
+// then write no IDs, so its coverage IoU is not measured (n/a).
+bench_configuration_spec ladder_shells_full_resolution() {
+    bench_configuration_spec c = shells_variant(
+        "ladder_shells_full_resolution", "each species' ladder, its shells blended straight into the frame at full "
+                                         "resolution instead of the half-size layer (measurement only)");
+    c.options.shell_full_resolution = true;
+    return c;
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
@@ -321,6 +332,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
     for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
     list.push_back(ladder_shells_standard_blending());
     list.push_back(ladder_shells_normal_lit());
+    list.push_back(ladder_shells_full_resolution());
     // At most 1.25x apart from 60 to 500 ms (1.5x below), where the engine baseline's sweep falls
     // on the shipped scenarios, so that a baseline point has an auto point near its frame time:
     // on `forest` auto_60 and auto_90 fell at 0.83x and 1.03x of `baseline`.

@@ -9,6 +9,7 @@
 #include "components/lod_state.h"
 #include "ecs/parallel.h"
 #include "measure/image_metrics.h"
+#include "resources/shell_view.h"
 
 namespace sylva {
 namespace {
@@ -132,7 +133,12 @@ void configuration_measurements::add_frame(std::uint32_t frame, const frame_reco
         if (metric == 1) out.ssim = mean_ssim(reference, image);
         if (metric == 2) out.perceptual = flip_error(reference, image, k_bench_flip_pixels_per_degree);
     });
-    out.coverage_iou = coverage_iou(ref.masks[frame], plant_mask(ids));
+    // Shells blended straight into the frame write no plant IDs (passes/shell_pass.h): the mask
+    // cannot see their plants, so the frame's coverage is not measured rather than counted as ground.
+    const shell_view* shells = world.try_resource<shell_view>();
+    out.coverage_iou = shells && shells->active && !shells->half_resolution
+                           ? std::numeric_limits<double>::quiet_NaN()
+                           : coverage_iou(ref.masks[frame], plant_mask(ids));
     m_colors[frame] = mean_plant_colors(image, ids);
     if (frame > 0) out.popping = popping_score(image, m_previous_image, reference, ref.images[frame - 1]);
     m_previous_image = std::move(image);

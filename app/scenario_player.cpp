@@ -149,7 +149,7 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
 }
 
 // The scenario a player with `options` plays: options.lighting lights every species, and
-// options.shell_slant and shell_blending draw the shells.
+// options.shell_slant, shell_blending, shell_lighting and shell_full_resolution draw the shells.
 scenario as_asked(scenario s, const player_options& options) {
     if (!options.lighting.empty()) {
         s.lod.lighting = options.lighting;
@@ -158,6 +158,7 @@ scenario as_asked(scenario s, const player_options& options) {
     if (options.shell_slant >= 0.0) s.shells.slant = options.shell_slant;
     if (!options.shell_blending.empty()) s.shells.blending = options.shell_blending;
     if (!options.shell_lighting.empty()) s.shells.lighting = options.shell_lighting;
+    if (options.shell_full_resolution) s.shells.half_resolution = false;
     return s;
 }
 

@@ -73,6 +73,7 @@ struct player_options {
     double shell_slant = -1.0;
     std::string shell_blending;  // scenario shells.blending; empty: the scenario's
     std::string shell_lighting;  // scenario shells.lighting; empty: the scenario's
+    bool shell_full_resolution = false;  // true: shells.half_resolution false; else the scenario's
     // Assets already built for this scenario and these options (build_player_assets), moved
     // from: the viewer re-bakes a tuned species in the background and swaps the player.
     std::shared_ptr<scene_assets> assets;

@@ -58,6 +58,40 @@ TEST(bench_command, writes_table_plot_and_summary) {
             EXPECT_FALSE(c.at("primitives").contains(stub)) << stub;
 }
 
+// A metric that cannot see reports n/a: shells blended straight into the frame write no plant
+// IDs, so their coverage IoU is not measured, where the same shells in the half-size layer are.
+TEST(bench_command, coverage_of_shells_that_write_no_ids_is_not_measured) {
+    SYLVA_REQUIRE_GL();
+    const auto dir = std::filesystem::temp_directory_path() / "sylva_bench_shell_ids";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto path = dir / "shrubs.json";
+    std::ofstream(path) << R"({"name": "shrubs", "seed": 9,
+ "terrain": {"size_m": 96, "resolution": 33, "height_m": 24, "octaves": 2, "frequency": 0.03},
+ "wang_tiles": {"tile_size_m": 16, "colours": 2},
+ "species": [{"name": "bush", "generator": "shrub", "height_m": 1.6}],
+ "populations": [{"species": "bush", "count": 300, "min_spacing_m": 1.5, "placement": "wang_tiles",
+                  "area": [-30, -30, 30, 30]}],
+ "camera": {"keyframes": [{"t": 0, "position": [-42, 26, -42], "target": [0, 0, 0], "fov_deg": 50}]},
+ "lod": {"representation": "ladder", "ladder": [{"rung": "mesh_full"}, {"rung": "shell", "below_px": 1000}]}})";
+    const auto r = test::run_sylva("bench " + path.string() +
+                                   " --frames 1 --width 96 --height 54 --only ladder,ladder_shells_full_resolution --out " +
+                                   (dir / "out").string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(dir / "out" / "bench.json");
+    const auto json = nlohmann::json::parse(in);
+    ASSERT_EQ(json.at("configurations").size(), 2u);
+    for (const auto& c : json.at("configurations")) {
+        const auto& iou = c.at("error").at("coverage_iou");
+        if (c.at("name") == "ladder") {
+            ASSERT_TRUE(iou.is_number()) << iou;
+            EXPECT_GT(iou.get<double>(), 0.2);
+        } else {
+            EXPECT_TRUE(iou.is_null()) << c.at("name") << ": " << iou;
+        }
+    }
+}
+
 // The representation options are measured, not ignored: each adds the configuration `play` would
 // draw with them (issue 18 item 7), named as --list names it.
 TEST(bench_command, representation_options_add_the_configuration_play_would_draw) {
