@@ -7,6 +7,10 @@
   flat slices) against the same plants drawn one by one as crossed billboards (the ladder without
   its shell rung, and every plant as one), billboard clouds, and points and lines with eco-tile
   point sets. Frame times are compared only within one bench (timing rounds side by side).
+- Far field of `landscape`: its trees and shrubs at its densities, Wang-tiled on an area 350 m and
+  more from its camera, on its own hilly terrain: from its camera (about 7° down) and from 20°
+  above, the same configurations; `ladder_shells_full_resolution` shows what the half-size shell
+  layer costs in error and saves in time (also in the far field above).
 - Plant count: the 10° view with four times the plants (spacings halved) against the base, shells
   and crossed billboards, the two played in alternation, `--rounds` times each.
 - Slice merging (§3.3): the 10° view on a 150 m dolly away from the plants, where the slices of
@@ -43,8 +47,12 @@ SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 ANGLES = [5, 10, 20]
 SUN_ELEVATIONS = [32, 12, "moving"]
 SH_CONFIGURATIONS = ["ladder", "ladder_shells_normal_lit", "ladder_no_shells"]
-FAR_CONFIGURATIONS = ["ladder", "ladder_shells_f0.25", "ladder_shells_f0", "ladder_no_shells",
-                      "crossed_billboard_only", "billboard_cloud_only", "points_lines", "points_lines_d2"]
+FAR_CONFIGURATIONS = ["ladder", "ladder_shells_f0.25", "ladder_shells_f0", "ladder_shells_full_resolution",
+                      "ladder_no_shells", "crossed_billboard_only", "billboard_cloud_only", "points_lines",
+                      "points_lines_d2"]
+# Where `landscape`'s Wang-tiled far field grows: 350 m and more from its camera's first position.
+LANDSCAPE_AREA = [-950, -200, 250, 950]
+LANDSCAPE_VIEWS = ["own", 20]
 
 
 def run(cmd):
@@ -75,6 +83,45 @@ def far_field(angle_deg, density=1.0):
     s["camera"] = {"far_m": 3000, "keyframes": [
         {"t": 0.0, "position": [0, y, 380], "target": [0, 8, -250]},
         {"t": 0.5, "position": [0, y, 370], "target": [0, 8, -260]}]}
+    return s
+
+
+def landscape():
+    with open(os.path.join(ROOT, "scenarios", "landscape.json")) as f:
+        return json.load(f)
+
+
+def landscape_far_field(view):
+    """`landscape`'s oaks, spruces and hazels at its densities (counts scaled to the area), placed by
+    Wang tiles on LANDSCAPE_AREA of its own hilly terrain (the grass dropped; a tiled population's
+    plants are its tiles', so its slope, altitude and density rules go), with `valley`'s ladder ending
+    in the shell rung. `view` "own": landscape's camera over the first half second of its path (about
+    7° down onto the area, 350 m and more away); a number: the same target seen from that many
+    degrees above, dollying 14 m."""
+    s = landscape()
+    s["name"] = f"shell_far_landscape_{view}" + ("deg" if view != "own" else "")
+    area = LANDSCAPE_AREA
+    share = (area[2] - area[0]) * (area[3] - area[1]) / float(s["terrain"]["size_m"] ** 2)
+    tiled = []
+    for p in s["populations"]:
+        if p["species"] == "grass":
+            continue
+        p = {k: v for k, v in p.items() if k not in ("max_slope_deg", "min_altitude_m", "max_altitude_m", "density")}
+        p.update(area=area, count=int(round(p["count"] * share)), placement="wang_tiles")
+        tiled.append(p)
+    s["populations"] = tiled
+    s["species"] = [x for x in s["species"] if x["name"] != "grass"]
+    v = valley()
+    s["lod"] = v["lod"]
+    s["wang_tiles"] = v["wang_tiles"]
+    if view == "own":
+        s["camera"]["keyframes"] = s["camera"]["keyframes"][:2]
+    else:
+        target = [-600, 20, 600]
+        y = target[1] + math.hypot(600, 600) * math.tan(math.radians(view))
+        s["camera"] = {"far_m": 6000, "keyframes": [
+            {"t": 0.0, "position": [-1200, y, 1200], "target": target},
+            {"t": 0.5, "position": [-1190, y, 1190], "target": [-590, 20, 590]}]}
     return s
 
 
@@ -172,6 +219,7 @@ def main():
         far = {}
         for angle in ANGLES:
             far[angle] = bench(tmp, write(tmp, far_field(angle)), args)
+        far_landscape = {view: bench(tmp, write(tmp, landscape_far_field(view)), args) for view in LANDSCAPE_VIEWS}
         sh = {e: bench(tmp, write(tmp, sh_lit(far_field(10), e)), args, SH_CONFIGURATIONS, args.sh_frames)
               for e in SUN_ELEVATIONS}
         merging = bench(tmp, write(tmp, dolly_away(far_field(10), args.dolly_frames)), args,
@@ -210,6 +258,18 @@ def main():
     for angle in ANGLES:
         lines, _ = far_field_table(far[angle])
         page += [f"### {angle}° above the canopy", ""] + lines + [""]
+    counts = ", ".join(f"{p['count']:,} {p['species']}" for p in landscape_far_field("own")["populations"])
+    page += ["## Far field of `landscape`", "",
+             f"`landscape`'s own hilly terrain with its trees and shrubs at its densities ({counts}), Wang-tiled "
+             f"on {LANDSCAPE_AREA}, every one 350 m or more from the camera; `valley`'s ladder (shells beyond "
+             f"24 px). {args.width}x{args.height}, {args.frames} frames. Sparser than `valley`'s forest: between "
+             "its crowns the ground shows. `ladder_shells_full_resolution` blends the shells straight into the "
+             "frame instead of the half-size layer (its plants then write no IDs: coverage n/a).", ""]
+    for view in LANDSCAPE_VIEWS:
+        lines, _ = far_field_table(far_landscape[view])
+        title = ("`landscape`'s own camera, about 7° down onto the area" if view == "own"
+                 else f"The same area from {view}° above")
+        page += [f"### {title}", ""] + lines + [""]
     page += ["## SH lighting", "",
              "The 10° view with every plant lit by SH transfer (Behrendt 2005 §4; `lod.lighting` \"sh\"), "
              "against its own reference (every plant at full geometry, SH-lit). `ladder`: the shells lit by the "
