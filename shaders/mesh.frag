@@ -74,15 +74,13 @@ void main() {
     m *= v_population;
 #endif
     float c = v_yaw_cos_sin.x, s = v_yaw_cos_sin.y;
-    // The filtered normal is lit as it comes, not made unit again (Toksvig 2005): a mip of a
-    // crown averages many leaves' normals, and the mean's length is how much they agree;
-    // renormalised it lit the crown as one surface. On forest (3 frames at 480x270) the crossed
+    // The filtered normal is lit as it comes (shading.glsl filtered_normal, Toksvig 2005). On forest (3 frames at 480x270) the crossed
     // billboards' SSIM rose from 0.689 to 0.711 and FLIP fell from 0.104 to 0.097.
     n = mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * m;
 #ifdef IMPLICIT_LIGHTING
     n = normalize(n);  // its length is Luft 2007's k_a, which scales the sky's light only
 #else
-    n *= min(1.0, 1.0 / max(length(n), 1e-4));
+    n = filtered_normal(n);
 #endif
     if (dot(plane, -v_position) < 0.0) n -= 2.0 * dot(n, plane) * plane;
 #endif

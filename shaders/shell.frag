@@ -82,14 +82,11 @@ void main() {
     // into it, so it holds only other objects' shadows, as a plant's lookup outside its sphere does.
     vec3 lit = shade_transfer(base, sky_seen, sun_seen, sun_other, v_position, 0.0, true);
 #else
-    // The filtered normal is not made unit again: the bake's blur and the mips average the
-    // normals of many leaves, and the mean's length is how much they agree (Toksvig 2005). A
-    // renormalised mean lights the crowns as one surface facing up, brighter than their leaves:
-    // kept short, the sky's SH irradiance and the sun's term fall toward their means over the
-    // spread. On the far fields of docs/measure_shells.py FLIP fell from 0.060/0.068/0.071 to
-    // 0.057/0.063/0.063 at 5°/10°/20° (landscape's: 0.0267 to 0.0258), SSIM +0.001.
-    vec3 n = textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0;
-    n *= min(1.0, 1.0 / max(length(n), 1e-4));
+    // The bake's blur and the mips average many leaves' normals: lit as they come
+    // (shading.glsl filtered_normal, Toksvig 2005). On the far fields of docs/measure_shells.py
+    // FLIP fell from 0.060/0.068/0.071 to 0.057/0.063/0.063 at 5°/10°/20° (landscape's: 0.0267
+    // to 0.0258), SSIM +0.001.
+    vec3 n = filtered_normal(textureGrad(u_shell_normal, vec3(uv, layer), dx, dy).rgb * 2.0 - 1.0);
     vec3 lit = shade_surface(base, n, v_position, true);
 #endif
     out_color = u_premultiplied != 0 ? vec4(lit * c.a, c.a) * fade : vec4(lit, c.a * fade);
