@@ -139,7 +139,10 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
         if (policy.lodf_for_reduced)
             for (ladder& l : policy.ladders)
                 for (std::size_t i = 0; i < l.count; ++i)
-                    if (l.rungs[i] == representation::mesh_reduced) l.rungs[i] = representation::lodf;
+                    if (l.rungs[i] == representation::mesh_reduced) {
+                        l.rungs[i] = representation::lodf;
+                        if (i > 0 && l.rungs[i - 1] == representation::mesh_full) l.band[i] = 0.0f;
+                    }
         if (policy.ladders.size() != s.species.size())
             throw std::invalid_argument("a ladder policy needs one ladder per species: scenario '" + s.name +
                                         "' has " + std::to_string(s.species.size()) + " species, the policy " +

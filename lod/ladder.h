@@ -94,6 +94,14 @@ inline bool casts_as_a_mesh(representation r) {
            r == representation::billboard_cloud || r == representation::crossed_billboard;
 }
 
+// Whether the step from `nearer` into `farther` is seamless without a band: LoDF whole draws
+// exactly the full mesh's leaves (Rebollo 2006 §3: every leaf of the model is a leaf of the
+// sequence's finest level) over the same bark, and it thins from there, so the switch at its top
+// changes no pixel and a fade would only draw the plant twice.
+inline bool seamless_step(representation nearer, representation farther) {
+    return nearer == representation::mesh_full && farther == representation::lodf;
+}
+
 // Why a ladder cannot be used, and the rung at fault.
 struct ladder_problem {
     std::size_t rung = 0;
@@ -116,6 +124,10 @@ inline std::optional<ladder_problem> find_ladder_problem(const ladder& l) {
             return ladder_problem{i, "below_px", "below_px must be a positive number of pixels"};
         if (!(l.band[i] >= 0.0f && l.band[i] <= k_max_band))
             return ladder_problem{i, "band", "band must lie in [0, 0.9]"};
+        if (seamless_step(l.rungs[i - 1], l.rungs[i]) && l.band[i] != 0.0f)
+            return ladder_problem{i, "band",
+                                  "lodf after mesh_full takes no band: LoDF whole draws every leaf of the full mesh, so "
+                                  "the switch is seamless and a fade would draw the plant twice"};
         if (i >= 2 && !(l.below_px[i] < l.below_px[i - 1]))
             return ladder_problem{i, "below_px", "below_px must be smaller than the rung before's (" +
                                          std::to_string(l.below_px[i - 1]) + ")"};

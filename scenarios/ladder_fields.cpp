@@ -40,6 +40,10 @@ void read_ladder(const json_node& node, std::vector<ladder_step_settings>& out) 
             item.find("below_px")->fail("the first rung is drawn at every size above the second's: it takes no below_px");
         if (i == 0 && item.find("band")) item.find("band")->fail("the first rung has no band: the second rung's band is the step between them");
         if (i > 0 && !item.find("below_px")) item.fail_missing("below_px");
+        // A band left out is 0 where no fade is needed (lod/ladder.h seamless_step).
+        if (i > 0 && !item.find("band") && rung_of_name(out[i - 1].rung) && rung_of_name(out[i].rung) &&
+            seamless_step(*rung_of_name(out[i - 1].rung), *rung_of_name(out[i].rung)))
+            out[i].band = 0.0f;
     }
     if (const auto problem = find_ladder_problem(ladder_of(out))) {
         // A band left at its default is not in the file: the rung's object stands for it.

@@ -72,8 +72,8 @@ TEST(lodf_rung_gl, at_full_detail_it_draws_the_full_mesh) {
 // which writes the slot's commands whole.
 TEST(lodf_rung_gl, a_moving_camera_uploads_only_the_changed_clusters) {
     SYLVA_REQUIRE_GL();
-    // The tree is about 100 px high: LoDF takes over at 150 px and keeps (size / 165)² of its leaves.
-    const played p = play(tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.1f}}, 6), 2);
+    // The tree is about 100 px high: LoDF takes over at 150 px and keeps (size / 150)² of its leaves.
+    const played p = play(tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.0f}}, 6), 2);
     const played full = play(tree_on({{"mesh_full"}}, 1), 2);
     ASSERT_EQ(p.records[0].instances[std::size_t(representation::lodf)], 1u);
     EXPECT_LT(p.records[0].triangles, full.records[0].triangles) << "the foliage is thinned";
@@ -89,15 +89,16 @@ TEST(lodf_rung_gl, a_moving_camera_uploads_only_the_changed_clusters) {
 
 // Shadows cast from the active leaves (issue 23 item 3), once: a slot's foliage casts into the
 // cascades the plant overlaps when LoDF is the plant's primary rung, and is drawn in the view only
-// while it is the faded partner of another rung, which casts instead (Behrendt 2005 §2.3).
+// while it is the faded partner of another rung, which casts instead (Behrendt 2005 §2.3): here
+// the crossed billboard, over 120 px x (1 ± 0.2), LoDF the partner below 120 px.
 TEST(lodf_rung_gl, its_foliage_casts_only_as_the_plants_primary_rung) {
     SYLVA_REQUIRE_GL();
-    scenario s = tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.3f}}, 1);
+    scenario s = tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.0f}, {"crossed_billboard", 120.0f, 0.2f}}, 1);
     ASSERT_TRUE(s.render.shadows);
     testing::ladder_walk walk(s);
     constexpr std::uint32_t k_view = 1u << unsigned(render_pass::opaque);
     int primary = 0, partner = 0;
-    for (const float size_px : {400.0f, 170.0f, 160.0f, 150.0f, 140.0f, 130.0f, 80.0f}) {
+    for (const float size_px : {400.0f, 170.0f, 160.0f, 140.0f, 130.0f, 115.0f, 105.0f, 80.0f}) {
         SCOPED_TRACE(size_px);
         const testing::walk_sample sample = walk.at(walk.distance_for(size_px));
         ecs::world& world = walk.world();
@@ -123,7 +124,7 @@ TEST(lodf_rung_gl, its_foliage_casts_only_as_the_plants_primary_rung) {
 
 TEST(lodf_rung_gl, the_frame_is_the_same_for_any_thread_count) {
     SYLVA_REQUIRE_GL();
-    const scenario s = tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.1f}}, 3);
+    const scenario s = tree_on({{"mesh_full"}, {"lodf", 150.0f, 0.0f}}, 3);
     const played one = play(s, 1);
     const played two = play(s, 2);
     for (std::size_t f = 0; f < one.images.size(); ++f) {

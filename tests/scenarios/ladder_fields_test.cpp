@@ -132,6 +132,27 @@ TEST(ladder_fields, an_error_threshold_needs_a_ladder_and_no_budget) {
     EXPECT_EQ(load(j).lod.target_frame_ms, 30.0) << "a frame-time target drives a ladder's budget";
 }
 
+// LoDF whole is the full mesh's foliage (lod/ladder.h seamless_step): the step from mesh_full into
+// it is a hard switch, its band 0 when left out and refused when given; after another rung, or
+// into the rung after LoDF, the band is the usual fade.
+TEST(ladder_fields, lodf_after_the_full_mesh_takes_no_band) {
+    const json lodf = json::parse(R"([{"rung": "mesh_full"}, {"rung": "lodf", "below_px": 300},
+                                      {"rung": "billboard_cloud", "below_px": 100}])");
+    const scenario s = load(with_ladder(lodf));
+    const ladder l = ladder_of(s.lod.ladder);
+    EXPECT_EQ(l.band[1], 0.0f);
+    EXPECT_EQ(l.band[2], k_default_band);
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), "round_trip.json").lod.ladder, s.lod.ladder);
+    json banded = lodf;
+    banded[1]["band"] = 0.1;
+    expect_error(with_ladder(banded), "/lod/ladder/1/band", "lodf after mesh_full takes no band");
+    banded[1]["band"] = 0.0;
+    EXPECT_EQ(ladder_of(load(with_ladder(banded)).lod.ladder).band[1], 0.0f) << "an explicit 0 is what it is";
+    const json after_reduced = json::parse(R"([{"rung": "mesh_reduced"}, {"rung": "lodf", "below_px": 300}])");
+    EXPECT_EQ(ladder_of(load(with_ladder(after_reduced)).lod.ladder).band[1], k_default_band)
+        << "from another rung LoDF is not the same leaves: the step fades";
+}
+
 // A rung may cast its shadow as another of its ladder's rungs drawn as one mesh (ladder::shadow):
 // read into the runtime's ladder, written back, and refused naming the field otherwise.
 TEST(ladder_fields, a_rung_casts_its_shadow_as_another_of_its_ladder_s_mesh_rungs) {

@@ -2,7 +2,7 @@
 // A crowd of plants on the LoDF rung (Rebollo 2006), for the cluster system's thread-count
 // determinism test and its benchmark (issue 23's ECS cost): `count` trees of one species baked
 // for real (models/bake/lodf_bake.h), on a jittered grid 8 m apart, every one on the lodf rung
-// of a ladder mesh_full → lodf (below 400 px) → billboard cloud, each in a slot of its own
+// of a ladder mesh_full → lodf (below 400 px, no band) → billboard cloud, each in a slot of its own
 // (setup/spawn_scenario.h spawn_lodf_clusters with as many slots as plants), and a camera that
 // walks diagonally across the grid so every plant's projected size, and so its leaf count,
 // changes every frame. The schedule runs update_lodf alone: what it costs is the clusters' walk.
@@ -60,7 +60,7 @@ struct lodf_crowd {
         ladder l;
         l.rungs = {representation::mesh_full, representation::lodf, representation::billboard_cloud};
         l.below_px = {0.0f, 400.0f, 40.0f};
-        l.band = {0.0f, 0.15f, 0.15f};
+        l.band = {0.0f, 0.0f, 0.15f};  // lod/ladder.h seamless_step: no band into LoDF
         l.count = 3;
         lod_policy policy;
         policy.mode = lod_policy::kind::ladder;
