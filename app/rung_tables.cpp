@@ -238,7 +238,9 @@ std::uint64_t table_key(const scenario& one, const scenario& patch, const std::v
     // Only the rungs their ladder draws otherwise add to the key (the other tables' keys, and so
     // what the cache holds for them, stay as they were): LoDF by where it starts, a caster.
     for (std::size_t k = 0; k < rungs.size(); ++k) {
-        if (rungs[k] == representation::lodf) text << "|lodf_top:" << drawn_as[k].lodf_top_px;
+        // (",cascade0": since LoDF's foliage casts into the first cascade only, the full
+        // mesh's coarser levels into the farther ones.)
+        if (rungs[k] == representation::lodf) text << "|lodf_top:" << drawn_as[k].lodf_top_px << ",cascade0";
         if (drawn_as[k].caster != representation::none)
             text << "|shadow:" << int(rungs[k]) << '>' << int(drawn_as[k].caster);
     }

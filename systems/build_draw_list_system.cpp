@@ -134,9 +134,16 @@ public:
             // (A walk over at most 8 rungs; a per-species table built here would allocate every
             // frame, which the warm frame must not.)
             const representation caster = k < m_ladders.size() ? m_ladders[k].caster_of(lod.current) : lod.current;
+            // LoDF's foliage casts into cascade 0 alone, as the view draws it (its slot's pass
+            // mask, build_draw_list_system below); each farther cascade casts the mesh level the
+            // full mesh would there. LoDF whole is the full mesh, so at its top the plant casts
+            // the full mesh's shadow in every cascade and the switch into it changes no shadow.
+            const bool lodf = caster == representation::lodf;
             for (int c = 0; c < m_cascade_count; ++c)
                 d.mesh[std::size_t(shadow_pass(c))] =
-                    mesh_of(species, coarser(caster, m_camera.full_geometry ? 0 : c));
+                    lodf && c == 0 ? species.mesh_lodf_bark
+                                   : mesh_of(species, coarser(lodf ? representation::mesh_full : caster,
+                                                              m_camera.full_geometry ? 0 : c));
             return d;
         }
         d.prefixed = true;
@@ -415,10 +422,12 @@ void build_draw_list_system::run(ecs::system_context<build_draw_list_system>& ct
         }
         const bool partner = lods[slot.plant].current != representation::lodf;
         g = make_instance(cam, transforms[slot.plant], instances[slot.plant], fades[slot.plant], partner, library);
-        // Like every plant's items: the primary casts into the cascades it overlaps, a faded
-        // partner is drawn in the view only (Behrendt 2005 §2.3), so a plant in a band casts once.
+        // Like every plant's items: the primary casts, a faded partner is drawn in the view only
+        // (Behrendt 2005 §2.3), so a plant in a band casts once. The foliage casts into cascade 0
+        // only; the farther cascades get the full mesh's coarser levels (classify).
         const std::uint32_t passes = builder.passes_of(transforms[slot.plant], bounds_of[slot.plant], lods[slot.plant]);
-        list.lodf_pass_masks[s] = partner ? passes & (1u << unsigned(render_pass::opaque)) : passes;
+        const std::uint32_t view = 1u << unsigned(render_pass::opaque);
+        list.lodf_pass_masks[s] = passes & (partner ? view : view | (1u << unsigned(shadow_pass(0))));
         if (has_population) g.population = populations[slot.plant];
         if (!lods[slot.plant].visible) continue;
         const lodf_structure& lodf = library.lodf[slot.species];

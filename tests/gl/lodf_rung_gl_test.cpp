@@ -48,16 +48,17 @@ played play(const scenario& s, int threads) {
 
 // LoDF as the only rung is LoDF at full detail: every leaf of F_0, the full mesh's triangles,
 // and its picture (the same triangles in cluster order: a pixel may differ where two leaves
-// meet at one depth). Without shadows: a mesh casts coarser levels into farther cascades, LoDF
-// its foliage as drawn.
+// meet at one depth), shadows included: its foliage casts into the first cascade as the full
+// mesh does, and each farther cascade gets the full mesh's coarser level there.
 TEST(lodf_rung_gl, at_full_detail_it_draws_the_full_mesh) {
     SYLVA_REQUIRE_GL();
-    scenario lodf_only = tree_on({{"lodf"}}, 1), full_only = tree_on({{"mesh_full"}}, 1);
-    lodf_only.render.shadows = full_only.render.shadows = false;
+    const scenario lodf_only = tree_on({{"lodf"}}, 1), full_only = tree_on({{"mesh_full"}}, 1);
+    ASSERT_TRUE(lodf_only.render.shadows);
     const played lodf = play(lodf_only, 2);
     const played full = play(full_only, 2);
     EXPECT_EQ(lodf.records[0].instances[std::size_t(representation::lodf)], 1u);
     EXPECT_EQ(lodf.records[0].triangles, full.records[0].triangles);
+    EXPECT_EQ(lodf.records[0].shadow_triangles, full.records[0].shadow_triangles);
     const image_rgba8& a = lodf.images[0];
     const image_rgba8& b = full.images[0];
     ASSERT_EQ(a.texels.size(), b.texels.size());
