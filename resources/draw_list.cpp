@@ -42,7 +42,7 @@ void build_batches(draw_list& list, const species_library& library) {
         while (last < n && batch_bits(list.items[last].key) == bits && list.items[last].count == primitives) ++last;
         const sort_key_fields f = decode_sort_key(list.items[first].key);
         const auto count = std::uint32_t(last - first);
-        list.batches.push_back({f.pass, f.mesh, std::uint32_t(first), count, primitives});
+        list.batches.push_back({f.pass, f.mesh, std::uint32_t(first), count, primitives, f.faded});
         const mesh_info& mesh = library.meshes.at(f.mesh);
         const std::uint64_t drawn = std::uint64_t(primitives ? primitives : mesh.triangles) * count;
         if (f.pass != render_pass::opaque) {

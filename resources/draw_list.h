@@ -55,6 +55,7 @@ struct draw_batch {
     std::uint32_t first_instance = 0;
     std::uint32_t instance_count = 0;
     std::uint32_t count = 0;  // primitives per instance from the mesh's start; 0: all of them
+    bool faded = false;       // a transition's partner dissolving by the screen door (sort_key.h)
 };
 
 struct draw_list {

@@ -37,6 +37,7 @@ struct plant_draws {
     // points and lines its own prefixes (`partner_prefixes`, the first `fade` of the primary's).
     bool partnered = false;
     bool partner_prefixed = false;
+    bool partner_dissolves = false;  // a mesh or crossed billboard: the screen door (sort_key.h faded)
     std::uint16_t partner_mesh = 0;
     std::uint32_t partner_prefix_count = 0;
     std::array<prefix_draw, 2 * k_prefix_parts> partner_prefixes;  // [0, partner_prefix_count) set
@@ -118,6 +119,8 @@ public:
             else d.partner_mesh = mesh_of(species, fade.partner);
             d.partnered = true;
             d.partner_prefixed = fade.partner == representation::points;
+            // A billboard cloud fades by its own threshold (cloud.frag), points by their prefix.
+            d.partner_dissolves = !d.partner_prefixed && fade.partner != representation::billboard_cloud;
         }
         // Drawn by its eco tile's sets (aggregate_eco_tiles): only the partner, its own prefixes
         // for the share the tile does not draw; nothing casts (the tile lies beyond the shadows).
@@ -229,7 +232,8 @@ instance_gpu make_instance(const camera& cam, const world_transform& t, const pl
 draw_item* write_items(const plant_draws& d, std::uint32_t plant, draw_item* out) {
     const std::uint32_t depth = quantize_depth(d.distance);
     if (d.partnered && !d.partner_prefixed)
-        *out++ = {make_sort_key({render_pass::opaque, d.partner_mesh, depth}), plant | k_partner_item_bit, 0};
+        *out++ = {make_sort_key({render_pass::opaque, d.partner_mesh, depth, d.partner_dissolves}),
+                  plant | k_partner_item_bit, 0};
     for (std::uint32_t i = 0; d.partnered && i < d.partner_prefix_count; ++i)
         *out++ = {make_sort_key({render_pass::opaque, d.partner_prefixes[i].mesh, depth}),
                   plant | k_partner_item_bit, d.partner_prefixes[i].count};

@@ -32,13 +32,13 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     // `primitives` > 0 draws that many primitives from the start of each submesh (a prefix,
     // Deussen 2002 §5.3); 0 draws them all.
     auto add = [&](render_pass pass, const gpu_mesh& mesh, std::uint32_t first, std::uint32_t count,
-                   std::uint32_t primitives = 0) {
+                   std::uint32_t primitives = 0, bool faded = false) {
         const std::uint32_t per = vertices_per(mesh.primitive);
         for (const auto& sub : mesh.submeshes) {
             const std::uint32_t indices =
                 primitives ? std::min(primitives * per, sub.index_count) : sub.index_count;
             emit(std::size_t(pass) * k_groups_per_pass +
-                     group_of(sub.material, mesh.primitive, sub.lighting),
+                     group_of(sub.material, mesh.primitive, sub.lighting, faded),
                  indirect_command{indices, count, sub.first_index, sub.base_vertex, first});
         }
     };
@@ -46,7 +46,7 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
     for (const auto& batch : draws.batches) {
         if (is_shadow_pass(batch.pass) && int(batch.pass) >= cascade_count) continue;
         add(batch.pass, meshes.get(batch.mesh), instance_base + batch.first_instance, batch.instance_count,
-            batch.count);
+            batch.count, batch.faded);
     }
     // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
     const auto terrain_instance = instance_base + std::uint32_t(draws.instances.size());

@@ -27,16 +27,18 @@ struct command_range {
 };
 
 // material_kind: bark, leaf, ground, billboard, billboard_cloud; primitive_kind: triangles,
-// points, lines.
+// points, lines; and whether the draws are a transition's partner dissolving by the screen door
+// (draw_batch::faded), which another program draws (program_table pass_kind::view_faded).
 inline constexpr std::size_t k_material_kinds = 5;
 inline constexpr std::size_t k_primitive_kinds = 3;
 inline constexpr std::size_t k_groups_per_pass =
-    k_material_kinds * k_primitive_kinds * k_lighting_variants;
+    2 * k_material_kinds * k_primitive_kinds * k_lighting_variants;
 using pass_commands = std::array<command_range, k_groups_per_pass>;
 
 constexpr std::size_t group_of(material_kind m, primitive_kind p,
-                               lighting_variant l = lighting_variant::normal_mapped) {
-    return (std::size_t(l) * k_primitive_kinds + std::size_t(p)) * k_material_kinds +
+                               lighting_variant l = lighting_variant::normal_mapped, bool faded = false) {
+    return ((std::size_t(faded) * k_lighting_variants + std::size_t(l)) * k_primitive_kinds + std::size_t(p)) *
+               k_material_kinds +
            std::size_t(m);
 }
 

@@ -16,6 +16,13 @@ constexpr bool drawn_as(material_kind m, primitive_kind p) {
     return p == primitive_kind::triangles || m == material_kind::bark || m == material_kind::leaf;
 }
 
+// The partners of a transition that fade by the screen-door dissolve: whole meshes and crossed
+// billboards (a billboard cloud fades by its own threshold, points by their prefix; the terrain
+// never fades).
+constexpr bool dissolves(material_kind m, primitive_kind p) {
+    return p == primitive_kind::triangles && m != material_kind::ground && m != material_kind::billboard_cloud;
+}
+
 // The shaders of a draw: one entry file per pass and representation (shaders/), so each reads
 // as one path; the defines then choose only material, lighting and measurement variants.
 const char* vertex_of(pass_kind pass, surface_primitive primitive) {
@@ -114,6 +121,7 @@ void program_table::prepare(const gpu_mesh& mesh) {
         const lighting_variant l = sub.lighting;
         if (!drawn_as(m, p)) continue;
         build(pass_kind::view, m, surface_primitive_of(p), l);
+        if (dissolves(m, p) && m_options.fade_dissolve) build(pass_kind::view_faded, m, surface_primitive::triangles, l);
         if (m_options.shadows) build(pass_kind::shadow, m, surface_primitive_of(p), l);
         if (p == primitive_kind::lines) build(pass_kind::view, m, surface_primitive::line_quads, l);
         if (p == primitive_kind::points) {
@@ -176,7 +184,8 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     }
     if (pass == pass_kind::soft_splats) source.defines.push_back("SOFT_SPLATS");
     if (!shadow && m_options.toon) source.defines.push_back("STYLE_TOON");
-    if (pass == pass_kind::view && m_options.normals) source.defines.push_back("WRITE_NORMAL");
+    const bool view = pass == pass_kind::view || pass == pass_kind::view_faded;
+    if (view && m_options.normals) source.defines.push_back("WRITE_NORMAL");
     if (primitive == surface_primitive::lines || primitive == surface_primitive::line_quads) {
         source.defines.push_back("PRIMITIVE_LINES");
         // d'-wide quads; GL's own one-pixel lines where d' is about a pixel, and in the shadow
@@ -197,10 +206,8 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     // Luft 2007: the normal's length (a billboard's normal page's too) is k_a.
     if (uses_implicit_normals(lighting) && material != material_kind::ground)
         source.defines.push_back("IMPLICIT_LIGHTING");
-    // Partners of a transition are drawn in the view only, and only as whole meshes.
-    if (!shadow && m_options.fade_dissolve && primitive == surface_primitive::triangles &&
-        material != material_kind::ground && material != material_kind::billboard_cloud)
-        source.defines.push_back("FADE_DISSOLVE");
+    // Partners of a transition are drawn in the view only, by their own programs (view_faded).
+    if (pass == pass_kind::view_faded) source.defines.push_back("FADE_DISSOLVE");
     // The soft splats' blend pass writes the splat layer's nearest depth where IDs would go.
     if (!shadow && m_options.id_buffer && pass != pass_kind::soft_splats)
         source.defines.push_back("WRITE_ID");

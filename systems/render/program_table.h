@@ -6,8 +6,8 @@
 //
 // Surface programs are indexed by four axes:
 //
-//   pass_kind (4) x material_kind (5) x surface_primitive (4) x lighting_variant (4)
-//   slot = ((pass * 5 + material) * 4 + primitive) * 4 + lighting       (320 slots)
+//   pass_kind (5) x material_kind (5) x surface_primitive (4) x lighting_variant (5)
+//   slot = ((pass * 5 + material) * 4 + primitive) * 5 + lighting       (500 slots)
 //
 // Depth-only passes (shadow, splat_visibility) light nothing: their lighting axis folds to
 // normal_mapped. Slots whose sources are equal share one GL program. The pass picks the entry
@@ -30,7 +30,10 @@ namespace sylva::render {
 
 // What a surface program draws into: a shadow cascade's depth, the view, or one of the soft
 // splats' two passes (lod/point_line_lod.h: depth-only visibility, then the blended Gaussians).
-enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splats, count };
+// view_faded: the view's programs for the faded partner of a transition (a mesh or crossed
+// billboard dissolving by the screen door, shaders/mesh.frag FADE_DISSOLVE); a plant drawn whole
+// is drawn by `view`, which has no dissolve to pay for per fragment.
+enum class pass_kind : std::uint8_t { shadow, view, splat_visibility, soft_splats, view_faded, count };
 // primitive_kind, with lines split by how they are widened: GL's own lines, or d'-wide quads
 // from line.geom (chosen per frame from d', so both are built).
 enum class surface_primitive : std::uint8_t { triangles, points, lines, line_quads, count };

@@ -18,10 +18,26 @@ TEST(sort_key, fields_round_trip_through_the_bit_layout) {
 }
 
 TEST(sort_key, layout_matches_the_diagram) {
-    // pass in bits 60..63, mesh in 44..59, depth in 20..43 (see the diagram in sort_key.h).
+    // pass in bits 60..63, faded in 59, mesh in 43..58, depth in 19..42 (see the diagram in sort_key.h).
     EXPECT_EQ(make_sort_key({render_pass::opaque, 0, 0}), std::uint64_t(4) << 60);
-    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 1, 0}), std::uint64_t(1) << 44);
-    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 0, 1}), std::uint64_t(1) << 20);
+    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 0, 0, true}), std::uint64_t(1) << 59);
+    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 1, 0}), std::uint64_t(1) << 43);
+    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 0xFFFF, 0}), std::uint64_t(0xFFFF) << 43);
+    EXPECT_EQ(make_sort_key({render_pass::shadow_cascade_0, 0, 1}), std::uint64_t(1) << 19);
+    const sort_key_fields f = decode_sort_key(make_sort_key({render_pass::opaque, 0xABCD, 12345, true}));
+    EXPECT_EQ(f.pass, render_pass::opaque);
+    EXPECT_EQ(f.mesh, 0xABCD);
+    EXPECT_EQ(f.depth, 12345u);
+    EXPECT_TRUE(f.faded);
+}
+
+// A transition's dissolving partner is its own batch, drawn after every whole plant of the pass.
+TEST(sort_key, faded_partners_batch_apart_after_the_whole_plants) {
+    const auto whole_far = make_sort_key({render_pass::opaque, 0xFFFF, k_depth_max});
+    const auto faded_near = make_sort_key({render_pass::opaque, 0, 0, true});
+    EXPECT_LT(whole_far, faded_near);
+    EXPECT_NE(batch_bits(make_sort_key({render_pass::opaque, 7, 10})),
+              batch_bits(make_sort_key({render_pass::opaque, 7, 10, true})));
 }
 
 TEST(sort_key, pass_orders_before_mesh_before_depth) {

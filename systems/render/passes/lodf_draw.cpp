@@ -22,8 +22,11 @@ void lodf_draw::draw(pass_context& context, const draw_target& target) const {
         if (s >= view.draws->lodf_pass_masks.size() || !(view.draws->lodf_pass_masks[s] & (1u << unsigned(pass))))
             continue;
         const lighting_variant lighting = view.library->species[slot.species].lighting;
+        // A slot that is a transition's partner dissolves (its record's fade below 1).
+        const bool faded = !shadow && view.draws->lodf_instances[s].fade < 1.0f;
         const surface_program& program = context.programs->surface(
-            shadow ? pass_kind::shadow : pass_kind::view, material_kind::leaf, primitive_kind::triangles, lighting);
+            shadow ? pass_kind::shadow : faded ? pass_kind::view_faded : pass_kind::view, material_kind::leaf,
+            primitive_kind::triangles, lighting);
         glUseProgram(program.id);
         if (shadow) glUniform1i(program.cascade, target.cascade);
         glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,

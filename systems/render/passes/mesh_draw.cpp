@@ -33,9 +33,9 @@ void mesh_draw::draw_casters(pass_context& context, const draw_target& target) {
 void mesh_draw::draw_view(pass_context& context, const draw_target& target) {
     const pass_commands& groups = target.commands(context);
     const scene_textures& textures = *context.textures;
-    auto program = [&](material_kind material, lighting_variant lighting) {
+    auto program = [&](material_kind material, lighting_variant lighting, bool faded = false) {
         return context.programs
-            ->surface(pass_kind::view, material, primitive_kind::triangles, lighting)
+            ->surface(faded ? pass_kind::view_faded : pass_kind::view, material, primitive_kind::triangles, lighting)
             .id;
     };
     // Terrain and bark are closed, one-sided surfaces: back faces culled. Leaf cards and
@@ -48,24 +48,26 @@ void mesh_draw::draw_view(pass_context& context, const draw_target& target) {
                            true);
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, textures.species_block.id());
-    // One group: skip it when empty, else bind its textures and draw.
-    auto draw = [&](material_kind material, lighting_variant lighting, bool cull_back_faces,
+    // One group: skip it when empty, else bind its textures and draw. The plants drawn whole
+    // first, then the partners of transitions with the programs that dissolve them.
+    auto draw = [&](material_kind material, lighting_variant lighting, bool faded, bool cull_back_faces,
                     auto bind_textures) {
         const command_range& range =
-            groups[group_of(material, primitive_kind::triangles, lighting)];
+            groups[group_of(material, primitive_kind::triangles, lighting, faded)];
         if (!range.count) return;
         bind_textures();
-        context.draw_group(range, program(material, lighting), cull_back_faces);
+        context.draw_group(range, program(material, lighting, faded), cull_back_faces);
     };
-    for (const lighting_variant l : k_all_lightings) {
-        draw(material_kind::bark, l, true, [&] { glBindTextureUnit(0, textures.bark.id()); });
-        draw(material_kind::leaf, l, false, [&] { glBindTextureUnit(0, textures.leaf.id()); });
-        draw(material_kind::billboard, l, false, [&] {
-            glBindTextureUnit(0, textures.billboard_albedo.id());
-            glBindTextureUnit(2, textures.billboard_normal.id());
-            if (uses_transfer(l)) glBindTextureUnit(3, textures.billboard_transfer.id());
-        });
-    }
+    for (const bool faded : {false, true})
+        for (const lighting_variant l : k_all_lightings) {
+            draw(material_kind::bark, l, faded, true, [&] { glBindTextureUnit(0, textures.bark.id()); });
+            draw(material_kind::leaf, l, faded, false, [&] { glBindTextureUnit(0, textures.leaf.id()); });
+            draw(material_kind::billboard, l, faded, false, [&] {
+                glBindTextureUnit(0, textures.billboard_albedo.id());
+                glBindTextureUnit(2, textures.billboard_normal.id());
+                if (uses_transfer(l)) glBindTextureUnit(3, textures.billboard_transfer.id());
+            });
+        }
 }
 
 }  // namespace sylva::render
