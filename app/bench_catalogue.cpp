@@ -327,7 +327,7 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
         list.push_back(ladder_configuration(factor));
         if (factor == 1.0) list.push_back(lit_implicitly(ladder_configuration(factor)));
     }
-    for (double factor : {1.0, 0.5, 1.25, 1.5, 1.75, 2.0, 4.0}) list.push_back(ladder_lodf(factor));
+    for (double factor : {1.0, 0.5, 1.125, 1.25, 1.5, 1.75, 2.0, 4.0}) list.push_back(ladder_lodf(factor));
     list.push_back(ladder_without_shells());
     for (double slant : {0.0, 0.25}) list.push_back(ladder_shells_slanted(slant));
     list.push_back(ladder_shells_standard_blending());
