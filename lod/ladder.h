@@ -15,7 +15,8 @@
 // alpha threshold (§2.3), points and lines by Deussen's prefix (§5.3: the first `fade` of the
 // randomly ordered samples, so the thinning is uniform over the plant), a mesh or a crossed
 // billboard by a stable screen-door dissolve (shaders/mesh.frag). Only the primary casts shadows,
-// so a plant in a band casts once.
+// so a plant in a band casts once. The step from the full mesh into LoDF has no band
+// (seamless_step below): LoDF whole is the full mesh's foliage, so the switch changes nothing.
 #include <algorithm>
 #include <array>
 #include <cmath>
