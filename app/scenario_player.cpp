@@ -141,7 +141,7 @@ lod_policy policy_of(const scenario& s, const player_options& options) {
                 for (std::size_t i = 0; i < l.count; ++i)
                     if (l.rungs[i] == representation::mesh_reduced) {
                         l.rungs[i] = representation::lodf;
-                        if (i > 0 && l.rungs[i - 1] == representation::mesh_full) l.band[i] = 0.0f;
+                        if (i > 0 && seamless_step(l.rungs[i - 1], l.rungs[i])) l.band[i] = 0.0f;
                     }
         if (policy.ladders.size() != s.species.size())
             throw std::invalid_argument("a ladder policy needs one ladder per species: scenario '" + s.name +

@@ -53,7 +53,6 @@ float toon_band(float x) {
     return (floor(f) + smoothstep(0.45, 0.55, edge)) / bands;
 }
 
-// `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
 // A normal filtered from a normal page (a bake's blur, mip levels), lit as it comes rather than
 // made unit again (Toksvig 2005): the mean of many leaves' normals is shorter the more they
 // disagree, and kept short, the sky's SH irradiance and the sun's term fall toward their means
@@ -63,6 +62,7 @@ vec3 filtered_normal(vec3 n) {
     return n * min(1.0, 1.0 / max(length(n), 1e-4));
 }
 
+// `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
 vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float ambient) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;

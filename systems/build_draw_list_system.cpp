@@ -141,12 +141,11 @@ public:
             // mask, build_draw_list_system below); each farther cascade casts the mesh level the
             // full mesh would there. LoDF whole is the full mesh, so at its top the plant casts
             // the full mesh's shadow in every cascade and the switch into it changes no shadow.
-            const bool lodf = caster == representation::lodf;
-            for (int c = 0; c < m_cascade_count; ++c)
-                d.mesh[std::size_t(shadow_pass(c))] =
-                    lodf && c == 0 ? species.mesh_lodf_bark
-                                   : mesh_of(species, coarser(lodf ? representation::mesh_full : caster,
-                                                              m_camera.full_geometry ? 0 : c));
+            for (int c = 0; c < m_cascade_count; ++c) {
+                const representation cast_as =
+                    caster == representation::lodf && c > 0 ? representation::mesh_full : caster;
+                d.mesh[std::size_t(shadow_pass(c))] = mesh_of(species, coarser(cast_as, m_camera.full_geometry ? 0 : c));
+            }
             return d;
         }
         d.prefixed = true;
