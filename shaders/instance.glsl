@@ -34,8 +34,15 @@ instance_pose pose_instance() {
 // this): the factor by which the neighbours' density lowers k_a at model-space point q, blended
 // trilinearly from the 8 corners of the box [-h, h] x [0, 2h] x [-h, h] packed in the instance.
 // Corner c holds 6 bits at bit 6c of the 64-bit word (corner 5 straddles the halves); h is the
-// half in bits 48..63. An instance of a scene without populations packs every factor as 1.
+// half in bits 48..63. An instance of a scene without populations packs every factor as 1, and
+// its programs are built without POPULATION_AMBIENT (program_options::population): the factor is
+// then the constant 1, and an implicit-lit vertex costs what a normal-lit one does (Luft 2007's
+// "no run-time cost"; components/population_ambient.h promises a scene without populations pays
+// nothing for them).
 float population_ambient(vec3 q) {
+#ifndef POPULATION_AMBIENT
+    return 1.0;
+#else
     uvec2 p = in_instance_population;
     float h = unpackHalf2x16(p.y >> 16u).x;
     vec3 t = clamp(vec3(0.5 * (q.x / h + 1.0), 0.5 * q.y / h, 0.5 * (q.z / h + 1.0)), 0.0, 1.0);
@@ -50,4 +57,5 @@ float population_ambient(vec3 q) {
     vec4 lower = mix(vec4(f[0], f[2], f[4], f[6]), vec4(f[1], f[3], f[5], f[7]), t.x);  // along x
     vec2 middle = mix(lower.xz, lower.yw, t.y);                                         // along y
     return mix(middle.x, middle.y, t.z);                                                // along z
+#endif
 }

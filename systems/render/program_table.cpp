@@ -178,7 +178,10 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
         if (m_options.normals) {
             // The line style's normal buffer (edges.frag) sees the splats, not what lies behind.
             source.defines.push_back("WRITE_NORMAL");
-            if (uses_implicit_normals(lighting)) source.defines.push_back("IMPLICIT_LIGHTING");
+            if (uses_implicit_normals(lighting)) {
+                source.defines.push_back("IMPLICIT_LIGHTING");
+                if (m_options.population) source.defines.push_back("POPULATION_AMBIENT");
+            }
         }
         return source;
     }
@@ -204,8 +207,10 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     }
     if (uses_transfer(lighting) && material != material_kind::ground) source.defines.push_back("SH_TRANSFER");
     // Luft 2007: the normal's length (a billboard's normal page's too) is k_a.
-    if (uses_implicit_normals(lighting) && material != material_kind::ground)
+    if (uses_implicit_normals(lighting) && material != material_kind::ground) {
         source.defines.push_back("IMPLICIT_LIGHTING");
+        if (m_options.population) source.defines.push_back("POPULATION_AMBIENT");
+    }
     // Partners of a transition are drawn in the view only, by their own programs (view_faded).
     if (pass == pass_kind::view_faded) source.defines.push_back("FADE_DISSOLVE");
     // The soft splats' blend pass writes the splat layer's nearest depth where IDs would go.

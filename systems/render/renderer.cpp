@@ -45,7 +45,8 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
     : m_settings(settings),
       m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines,
-                  !assets.shells.empty(), !assets.shells.empty() && assets.shells.tiles.front().has_transfer()}),
+                  !assets.shells.empty(), !assets.shells.empty() && assets.shells.tiles.front().has_transfer(),
+                  std::ranges::any_of(assets.densities, [](const species_density& d) { return d.receives; })}),
       m_ring(std::size_t(4) << 20),
       m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
       m_textures(assets),
