@@ -2,7 +2,8 @@
 // 2007's implicit-surface illumination does to a crown's look (issue 22, "less noise, same
 // shape"). Each scenario is played twice, its species lit by their own normals and then by the
 // implicit surface (realigned normals, density ambient), with the same camera and the same
-// ladder; in every frame the crown mask is the plants' pixels (ID buffer) whose 5x5
+// ladder, by projected size (an auto ladder's solver would choose each lighting's rungs from its
+// own tables); in every frame the crown mask is the plants' pixels (ID buffer) whose 5x5
 // neighbourhood is all plant in both frames, so silhouettes never count. Reported over all
 // frames' crown pixels: the variance of a Laplacian of luma (the high frequencies the leaves'
 // random orientations put there) and the mean luma (the crown's brightness, which the density
@@ -93,6 +94,16 @@ int implicit_look(const implicit_look_options& o) {
             s.frames = o.frames;
             s.width = o.width;
             s.height = o.height;
+            // The same ladder means the same rungs: under `auto` each lighting's solver chooses from
+            // its own rung tables (default's budget put 681 plants on clouds implicit-lit and 379
+            // normal-lit in the first frame), so the look would compare representations as well
+            // as lightings. Its ladder is played by projected size (the sizes in the file) instead.
+            if (s.lod.plant_budget_ms > 0.0 || s.lod.max_error > 0.0 || s.lod.target_frame_ms > 0.0) {
+                spdlog::info("implicit-look: {} chooses its rungs under a budget; both lightings play its ladder by "
+                             "projected size, so every plant is on the same rung in both",
+                             s.name);
+                s.lod.plant_budget_ms = s.lod.max_error = s.lod.target_frame_ms = 0.0;
+            }
             scenarios.push_back(std::move(s));
         } catch (const scenario_error& e) {
             spdlog::error("implicit-look: {}", e.what());
