@@ -68,6 +68,16 @@ rung_candidates candidates_at(const species_rung_tables& tables, float size_px, 
         c.cost_us[r] = (seen ? at(t.cost_us, p) : 0.0f) + shadow;
     }
     c.plant_pixels = at(tables.plant_pixels, p);
+    // A dearer rung whose error is not lower than a cheaper one's by at least
+    // k_error_resolution_per_pixel over the plant's pixels is no better: it takes the cheaper
+    // one's error, so no λ ever prefers it (choose_at breaks ties toward the cheaper).
+    const float resolution = seen ? seen_share * c.plant_pixels * k_error_resolution_per_pixel : 0.0f;
+    std::array<float, k_max_rungs> raised = c.error;
+    for (std::size_t r = 0; r < c.count; ++r)
+        for (std::size_t s = 0; s < c.count; ++s)
+            if (c.cost_us[s] < c.cost_us[r] && c.error[s] <= c.error[r] + resolution)
+                raised[r] = std::max(raised[r], c.error[s]);
+    c.error = raised;
     return c;
 }
 

@@ -227,6 +227,41 @@ TEST(rung_solver, a_plant_mostly_hidden_weighs_its_errors_by_the_share_seen) {
     EXPECT_FLOAT_EQ(candidates_at(s, 64.0f, true, false, {0.0f, 1}).error[1], 9.0f);
 }
 
+// k_error_resolution_per_pixel: over 5,100 plant pixels the solver tells errors apart from
+// 5100 / 510 = 10 on. Points costing 1.8x the mesh for 1354 against 1355.2 are no better (they
+// take the mesh's error, so even λ = 0 picks the mesh); the mesh costing 1.8x points for an error
+// 11 lower is, and keeps its own.
+TEST(rung_solver, a_dearer_rung_better_by_less_than_the_error_resolution_is_no_better) {
+    species_rung_tables s;
+    rung_table mesh{representation::mesh_full, {}, {}, {}}, points{representation::points, {}, {}, {}};
+    mesh.error.fill(1355.2f);
+    mesh.cost_us.fill(128000.0f);
+    points.error.fill(1354.0f);
+    points.cost_us.fill(234000.0f);
+    s.rungs = {mesh, points};
+    s.plant_pixels.fill(5100.0f);
+    const rung_candidates c = candidates_at(s, 430.0f, true, false);
+    EXPECT_FLOAT_EQ(c.error[0], 1355.2f);
+    EXPECT_FLOAT_EQ(c.error[1], 1355.2f);
+    EXPECT_EQ(choose_at(c, 0.0, k_none, 0.0f), 0);
+    lambda_histogram h;
+    h.add(c);
+    EXPECT_DOUBLE_EQ(h.cost_at_zero_us, 128000.0) << "the least-error rung is the mesh";
+    // Better by 11 (more than 10): a real difference, kept.
+    s.rungs[1].error.fill(1344.2f);
+    const rung_candidates better = candidates_at(s, 430.0f, true, false);
+    EXPECT_FLOAT_EQ(better.error[1], 1344.2f);
+    EXPECT_EQ(choose_at(better, 0.0, k_none, 0.0f), 1);
+    // The resolution is over the pixels seen (resources/seen_pixels.h): a quarter seen, errors
+    // 338.8 and 336.05 are 2.75 apart, over a quarter's 2.5, so the points keep theirs; half as
+    // much better (1349.7: 337.425 against 338.8, 1.375 apart) they take the mesh's.
+    s.rungs[0].drawn_pixels.fill(400.0f);
+    const rung_candidates quarter = candidates_at(s, 430.0f, true, false, {100.0f, 0});
+    EXPECT_FLOAT_EQ(quarter.error[1], 0.25f * 1344.2f);
+    s.rungs[1].error.fill(1349.7f);
+    EXPECT_FLOAT_EQ(candidates_at(s, 430.0f, true, false, {100.0f, 0}).error[1], 0.25f * 1355.2f);
+}
+
 // --max-error: with 100 plant pixels a threshold of 0.05 per pixel allows an error of 5 in all.
 TEST(rung_solver, under_an_error_threshold_a_plant_takes_the_cheapest_rung_within_it) {
     rung_candidates c = three(2.0f, 10.0f);
