@@ -33,6 +33,7 @@ crown_look look_of(const std::string& lighting, const std::string& representatio
     scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/single_tree.json");
     s.width = 320;
     s.height = 180;
+    s.lod.plant_budget_ms = 0.0;  // by projected size (the file ships a budget)
     // A one-rung ladder draws every plant on that rung.
     if (representation == "billboard_cloud" || representation == "crossed_billboard") {
         s.lod.representation = "ladder";

@@ -33,6 +33,8 @@ TEST(implicit_tuning_gl, a_background_rebake_swaps_in_a_darker_crown) {
     s.width = 240;
     s.height = 135;
     s.lod.lighting = "implicit";
+    s.lod.representation = "mesh_levels";  // the file's auto ladder would measure rung tables first
+    s.lod.plant_budget_ms = 0.0;
     s.species[0].implicit.generator_fraction = 0.1f;
     player_options options;
     options.id_buffer = true;

@@ -52,6 +52,7 @@ std::pair<two_trees, two_trees> render(bool with_oak, const std::string& represe
     s.width = 320;
     s.height = 180;
     s.lod.lighting = "implicit";
+    s.lod.plant_budget_ms = 0.0;  // by projected size (the file ships a budget)
     if (representation == "mesh_levels" || representation == "points_lines") {
         s.lod.representation = representation;
     } else {
