@@ -83,7 +83,8 @@ struct shown_last_frame {
 };
 
 // The least difference in mean colour error per plant pixel (0..1) the solver pays for: half an
-// 8-bit step. Rungs whose tables differ by less draw what no pixel of the plant can show apart:
+// 8-bit step, less on average than the smallest change a pixel of the plant can show. Below it
+// two rungs' tables tell them apart by their measurement more than by their images:
 // single_tree's oak at 430 px as points at d' = 1 (every triangle as a prefix) had 1354.0 against
 // the full mesh's 1355.2 (a thousandth apart) for 1.8x its cost, and the budget's rounding put
 // the tree on points and then, once it cast a shadow, on the mesh: an eleven-frame dissolve drawing
