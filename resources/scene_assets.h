@@ -183,4 +183,13 @@ struct scene_assets {
     shell_textures shells;
 };
 
+// Whether some implicit-lit species is darkened by its neighbours (species.implicit.population
+// on a species with a field): the population bake (setup/population_ambient.h) runs and the
+// renderer's programs interpolate the factor only then.
+inline bool has_population_receivers(const scene_assets& assets) {
+    for (const species_density& d : assets.densities)
+        if (d.receives && !d.generators.empty()) return true;
+    return false;
+}
+
 }  // namespace sylva

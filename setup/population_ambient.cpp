@@ -76,9 +76,7 @@ std::array<float, k_population_corners> population_factors(const placed_field& s
 population_report bake_population_ambient(ecs::world& world, const scene_assets& assets) {
     population_report report;
     const auto start = std::chrono::steady_clock::now();
-    const bool any = std::any_of(assets.densities.begin(), assets.densities.end(),
-                                 [](const species_density& d) { return d.receives && !d.generators.empty(); });
-    if (!any) return report;
+    if (!has_population_receivers(assets)) return report;
     const auto& transform_table = world.table<world_transform>();
     const auto& instance_table = world.table<plant_instance>();
     const auto& bounds_table = world.table<bounds>();

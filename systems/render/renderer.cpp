@@ -46,7 +46,7 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
     : m_settings(settings),
       m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines,
                   !assets.shells.empty(), !assets.shells.empty() && assets.shells.tiles.front().has_transfer(),
-                  std::ranges::any_of(assets.densities, [](const species_density& d) { return d.receives; })}),
+                  has_population_receivers(assets)}),
       m_ring(std::size_t(4) << 20),
       m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
       m_textures(assets),
