@@ -63,6 +63,11 @@ vec3 filtered_normal(vec3 n) {
 }
 
 // `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
+// The share of the sun's light left by a canopy above the point, which the shadow map does not
+// hold: the shells' slices above a slice (lod/shell_canopy.h; set by shaders/shell.frag), 1 for
+// everything else.
+float sun_transmittance = 1.0;
+
 vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float ambient) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
@@ -77,7 +82,7 @@ vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float
 #else
     vec3 sky = ambient * sh_irradiance(n);
 #endif
-    vec3 sun = u_sun_radiance.rgb * visibility;
+    vec3 sun = u_sun_radiance.rgb * visibility * sun_transmittance;
     vec3 radiance = base / 3.14159265 * (sky + sun * max(n_dot_l, 0.0));
     if (foliage) radiance += base * vec3(0.9, 1.0, 0.5) / 3.14159265 * sun * (0.35 * max(-n_dot_l, 0.0));
     vec3 color = apply_fog(radiance, length(position));

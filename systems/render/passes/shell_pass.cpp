@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "lod/shell_blending.h"
+#include "lod/shell_canopy.h"
 #include "models/bake/transfer_pages.h"
 #include "models/terrain/terrain.h"
 #include "models/terrain/wang_tiles.h"
@@ -75,7 +76,12 @@ shell_pass::shell_pass(const scene_assets& assets) {
         std::vector<image_rgba8> t = stack.transfer;
         for (;;) {
             colour.insert(colour.end(), c.begin(), c.end());
-            normal.insert(normal.end(), n.begin(), n.end());
+            // The normals' alpha (coverage, which the next level merges by) goes up as the sun
+            // left by the slices above (lod/shell_canopy.h).
+            if (!n.empty()) {
+                const std::vector<image_rgba8> lit = with_canopy_transmittance(n, c);
+                normal.insert(normal.end(), lit.begin(), lit.end());
+            }
             for (std::size_t k = 0; k < t.size(); ++k) transfer[k % k_transfer_pages].push_back(t[k]);
             if (c.size() == 1) break;
             c = m_standard_blending ? next_pyramid_level_standard(c) : next_pyramid_level(c);
