@@ -62,12 +62,12 @@ vec3 filtered_normal(vec3 n) {
     return n * min(1.0, 1.0 / max(length(n), 1e-4));
 }
 
-// `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
 // The share of the sun's light left by a canopy above the point, which the shadow map does not
 // hold: the shells' slices above a slice (lod/shell_canopy.h; set by shaders/shell.frag), 1 for
 // everything else.
 float sun_transmittance = 1.0;
 
+// `ambient` scales the sky's light: Luft 2007 Eq. 1's k_a (1 but under IMPLICIT_LIGHTING).
 vec3 shade_surface_ambient(vec3 base, vec3 n, vec3 position, bool foliage, float ambient) {
     vec3 l = u_sun_direction.xyz;
     float view_depth = -(u_view * vec4(position, 1.0)).z;
