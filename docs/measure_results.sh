@@ -52,7 +52,8 @@ for s in "${scenarios[@]}"; do
   $cmd
   commit="$(git rev-parse HEAD)"
   dirty=false
-  [ -n "$(git status --porcelain --untracked-files=no)" ] && dirty=true
+  # This script's own outputs (calibration.md above, the pages of earlier scenarios) are not the code measured.
+  [ -n "$(git status --porcelain --untracked-files=no -- . ':!docs/results')" ] && dirty=true
   printf '{"date": "%s", "commit": "%s", "dirty": %s, "command": "%s"}\n' \
     "$(date -u +%Y-%m-%d)" "$commit" "$dirty" "$cmd" > "$dir/meta.json"
   runs+=("$dir")
