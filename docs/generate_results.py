@@ -164,10 +164,18 @@ def index(pages):
 MEASURED_PAGES = [
     ("calibration.md", "The device calibration's run-to-run spread", "docs/measure_calibration.py"),
     ("budget_holding.md", "How closely the auto ladder holds a frame time", "docs/measure_budget_holding.sh"),
+    ("ladder_verdict.md", "The auto ladder against each point of the engine baseline's sweep on `default`, `forest` "
+     "and `landscape` (5 timing rounds)", "docs/ladder_verdict.py"),
     ("lodf.md", "LoDF (Rebollo 2006): bytes and time per change, storage, quality at equal leaf count",
      "docs/measure_lodf.py"),
+    ("lodf_popping.md", "LoDF's popping along `single_tree`'s and `forest`'s paths against the mesh levels at equal "
+     "time", "docs/measure_lodf_popping.py"),
     ("implicit_lighting.md", "Implicit-surface illumination (Luft 2007): occlusion ranks, crown noise, run time, "
      "the bake", "docs/measure_implicit.py"),
+    ("shells.md", "Shells (Behrendt 2005 §3): the far field against crossed billboards, clouds and points at 5°, 10° "
+     "and 20° above the canopy, plant-count independence, memory", "docs/measure_shells.py"),
+    ("shards.md", "Sharded runs (issue 25): shards of `play` and `bench` against whole runs, and what a shard of the "
+     "landscape reference costs beyond its frames", "docs/measure_shards.py"),
 ]
 
 # One page per representation: its title, the bench families it shows and the lightings.
