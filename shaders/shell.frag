@@ -46,6 +46,9 @@ layout(location = 1) out float out_nearest;  // the shell layer's nearest slice 
 
 void main() {
     if (any(lessThan(v_local_xz, u_area.xy)) || any(greaterThanEqual(v_local_xz, u_area.zw))) discard;
+    // Nearer than the fade's start nothing shows: no fetch (the test below would discard it too).
+    float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
+    if (fade <= 0.0) discard;
     vec2 cell_f = (v_local_xz - u_lattice.xy) * u_lattice.w;
     ivec2 cell = ivec2(floor(cell_f));
     ivec2 cells = textureSize(u_wang_index, 0);
@@ -56,7 +59,6 @@ void main() {
     vec2 dx = dFdx(cell_f);
     vec2 dy = dFdy(cell_f);
     vec4 c = textureGrad(u_shell_colour, vec3(uv, layer), dx, dy);
-    float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
     if (c.a * fade < 0.5 / 255.0) discard;
     vec3 base = u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb;
 #ifdef SH_TRANSFER

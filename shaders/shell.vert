@@ -10,11 +10,13 @@
 // point asks (update_shells), and each triangle, from its own centre, may merge further
 // (lod/shell_levels.h shell_level_at, mirrored by level_at below, at the distance
 // shell_level_distance gives: a vertical offset seen from above shows smaller). A slice its level
-// no longer has becomes a point (no fragments). All three vertices decide from the centre m, so a
-// triangle is kept or dropped whole.
+// no longer has becomes a point (no fragments), as does a triangle the fragment shader would
+// discard whole (outside the tiled area, nearer than the fade). All three vertices decide from
+// the centre m (and the triangle's radius), so a triangle is kept or dropped whole.
 #include "common.glsl"
 layout(location = 0) in vec3 in_position;  // terrain-local
 layout(location = 1) in vec3 in_centre;    // the triangle's centre m, terrain-local
+layout(location = 2) in float in_radius;   // the largest distance of its vertices from m
 
 const int k_max_levels = 16;
 uniform vec3 u_terrain_position;  // camera-relative: the viewer is at -u_terrain_position locally
@@ -26,6 +28,8 @@ uniform int u_level_slices[k_max_levels];       // ⌈S / 2^L⌉
 uniform int u_level_first_layer[k_max_levels];  // the level's first layer in a tile's stack
 uniform float u_slant;            // f (0: no slanting)
 uniform float u_slant_reach;      // the shift is held within ±f times this (lod/shell_slanting.h)
+uniform vec2 u_fade;              // shaders/shell.frag's: nothing shows nearer than x metres
+uniform vec4 u_area;              // shaders/shell.frag's: the tiled populations' area (terrain-local)
 
 out vec3 v_position;  // camera-relative
 out vec2 v_local_xz;
@@ -80,6 +84,15 @@ void main() {
     vec3 v = -u_terrain_position - m;
     float len = length(v);
     float limit = u_slant * u_slant_reach;
+    // A triangle the fragment shader would discard whole, wholly nearer than the fade's start or
+    // wholly outside the tiled area (slanting moves a point at most `limit`), is not rasterised:
+    // all three vertices decide from m and the triangle's radius, so it goes whole.
+    float r = in_radius + limit;
+    if (len + r < u_fade.x || any(lessThan(m.xz + r, u_area.xy)) || any(greaterThan(m.xz - r, u_area.zw))) {
+        v_position = vec3(0.0);
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
     x.y += len > 0.0 ? clamp(u_slant * dot(v, m - x) / len, -limit, limit) : 0.0;
     v_position = x + u_terrain_position;
     gl_Position = u_view_projection * vec4(v_position, 1.0);

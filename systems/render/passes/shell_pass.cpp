@@ -23,8 +23,9 @@ namespace {
 struct shell_vertex {
     glm::vec3 position;
     glm::vec3 centre;
+    float radius;  // the triangle's: the largest distance of its vertices from the centre
 };
-static_assert(sizeof(shell_vertex) == 24);
+static_assert(sizeof(shell_vertex) == 28);
 
 }  // namespace
 
@@ -161,7 +162,9 @@ shell_pass::shell_pass(const scene_assets& assets) {
                 const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
                                       &tile.vertices[tile.indices[k + 2]]};
                 const glm::vec3 centre = (v[0]->position + v[1]->position + v[2]->position) / 3.0f;
-                for (const vertex* p : v) vertices.push_back({p->position, centre});
+                float radius = 0.0f;
+                for (const vertex* p : v) radius = std::max(radius, glm::length(p->position - centre));
+                for (const vertex* p : v) vertices.push_back({p->position, centre, radius});
             }
             m_tile_ranges[n].push_back({first, std::uint32_t(vertices.size()) - first});
         }
@@ -172,8 +175,8 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_vertex_array = make_vertex_array();
     const GLuint vao = m_vertex_array.id();
     glVertexArrayVertexBuffer(vao, 0, m_vertices.id(), 0, sizeof(shell_vertex));
-    for (GLuint a = 0; a < 2; ++a) {
-        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 12);
+    for (GLuint a = 0; a < 3; ++a) {
+        glVertexArrayAttribFormat(vao, a, a < 2 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 12);
         glVertexArrayAttribBinding(vao, a, 0);
         glEnableVertexArrayAttrib(vao, a);
     }
