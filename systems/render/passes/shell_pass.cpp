@@ -77,8 +77,8 @@ shell_pass::shell_pass(const scene_assets& assets) {
         std::vector<image_rgba8> t = stack.transfer;
         for (;;) {
             colour.insert(colour.end(), c.begin(), c.end());
-            // The normals' alpha (coverage, which the next level merges by) goes up as the sun
-            // left by the slices above (lod/shell_canopy.h).
+            // The normals' alpha (coverage, which the next level merges by) is uploaded as the
+            // sun left by the slices above (lod/shell_canopy.h).
             if (!n.empty()) {
                 const std::vector<image_rgba8> lit = with_canopy_transmittance(n, c);
                 normal.insert(normal.end(), lit.begin(), lit.end());
