@@ -20,7 +20,6 @@ run again. Every page names the date, machine and commit its figures were measur
 The PNG plot needs rsvg-convert (Debian package librsvg2-bin); pngquant (package pngquant), when
 installed, makes it a third of the size.
 """
-import copy
 import json
 import math
 import os
@@ -303,11 +302,10 @@ def main(argv):
             shutil.copyfile(os.path.join(run, "bench.svg"), os.path.join(RESULTS, name + ".svg"))
             # The per-frame records (megabytes) stay in RUN_DIR/bench.json; the pages need the
             # configurations' summaries only.
-            kept = copy.deepcopy(report)
-            for c in kept.get("configurations", []):
+            for c in report.get("configurations", []):
                 c.pop("records", None)
             with open(os.path.join(RESULTS, name + ".json"), "w") as f:
-                json.dump({"meta": meta, "bench": kept}, f, indent=1)
+                json.dump({"meta": meta, "bench": report}, f, indent=1)
             write_scenario(report, meta)
     pages = kept_pages()
     with open(os.path.join(RESULTS, "README.md"), "w") as f:
