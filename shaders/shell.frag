@@ -44,23 +44,59 @@ uniform vec4 u_area;  // x0, z0, x1, z1: where the tiled populations grow (terra
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_nearest;  // the shell layer's nearest slice (MIN-blended)
 
+// lod/shell_sampling.h: the footprint cut into at most this many fetches, a slab's path held to
+// this many thicknesses.
+const int k_max_taps = 4;
+const float k_max_path = 32.0;
+
+// The layer of this fragment's slice in the stack of the Wang tile under cell coordinate p.
+float slice_layer(vec2 p) {
+    ivec2 cells = textureSize(u_wang_index, 0);
+    uint tile = texelFetch(u_wang_index, clamp(ivec2(floor(p)), ivec2(0), cells - 1), 0).r;
+    return float(int(tile) * u_layers_per_tile + v_layer);
+}
+
+// lod/shell_sampling.h slab_path and opacity_along (Engel et al. 2006 §9.1).
+float slab_path(vec3 view, vec3 slice_normal) {
+    float across = abs(dot(normalize(view), slice_normal));
+    float thickness = abs(slice_normal.y);
+    return across * k_max_path > thickness ? thickness / across : k_max_path;
+}
+float opacity_along(float alpha, float path) {
+    return 1.0 - pow(1.0 - min(alpha, 0.999), path);
+}
+
 void main() {
     if (any(lessThan(v_local_xz, u_area.xy)) || any(greaterThanEqual(v_local_xz, u_area.zw))) discard;
     // Nearer than the fade's start nothing shows: no fetch (the test below would discard it too).
     float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
     if (fade <= 0.0) discard;
     vec2 cell_f = (v_local_xz - u_lattice.xy) * u_lattice.w;
-    ivec2 cell = ivec2(floor(cell_f));
-    ivec2 cells = textureSize(u_wang_index, 0);
-    uint tile = texelFetch(u_wang_index, clamp(cell, ivec2(0), cells - 1), 0).r;
-    vec2 uv = cell_f - vec2(cell);
-    float layer = float(int(tile) * u_layers_per_tile + v_layer);
+    float layer = slice_layer(cell_f);
+    vec2 uv = cell_f - floor(cell_f);
     // Gradients of the continuous coordinate: the jump of uv at a tile border picks no mip.
     vec2 dx = dFdx(cell_f);
     vec2 dy = dFdy(cell_f);
-    vec4 c = textureGrad(u_shell_colour, vec3(uv, layer), dx, dy);
-    if (c.a * fade < 0.5 / 255.0) discard;
+    // Anisotropic filtering by hand (lod/shell_sampling.h footprint_taps): the footprint's long
+    // axis cut into `taps` pieces, each fetched from its own Wang tile at a piece's mip.
+    float lx = length(dx);
+    float ly = length(dy);
+    float ratio = max(lx, ly) / max(min(lx, ly), 1e-6);
+    int taps = int(clamp(ceil(ratio), 1.0, float(k_max_taps)));
+    vec2 step = (lx > ly ? dx : dy) / float(taps);
+    vec2 gx = lx > ly ? step : dx;
+    vec2 gy = lx > ly ? dy : step;
+    vec4 c = vec4(0.0);
+    for (int i = 0; i < taps; ++i) {
+        vec2 p = cell_f + (float(i) + 0.5 - 0.5 * float(taps)) * step;
+        c += textureGrad(u_shell_colour, vec3(p - floor(p), slice_layer(p)), gx, gy);
+    }
+    c /= float(taps);
     vec3 base = u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb;
+    // The slab crossed along the view, not from above (lod/shell_sampling.h): the slice's plane
+    // is its triangle's, slanted by Eq. 2.
+    c.a = opacity_along(c.a, slab_path(v_position, normalize(cross(dFdx(v_position), dFdy(v_position)))));
+    if (c.a * fade < 0.5 / 255.0) discard;
 #ifdef SH_TRANSFER
 #ifdef SHELL_RELIT
     vec4 sums = textureGrad(u_lit_seen, vec3(uv, layer), dx, dy);
