@@ -72,7 +72,6 @@ void main() {
     float fade = clamp((length(v_position) - u_fade.x) / max(u_fade.y - u_fade.x, 1e-3), 0.0, 1.0);
     if (fade <= 0.0) discard;
     vec2 cell_f = (v_local_xz - u_lattice.xy) * u_lattice.w;
-    float layer = slice_layer(cell_f);
     vec2 uv = cell_f - floor(cell_f);
     // Gradients of the continuous coordinate: the jump of uv at a tile border picks no mip.
     vec2 dx = dFdx(cell_f);
@@ -86,12 +85,18 @@ void main() {
     vec2 step = (lx > ly ? dx : dy) / float(taps);
     vec2 gx = lx > ly ? step : dx;
     vec2 gy = lx > ly ? dy : step;
+    vec2 first = cell_f + (0.5 - 0.5 * float(taps)) * step;
+    vec2 last = cell_f + (0.5 * float(taps) - 0.5) * step;
+    // Most footprints lie within one Wang tile: then one lookup of the index serves every fetch.
+    bool one_tile = all(equal(floor(first), floor(last)));
+    float first_layer = slice_layer(first);
     vec4 c = vec4(0.0);
     for (int i = 0; i < taps; ++i) {
-        vec2 p = cell_f + (float(i) + 0.5 - 0.5 * float(taps)) * step;
-        c += textureGrad(u_shell_colour, vec3(p - floor(p), slice_layer(p)), gx, gy);
+        vec2 p = first + float(i) * step;
+        c += textureGrad(u_shell_colour, vec3(p - floor(p), one_tile ? first_layer : slice_layer(p)), gx, gy);
     }
     c /= float(taps);
+    float layer = one_tile ? first_layer : slice_layer(cell_f);
     vec3 base = u_premultiplied != 0 ? c.rgb / max(c.a, 1e-4) : c.rgb;
     // The slab crossed along the view, not from above (lod/shell_sampling.h): the slice's plane
     // is its triangle's, slanted by Eq. 2.
