@@ -18,7 +18,8 @@ TEST(shell_sampling, opacity_over_a_longer_path_is_that_of_the_slab_crossed_that
     EXPECT_NEAR(opacity_along(0.2f, 3.0f), 0.488f, 1e-6f);
     EXPECT_FLOAT_EQ(opacity_along(0.3f, 1.0f), 0.3f);
     EXPECT_FLOAT_EQ(opacity_along(0.0f, 11.5f), 0.0f);
-    // An opaque texel stays finite and opaque to 1/1000.
+    // An opaque texel is held at 0.999, so the power stays finite: over half its thickness it
+    // shows 1 − 0.001^0.5.
     EXPECT_NEAR(opacity_along(1.0f, 0.5f), 1.0f - std::sqrt(0.001f), 1e-6f);
 }
 
