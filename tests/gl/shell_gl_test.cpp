@@ -72,6 +72,23 @@ std::vector<bool> plant_mask(const image_rgba8& image, const image_rgba8& bare) 
     return mask;
 }
 
+// How two masks overlap: pixels in both, in either, and in the second.
+struct overlap {
+    std::size_t both = 0;
+    std::size_t either = 0;
+    std::size_t in_b = 0;
+    double iou() const { return either ? double(both) / double(either) : 0.0; }
+};
+overlap overlap_of(const std::vector<bool>& a, const std::vector<bool>& b) {
+    overlap o;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        o.both += a[i] && b[i];
+        o.either += a[i] || b[i];
+        o.in_b += b[i];
+    }
+    return o;
+}
+
 TEST(shell_gl, wang_tiled_plants_on_the_shell_rung_are_drawn_by_the_shells_where_the_plants_are) {
     SYLVA_REQUIRE_GL();
     const frame shells = play(shrubs_from_above(true), 2);
@@ -87,33 +104,21 @@ TEST(shell_gl, wang_tiled_plants_on_the_shell_rung_are_drawn_by_the_shells_where
     // the plants; shells not cut to the population's area would cover the whole terrain).
     const std::vector<bool> a = plant_mask(shells.image, bare.image);
     const std::vector<bool> b = plant_mask(meshes.image, bare.image);
-    std::size_t both = 0, either = 0, in_b = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        both += a[i] && b[i];
-        either += a[i] || b[i];
-        in_b += b[i];
-    }
-    ASSERT_GT(in_b, a.size() / 10) << "the plants cover a good share of the view";
-    ASSERT_LT(in_b, a.size() * 7 / 10) << "and leave ground around them";
+    const overlap ab = overlap_of(a, b);
+    ASSERT_GT(ab.in_b, a.size() / 10) << "the plants cover a good share of the view";
+    ASSERT_LT(ab.in_b, a.size() * 7 / 10) << "and leave ground around them";
     // 0.59 as built (0.64 before the slices' opacity was taken along the view, which covers a
     // little beside the crowns too, lod/shell_sampling.h); 0.47 with the slices flat at y = 0, 0.24
     // with the Wang index misread.
-    EXPECT_GT(double(both) / double(either), 0.55) << both << " of " << either;
+    EXPECT_GT(ab.iou(), 0.55) << ab.both << " of " << ab.either;
     // Blended straight into the frame instead of the half-resolution layer: the same plants.
     scenario full = shrubs_from_above(true);
     full.shells.half_resolution = false;
     const std::vector<bool> c = plant_mask(play(full, 2).image, bare.image);
-    std::size_t same = 0, any = 0, both_full = 0, either_full = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        same += a[i] && c[i];
-        any += a[i] || c[i];
-        both_full += b[i] && c[i];
-        either_full += b[i] || c[i];
-    }
     // 0.84 and 0.66 as built (0.59 for the layer against the meshes above); the layer read
     // upside down: 0.16 and 0.22.
-    EXPECT_GT(double(same) / double(any), 0.75) << "the layer against the shells drawn straight in";
-    EXPECT_GT(double(both_full) / double(either_full), 0.6) << "the shells drawn straight in against the meshes";
+    EXPECT_GT(overlap_of(a, c).iou(), 0.75) << "the layer against the shells drawn straight in";
+    EXPECT_GT(overlap_of(b, c).iou(), 0.6) << "the shells drawn straight in against the meshes";
 }
 
 // The coverage metric sees the shells: with an ID buffer the layer writes the shells' ID where
@@ -251,14 +256,8 @@ grazing_view shells_seen_grazing(float slant) {
     const frame shells = play(shell, 2);
     const frame meshes = play(shrubs_seen_grazing(false), 2);
     const frame bare = play(shrubs_seen_grazing(false, true), 2);
-    const std::vector<bool> a = plant_mask(shells.image, bare.image);
     const std::vector<bool> b = plant_mask(meshes.image, bare.image);
-    std::size_t both = 0, either = 0, in_b = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        both += a[i] && b[i];
-        either += a[i] || b[i];
-        in_b += b[i];
-    }
+    const overlap ab = overlap_of(plant_mask(shells.image, bare.image), b);
     // Detail across the view: the mean luminance step between horizontal neighbours, both in
     // the meshes' plant pixels.
     const auto detail = [&](const image_rgba8& image) {
@@ -275,8 +274,8 @@ grazing_view shells_seen_grazing(float slant) {
         return n ? sum / double(n) : 0.0;
     };
     grazing_view v;
-    v.iou = either ? double(both) / double(either) : 0.0;
-    v.covered = in_b ? double(both) / double(in_b) : 0.0;
+    v.iou = ab.iou();
+    v.covered = ab.in_b ? double(ab.both) / double(ab.in_b) : 0.0;
     v.detail_ratio = detail(shells.image) / std::max(detail(meshes.image), 1e-9);
     return v;
 }
