@@ -21,15 +21,18 @@ float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::v
     return std::clamp(f * glm::dot(v, centre - vertex) / length, -limit, limit);
 }
 
+float triangle_reach(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 m = (a + b + c) / 3.0f;
+    return std::max({glm::length(a - m), glm::length(b - m), glm::length(c - m)});
+}
+
 float shell_slant_reach(std::span<const mesh_data> tiles) {
     float reach = 0.0f;
     for (const mesh_data& tile : tiles)
-        for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
-            const glm::vec3 a = tile.vertices[tile.indices[k]].position, b = tile.vertices[tile.indices[k + 1]].position,
-                            c = tile.vertices[tile.indices[k + 2]].position;
-            const glm::vec3 m = (a + b + c) / 3.0f;
-            reach = std::max({reach, glm::length(a - m), glm::length(b - m), glm::length(c - m)});
-        }
+        for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3)
+            reach = std::max(reach, triangle_reach(tile.vertices[tile.indices[k]].position,
+                                                   tile.vertices[tile.indices[k + 1]].position,
+                                                   tile.vertices[tile.indices[k + 2]].position));
     return reach;
 }
 

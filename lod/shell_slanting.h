@@ -31,8 +31,11 @@ float slant_shift_exact(const glm::vec3& vertex, const glm::vec3& centre, const 
 float slant_shift(const glm::vec3& vertex, const glm::vec3& centre, const glm::vec3& viewer, float f,
                   float reach = std::numeric_limits<float>::infinity());
 
-// The largest distance of a triangle's vertex from its centre over `tiles` (their indexed
-// triangles): the reach slant_shift holds every grid to, taken on the ground's own.
+// A triangle's reach: the largest distance of its vertices from their centre (a + b + c) / 3.
+float triangle_reach(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+// The largest triangle_reach over `tiles` (their indexed triangles): the reach slant_shift holds
+// every grid to, taken on the ground's own.
 float shell_slant_reach(std::span<const mesh_data> tiles);
 
 }  // namespace sylva

@@ -11,6 +11,7 @@
 
 #include "lod/shell_blending.h"
 #include "lod/shell_canopy.h"
+#include "lod/shell_slanting.h"
 #include "models/bake/transfer_pages.h"
 #include "models/terrain/terrain.h"
 #include "models/terrain/wang_tiles.h"
@@ -162,8 +163,7 @@ shell_pass::shell_pass(const scene_assets& assets) {
                 const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
                                       &tile.vertices[tile.indices[k + 2]]};
                 const glm::vec3 centre = (v[0]->position + v[1]->position + v[2]->position) / 3.0f;
-                float radius = 0.0f;
-                for (const vertex* p : v) radius = std::max(radius, glm::length(p->position - centre));
+                const float radius = triangle_reach(v[0]->position, v[1]->position, v[2]->position);
                 for (const vertex* p : v) vertices.push_back({p->position, centre, radius});
             }
             m_tile_ranges[n].push_back({first, std::uint32_t(vertices.size()) - first});
