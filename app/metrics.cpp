@@ -15,7 +15,7 @@ namespace sylva {
 std::string_view representation_name(representation r) {
     constexpr std::array<std::string_view, static_cast<std::size_t>(representation::count)> k_names = {
         "none", "mesh_full", "mesh_reduced", "mesh_far", "crossed_billboard", "points", "billboard_cloud",
-        "eco_tile", "lodf", "shell"};
+        "eco_tile", "lodf", "shell", "facing_billboard"};
     return k_names[static_cast<std::size_t>(r)];
 }
 

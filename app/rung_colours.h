@@ -19,7 +19,7 @@ struct rung_colour {
 };
 
 // The key, one colour per representation a plant can be drawn with.
-inline constexpr std::array<rung_colour, 9> k_rung_colours{{
+inline constexpr std::array<rung_colour, 10> k_rung_colours{{
     {representation::mesh_full, "mesh_full", {230, 60, 50}},
     {representation::mesh_reduced, "mesh_reduced", {240, 150, 40}},
     {representation::mesh_far, "mesh_far", {230, 220, 60}},
@@ -29,6 +29,7 @@ inline constexpr std::array<rung_colour, 9> k_rung_colours{{
     {representation::eco_tile, "eco_tile_points", {60, 220, 220}},
     {representation::lodf, "lodf", {250, 110, 160}},
     {representation::shell, "shell", {150, 150, 150}},  // no plant pixel is ever a shell's
+    {representation::facing_billboard, "facing_billboard", {240, 130, 220}},
 }};
 
 // `image` with every pixel whose ID (capture_plant_ids: plant index + 1, 0 for none) names a

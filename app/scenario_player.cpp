@@ -171,7 +171,8 @@ lod_policy player_policy(const scenario& s, const player_options& options) {
 
 // Only what the policy can select is baked (DESIGN §2, "skip what a scene doesn't need").
 scene_needs needs_of(const lod_policy& policy) {
-    return {policy.uses_point_lines(), policy.uses_billboard_clouds(), policy.uses_lodf(), policy.uses_shells()};
+    return {policy.uses_point_lines(), policy.uses_billboard_clouds(), policy.uses_lodf(), policy.uses_shells(),
+            policy.uses_facing_billboards()};
 }
 
 }  // namespace

@@ -41,13 +41,14 @@ inline constexpr float k_max_band = 0.9f;
 // with ("points_lines" is representation::points; "eco_tile_points" is the plant drawn by its eco
 // tile's aggregated sets, Deussen 2002 §6.2, which can only follow points_lines as the last rung:
 // a tile that cannot be drawn as its sets draws its plants as points).
-inline constexpr std::array<std::string_view, 9> k_rung_names{
-    "mesh_full",    "mesh_reduced",      "mesh_far",        "billboard_cloud", "points_lines",
-    "crossed_billboard", "eco_tile_points", "lodf",          "shell"};
+inline constexpr std::array<std::string_view, 10> k_rung_names{
+    "mesh_full",         "mesh_reduced",    "mesh_far", "billboard_cloud", "points_lines",
+    "crossed_billboard", "eco_tile_points", "lodf",     "shell",           "facing_billboard"};
 inline constexpr std::array<representation, k_rung_names.size()> k_rungs{
     representation::mesh_full,       representation::mesh_reduced, representation::mesh_far,
     representation::billboard_cloud, representation::points,       representation::crossed_billboard,
-    representation::eco_tile,        representation::lodf,         representation::shell};
+    representation::eco_tile,        representation::lodf,         representation::shell,
+    representation::facing_billboard};
 
 // "" when `r` is not a rung.
 inline std::string_view rung_name(representation r) {
@@ -79,11 +80,13 @@ struct ladder {
     bool casts(representation r) const {
         return std::find(shadow.begin(), shadow.begin() + count, r) != shadow.begin() + count;
     }
-    // What a plant drawn as `r` casts its shadow as.
+    // What a plant drawn as `r` casts its shadow as. A facing billboard turns with the eye, so
+    // unless its ladder names a caster it casts its crossed billboard (the same bake), whose
+    // shadow stays put as the eye moves and is the same whichever of the two the plant shows.
     representation caster_of(representation r) const {
         for (std::size_t i = 0; i < count; ++i)
             if (rungs[i] == r && shadow[i] != representation::none) return shadow[i];
-        return r;
+        return r == representation::facing_billboard ? representation::crossed_billboard : r;
     }
     bool operator==(const ladder&) const = default;
 };
@@ -92,7 +95,8 @@ struct ladder {
 // be cast (points and lines draw prefixes, LoDF its slots, eco tiles and shells no plant).
 inline bool casts_as_a_mesh(representation r) {
     return r == representation::mesh_full || r == representation::mesh_reduced || r == representation::mesh_far ||
-           r == representation::billboard_cloud || r == representation::crossed_billboard;
+           r == representation::billboard_cloud || r == representation::crossed_billboard ||
+           r == representation::facing_billboard;
 }
 
 // Whether the step from `nearer` into `farther` is seamless without a band: LoDF whole draws

@@ -29,7 +29,15 @@ enum class material_kind : std::uint8_t {
     // from the normal page and faded by a distance threshold on the gaussian colour alpha.
     // Appended last so serialized meshes keep the values above.
     billboard_cloud,
+    // A crossed billboard whose vertex shader turns one quad to face the eye and collapses the
+    // other (shaders/instance.glsl face_the_eye); otherwise drawn as `billboard`.
+    facing_billboard,
 };
+
+// A baked billboard's image on quads: the crossed pair, or its first quad facing the eye.
+constexpr bool is_billboard(material_kind m) {
+    return m == material_kind::billboard || m == material_kind::facing_billboard;
+}
 
 // How a mesh's indices are read: triangle lists for every model mesh; point and line lists for
 // the point/line representation (models/bake/point_line_model.h), assembled when a scene is built.

@@ -72,6 +72,12 @@ struct lod_policy {
                ((mode == kind::single || mode == kind::hard_switch) &&
                 (near == representation::lodf || far == representation::lodf));
     }
+    // The same for the facing billboard: the scene then uploads its mesh and builds its programs.
+    bool uses_facing_billboards() const {
+        return any_ladder_reaches(representation::facing_billboard) ||
+               ((mode == kind::single || mode == kind::hard_switch) &&
+                (near == representation::facing_billboard || far == representation::facing_billboard));
+    }
     // The same for shells (Behrendt 2005 §3): the scene then bakes the Wang tiles' shell textures.
     bool uses_shells() const { return any_ladder_reaches(representation::shell); }
     // The same for billboard clouds: the scene then bakes them and uploads their atlases.

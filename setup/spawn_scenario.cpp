@@ -263,6 +263,11 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     add_mesh(assets, std::move(model.lods[1]), representation::mesh_reduced, entry.mesh_reduced,
              entry.triangles_reduced);
     add_mesh(assets, std::move(model.lods[2]), representation::mesh_far, entry.mesh_far, entry.triangles_far);
+    if (needs.facing_billboards) {
+        std::uint32_t triangles = 0;
+        add_mesh(assets, facing_billboard_mesh(billboard.mesh), representation::facing_billboard, entry.mesh_facing,
+                 triangles);
+    }
     add_mesh(assets, std::move(billboard.mesh), representation::crossed_billboard, entry.mesh_billboard,
              entry.triangles_billboard);
     if (needs.point_lines) {

@@ -19,14 +19,45 @@ struct instance_pose {
     vec3 world;  // camera-relative world position
 };
 
+// FACING_EYE (material_kind::facing_billboard, the view only): the crossed billboard's pair of
+// quads turned about the plant's vertical axis so that one of them faces the eye, the other
+// collapsed to a point (its triangles cover nothing). The one shown is the quad whose baked view
+// lies nearer the eye's azimuth about the plant: the first quad's (seen from model +z, normal z)
+// within 45 degrees of the plant's z axis, the second's (from +x, normal x) within 45 degrees of
+// its x axis, either side. The plant is then drawn turned so that quad's front faces the eye: its
+// yaw the eye's azimuth (sin : cos = -x : -z of the camera-relative position, the eye at the
+// origin; the rotation below takes +z to (sin yaw, 0, cos yaw)), less 90 degrees for the second
+// quad, whose front is +x. Its normal and transfer pages turn with it. Straight above the plant
+// there is no azimuth: both quads at the plant's own yaw, the crossed billboard.
+struct facing_choice {
+    float yaw;
+    bool shown;  // this vertex's quad is the one shown
+};
+facing_choice face_the_eye(vec3 position, float own_yaw, vec3 model_normal) {
+    vec2 to_eye = -position.xz;
+    if (dot(to_eye, to_eye) <= 1e-12) return facing_choice(own_yaw, true);
+    float eye_yaw = atan(to_eye.x, to_eye.y);
+    float relative = eye_yaw - own_yaw;
+    bool second = abs(sin(relative)) > abs(cos(relative));
+    bool of_second = abs(model_normal.x) > abs(model_normal.z);
+    return facing_choice(second ? eye_yaw - 1.5707963267948966 : eye_yaw, second == of_second);
+}
+
 instance_pose pose_instance() {
     instance_pose p;
     float yaw = in_instance_position_yaw.w;
+#ifdef FACING_EYE
+    facing_choice facing = face_the_eye(in_instance_position_yaw.xyz, yaw, in_normal);
+    yaw = facing.yaw;
+#endif
     p.s = sin(yaw);
     p.c = cos(yaw);
     p.rotation = mat3(p.c, 0.0, -p.s, 0.0, 1.0, 0.0, p.s, 0.0, p.c);
     p.scale = in_instance_scale_tint_fade_layer.x;
     p.world = p.rotation * (in_position * p.scale) + in_instance_position_yaw.xyz;
+#ifdef FACING_EYE
+    if (!facing.shown) p.world = in_instance_position_yaw.xyz;
+#endif
     return p;
 }
 

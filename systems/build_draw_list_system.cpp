@@ -58,6 +58,7 @@ std::uint16_t mesh_of(const species_entry& species, representation r) {
         case representation::mesh_full: return species.mesh_full;
         case representation::mesh_reduced: return species.mesh_reduced;
         case representation::crossed_billboard: return species.mesh_billboard;
+        case representation::facing_billboard: return species.mesh_facing;
         case representation::billboard_cloud: return species.mesh_cloud;
         // The trunk and branches; the foliage is drawn by its slot's commands.
         case representation::lodf: return species.mesh_lodf_bark;

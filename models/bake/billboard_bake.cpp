@@ -34,6 +34,7 @@ surface surface_of(material_kind m) {
         case material_kind::ground: return surface::opaque;
         case material_kind::leaf:
         case material_kind::billboard:
+        case material_kind::facing_billboard:
         case material_kind::billboard_cloud: return surface::alpha_tested;
     }
     return surface::skip;

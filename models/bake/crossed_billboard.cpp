@@ -65,6 +65,19 @@ std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(
     }};
 }
 
+mesh_data facing_billboard_mesh(const mesh_data& crossed) {
+    if (crossed.vertices.size() != 4 * k_crossed_billboard_quads || crossed.submeshes.size() != 1)
+        throw std::invalid_argument("facing_billboard_mesh: not a crossed billboard's pair of quads");
+    mesh_data out = crossed;
+    out.submeshes[0].material = material_kind::facing_billboard;
+    // Turned about the vertical axis, either quad sweeps the circle its half-width spans.
+    const extent e = extent_of(out);
+    const float reach = std::max({std::abs(e.min.x), std::abs(e.max.x), std::abs(e.min.z), std::abs(e.max.z)});
+    out.bounds_min = {-reach, e.min.y, -reach};
+    out.bounds_max = {reach, e.max.y, reach};
+    return out;
+}
+
 crossed_billboard bake_crossed_billboard(const plant_model& model,
                                          const crossed_billboard_settings& settings,
                                          const radiance_transfer* transfer) {

@@ -54,6 +54,12 @@ struct crossed_billboard {
 // The quads' planes in atlas order, from the full mesh of a plant standing on the origin (y up).
 std::array<billboard_plane, k_crossed_billboard_quads> crossed_billboard_planes(const mesh_data& full);
 
+// `crossed` (a crossed billboard's pair of quads) as the facing billboard draws it: one
+// material_kind::facing_billboard submesh, whose vertex shader turns the plant about its
+// vertical axis so that the quad whose baked view is nearer the eye's faces it, and collapses the
+// other (shaders/instance.glsl face_the_eye); its bounds the circle either quad sweeps.
+mesh_data facing_billboard_mesh(const mesh_data& crossed);
+
 // Bakes lods[0] with the model's leaf and bark textures, and with `transfer` (lods[0]'s, one
 // receiver per vertex) its transfer pages. Deterministic.
 crossed_billboard bake_crossed_billboard(const plant_model& model,

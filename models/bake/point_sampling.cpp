@@ -58,6 +58,7 @@ surface_texture surface_of(material_kind material, const image_rgba8& leaf_textu
     switch (material) {
         case material_kind::leaf:
         case material_kind::billboard:
+        case material_kind::facing_billboard:
         case material_kind::billboard_cloud:
             return {&leaf_texture, true};
         case material_kind::bark:

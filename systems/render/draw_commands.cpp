@@ -13,7 +13,7 @@ namespace {
 constexpr std::uint32_t vertices_per(primitive_kind p) {
     return p == primitive_kind::triangles ? 3u : (p == primitive_kind::lines ? 2u : 1u);
 }
-static_assert(std::size_t(material_kind::billboard_cloud) + 1 == k_material_kinds,
+static_assert(std::size_t(material_kind::facing_billboard) + 1 == k_material_kinds,
               "k_material_kinds counts material_kind");
 
 }  // namespace

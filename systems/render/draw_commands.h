@@ -29,7 +29,7 @@ struct command_range {
 // material_kind: bark, leaf, ground, billboard, billboard_cloud; primitive_kind: triangles,
 // points, lines; and whether the draws are a transition's partner dissolving by the screen door
 // (draw_batch::faded), which another program draws (program_table pass_kind::view_faded).
-inline constexpr std::size_t k_material_kinds = 5;
+inline constexpr std::size_t k_material_kinds = 6;
 inline constexpr std::size_t k_primitive_kinds = 3;
 inline constexpr std::size_t k_groups_per_pass =
     2 * k_material_kinds * k_primitive_kinds * k_lighting_variants;

@@ -86,7 +86,7 @@ std::uint16_t mesh_pool::add(const mesh_data& mesh, lighting_variant lighting) {
     // Billboards read their transfer from pages; every other SH-lit mesh streams it.
     if (uses_transfer(lighting) && mesh.transfer.empty() && !mesh.vertices.empty() &&
         !mesh.submeshes.empty() && mesh.submeshes[0].material != material_kind::billboard_cloud &&
-        mesh.submeshes[0].material != material_kind::billboard)
+        !is_billboard(mesh.submeshes[0].material))
         throw std::logic_error("mesh_pool: an SH-lit mesh needs its transfer");
     if (!mesh.transfer.empty()) enable_transfer();
     reserve(m_vertex_count + mesh.vertices.size(), m_index_count + mesh.indices.size());

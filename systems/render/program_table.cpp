@@ -6,8 +6,7 @@ namespace sylva::render {
 namespace {
 
 constexpr bool alpha_tested(material_kind m) {
-    return m == material_kind::leaf || m == material_kind::billboard ||
-           m == material_kind::billboard_cloud;
+    return m == material_kind::leaf || is_billboard(m) || m == material_kind::billboard_cloud;
 }
 
 // Points and lines are the samples of bark and leaf parts (Deussen 2002 §5): no other material
@@ -200,7 +199,9 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     }
     if (material == material_kind::leaf) source.defines.push_back("MATERIAL_LEAF");
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
-    if (material == material_kind::billboard) source.defines.push_back("MATERIAL_BILLBOARD");
+    if (is_billboard(material)) source.defines.push_back("MATERIAL_BILLBOARD");
+    // Turned to the eye in the view only: in a shadow map it would turn with the eye too.
+    if (material == material_kind::facing_billboard && !shadow) source.defines.push_back("FACING_EYE");
     if (material == material_kind::billboard_cloud) {
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
         if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");

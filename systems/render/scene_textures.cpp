@@ -32,7 +32,7 @@ gl_buffer make_species_block(const scene_assets& assets) {
             assets.meshes[i].submeshes.empty())
             continue;
         const material_kind m = assets.meshes[i].submeshes[0].material;
-        if ((m == material_kind::billboard && assets.billboard_transfer.empty()) ||
+        if ((is_billboard(m) && assets.billboard_transfer.empty()) ||
             (m == material_kind::billboard_cloud && assets.cloud_transfer.empty()))
             throw std::logic_error("renderer: mesh " + std::to_string(i) +
                                    " is lit by SH transfer but has no transfer pages");

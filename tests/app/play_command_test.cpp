@@ -100,8 +100,9 @@ TEST(play_command, writes_every_frame_and_a_complete_metrics_file) {
         // stub figure (always 0) would read as "measured, unused".
         std::vector<std::string> names;
         for (const auto& [name, count] : f["instances"].items()) names.push_back(name);
-        EXPECT_EQ(names, (std::vector<std::string>{"billboard_cloud", "crossed_billboard", "eco_tile", "lodf",
-                                                   "mesh_far", "mesh_full", "mesh_reduced", "points", "shell"}));
+        EXPECT_EQ(names, (std::vector<std::string>{"billboard_cloud", "crossed_billboard", "eco_tile", "facing_billboard",
+                                                   "lodf", "mesh_far", "mesh_full", "mesh_reduced", "points",
+                                                   "shell"}));
     }
     const auto& summary = metrics["summary"];
     for (const char* key : {"median_frame_ms", "median_cpu_ms", "median_gpu_ms", "machine", "gl_renderer",

@@ -108,6 +108,21 @@ TEST(ladder, rung_names_round_trip_and_points_lines_is_the_points_representation
     EXPECT_EQ(rung_name(representation::none), "");
 }
 
+TEST(ladder, a_facing_billboard_casts_as_its_crossed_billboard_unless_its_ladder_names_a_caster) {
+    ladder l;
+    l.count = 2;
+    l.rungs = {representation::crossed_billboard, representation::facing_billboard};
+    l.below_px = {0.0f, 20.0f};
+    l.band = {0.0f, 0.15f};
+    EXPECT_FALSE(find_ladder_problem(l));
+    EXPECT_EQ(rung_of_name("facing_billboard"), representation::facing_billboard);
+    EXPECT_EQ(l.caster_of(representation::facing_billboard), representation::crossed_billboard);
+    EXPECT_EQ(l.caster_of(representation::crossed_billboard), representation::crossed_billboard);
+    EXPECT_TRUE(casts_as_a_mesh(representation::facing_billboard));
+    l.shadow[1] = representation::facing_billboard;
+    EXPECT_EQ(l.caster_of(representation::facing_billboard), representation::facing_billboard);
+}
+
 TEST(ladder, problems_name_the_rung_and_field_at_fault) {
     EXPECT_FALSE(find_ladder_problem(three_rungs()));
     EXPECT_FALSE(find_ladder_problem(papers_ladder()));

@@ -107,6 +107,35 @@ TEST(build_draw_list, a_rung_casts_as_the_rung_its_ladder_names) {
     EXPECT_EQ(meshes_in(list, render_pass::shadow_cascade_1), (std::vector<std::uint16_t>{3, 3, 5}));
 }
 
+// A facing billboard turns to the eye, so it casts its crossed billboard (lod/ladder.h
+// caster_of), whose shadow does not turn with the eye, unless its ladder names another caster.
+TEST(build_draw_list, a_facing_billboard_casts_its_crossed_billboard) {
+    three_plants scene;
+    species_library& library = scene.world.resource<species_library>();
+    library.species[0].mesh_facing = 6;
+    library.meshes.push_back({2, representation::facing_billboard});
+    ladder l;
+    l.count = 1;
+    l.rungs[0] = representation::facing_billboard;
+    lod_policy& policy = scene.world.resource<lod_policy>();
+    policy.mode = lod_policy::kind::ladder;
+    policy.ladders = {l};
+    scene.world.set_resource(rung_budget{});  // none: by projected size
+    scene.world.set_resource(seen_pixels{});
+    ecs::executor executor(2);
+    scene.schedule.run(scene.world, executor);
+    EXPECT_EQ(meshes_in(scene.world.resource<draw_list>(), render_pass::opaque), (std::vector<std::uint16_t>{6, 6, 6}));
+    EXPECT_EQ(meshes_in(scene.world.resource<draw_list>(), render_pass::shadow_cascade_0),
+              (std::vector<std::uint16_t>{4, 4, 4}));
+    EXPECT_EQ(meshes_in(scene.world.resource<draw_list>(), render_pass::shadow_cascade_1),
+              (std::vector<std::uint16_t>{4, 4, 4}));
+    // Named, the ladder's caster wins.
+    policy.ladders[0].shadow[0] = representation::facing_billboard;
+    scene.schedule.run(scene.world, executor);
+    EXPECT_EQ(meshes_in(scene.world.resource<draw_list>(), render_pass::shadow_cascade_0),
+              (std::vector<std::uint16_t>{6, 6, 6}));
+}
+
 TEST(build_draw_list, a_cascade_without_receivers_gets_no_casters) {
     three_plants scene;
     scene.world.resource<cascade_set>().holds_receivers[0] = false;  // its slice is air

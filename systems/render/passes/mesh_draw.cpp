@@ -27,6 +27,7 @@ void mesh_draw::draw_casters(pass_context& context, const draw_target& target) {
         draw(material_kind::bark, l, 0);
         draw(material_kind::leaf, l, context.textures->leaf.id());
         draw(material_kind::billboard, l, context.textures->billboard_albedo.id());
+        draw(material_kind::facing_billboard, l, context.textures->billboard_albedo.id());
     }
 }
 
@@ -62,11 +63,12 @@ void mesh_draw::draw_view(pass_context& context, const draw_target& target) {
         for (const lighting_variant l : k_all_lightings) {
             draw(material_kind::bark, l, faded, true, [&] { glBindTextureUnit(0, textures.bark.id()); });
             draw(material_kind::leaf, l, faded, false, [&] { glBindTextureUnit(0, textures.leaf.id()); });
-            draw(material_kind::billboard, l, faded, false, [&] {
-                glBindTextureUnit(0, textures.billboard_albedo.id());
-                glBindTextureUnit(2, textures.billboard_normal.id());
-                if (uses_transfer(l)) glBindTextureUnit(3, textures.billboard_transfer.id());
-            });
+            for (const material_kind billboard : {material_kind::billboard, material_kind::facing_billboard})
+                draw(billboard, l, faded, false, [&] {
+                    glBindTextureUnit(0, textures.billboard_albedo.id());
+                    glBindTextureUnit(2, textures.billboard_normal.id());
+                    if (uses_transfer(l)) glBindTextureUnit(3, textures.billboard_transfer.id());
+                });
         }
 }
 

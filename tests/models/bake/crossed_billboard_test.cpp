@@ -68,6 +68,32 @@ TEST(crossed_billboard, is_two_crossing_quads_with_one_billboard_submesh_and_a_t
     EXPECT_EQ(b.normal.height, k_resolution);
 }
 
+// The facing billboard draws the pair with its own material (its vertex shader shows one quad
+// turned to the eye), and its bounds are the circle the wider quad sweeps as the plant turns
+// about its trunk: on a hand-made pair whose quads span x in [-3, 3] and z in [-5, 5], y in
+// [1, 9], the box is [-5, 5] in x and z and [1, 9] in y.
+TEST(crossed_billboard, its_facing_billboard_is_the_pair_with_the_bounds_either_quad_sweeps) {
+    mesh_data pair;
+    const glm::vec3 z{0.0f, 0.0f, 1.0f}, x{1.0f, 0.0f, 0.0f};
+    pair.vertices = {{{-3.0f, 1.0f, 0.0f}, z, {0.0f, 1.0f}}, {{3.0f, 1.0f, 0.0f}, z, {0.5f, 1.0f}},
+                     {{3.0f, 9.0f, 0.0f}, z, {0.5f, 0.0f}},  {{-3.0f, 9.0f, 0.0f}, z, {0.0f, 0.0f}},
+                     {{0.0f, 1.0f, 5.0f}, x, {0.5f, 1.0f}},  {{0.0f, 1.0f, -5.0f}, x, {1.0f, 1.0f}},
+                     {{0.0f, 9.0f, -5.0f}, x, {1.0f, 0.0f}}, {{0.0f, 9.0f, 5.0f}, x, {0.5f, 0.0f}}};
+    pair.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
+    pair.submeshes = {{0, 12, material_kind::billboard}};
+    const mesh_data facing = facing_billboard_mesh(pair);
+    EXPECT_EQ(facing.indices, pair.indices);
+    ASSERT_EQ(facing.vertices.size(), 8u);
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(facing.vertices[i].uv, pair.vertices[i].uv);
+    ASSERT_EQ(facing.submeshes.size(), 1u);
+    EXPECT_EQ(facing.submeshes[0].material, material_kind::facing_billboard);
+    EXPECT_EQ(facing.bounds_min, glm::vec3(-5.0f, 1.0f, -5.0f));
+    EXPECT_EQ(facing.bounds_max, glm::vec3(5.0f, 9.0f, 5.0f));
+    EXPECT_THROW(facing_billboard_mesh(mesh_data{}), std::invalid_argument);
+    // The baked broadleaf's: its two quads, 4 triangles.
+    EXPECT_EQ(facing_billboard_mesh(broadleaf_billboard().mesh).triangle_count(), 4u);
+}
+
 TEST(crossed_billboard, each_quad_covers_a_plausible_share_of_its_image) {
     const crossed_billboard& b = broadleaf_billboard();
     for (std::uint32_t q = 0; q < 2; ++q) {
