@@ -341,7 +341,7 @@ command_runner add_view_command(CLI::App& app) {
     app.add_flag("--rungs", options->rungs,
                  "Start with every plant tinted by the rung it is drawn with (R toggles): mesh_full red, "
                  "mesh_reduced orange, mesh_far yellow, billboard_cloud green, points_lines blue, "
-                 "crossed_billboard violet, facing_billboard pink, lodf rose, eco_tile_points cyan");
+                 "crossed_billboard violet, facing_billboard orchid, lodf rose, eco_tile_points cyan");
     return [options] { return view(*options); };
 }
 

@@ -36,9 +36,9 @@ enum class representation : std::uint8_t {
     // baked view is nearer the eye's faces it, the other collapsed (a cylindrical billboard with
     // two images; models/bake/crossed_billboard.h facing_billboard_mesh): the crown's width and
     // one quad's fragments from every side, where the crossed pair seen between its quads
-    // foreshortens both to 0.71 of it, overlapping, and shades both. It
-    // casts the crossed billboard's shadow (lod/ladder.h caster_of), so its shadow does not turn
-    // with the eye. Appended so the values above keep their numbers.
+    // foreshortens both to 0.71 of it, overlapping, and shades both. It casts the crossed
+    // billboard's shadow (lod/ladder.h caster_of), so its shadow does not turn with the eye.
+    // Appended so the values above keep their numbers.
     facing_billboard,
     count
 };

@@ -34,7 +34,7 @@ enum class material_kind : std::uint8_t {
     facing_billboard,
 };
 
-// A baked billboard's image on quads: the crossed pair, or its first quad facing the eye.
+// A baked billboard's images on quads: the crossed pair, or the pair with one quad facing the eye.
 constexpr bool is_billboard(material_kind m) {
     return m == material_kind::billboard || m == material_kind::facing_billboard;
 }

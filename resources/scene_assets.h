@@ -42,7 +42,7 @@ struct species_entry {
     std::uint16_t mesh_reduced = 0;
     std::uint16_t mesh_far = 0;
     std::uint16_t mesh_billboard = 0;  // the crossed billboard's two quads (material billboard)
-    std::uint16_t mesh_facing = 0;     // its first quad, turned to the eye (material facing_billboard)
+    std::uint16_t mesh_facing = 0;     // the same pair, one quad turned to the eye (material facing_billboard)
     // The billboard cloud (Behrendt 2005 §2, material billboard_cloud), when the scene's LOD
     // policy can select it; 0 triangles otherwise.
     std::uint16_t mesh_cloud = 0;

@@ -20,7 +20,7 @@ struct scene_needs {
     bool billboard_clouds = false;  // Behrendt 2005 billboard clouds (models/bake/billboard_cloud.h)
     bool lodf = false;  // Rebollo 2006 LoDF foliage (models/bake/lodf_bake.h)
     bool shells = false;  // Behrendt 2005 §3 shell textures of the Wang tiles (setup/shell_assets.h)
-    // The crossed billboard's first quad turned to the eye (representation::facing_billboard): no
+    // The crossed billboard with one quad turned to the eye (representation::facing_billboard): no
     // bake of its own, but its mesh and programs only when a ladder can choose it.
     bool facing_billboards = false;
 };
