@@ -59,25 +59,18 @@ struct lod_policy {
                std::any_of(ladders.begin(), ladders.end(), [r](const ladder& l) { return l.reaches(r); });
     }
 
-    // True when select_representation can choose the point/line representation: the scene then
-    // bakes and uploads it (and does not otherwise).
-    bool uses_point_lines() const {
-        return mode == kind::points_lines || any_ladder_reaches(representation::points) ||
-               ((mode == kind::single || mode == kind::hard_switch) &&
-                (near == representation::points || far == representation::points));
+    // True when select_representation can choose `r`: a ladder reaches it, or a single or
+    // hard-switch policy names it (as the rung tables' one-rung players do).
+    bool selects(representation r) const {
+        return any_ladder_reaches(r) ||
+               ((mode == kind::single || mode == kind::hard_switch) && (near == r || far == r));
     }
+    // The point/line representation: the scene then bakes and uploads it (and does not otherwise).
+    bool uses_point_lines() const { return mode == kind::points_lines || selects(representation::points); }
     // The same for LoDF foliage (Rebollo 2006): the scene then bakes it and keeps cluster slots.
-    bool uses_lodf() const {
-        return any_ladder_reaches(representation::lodf) ||
-               ((mode == kind::single || mode == kind::hard_switch) &&
-                (near == representation::lodf || far == representation::lodf));
-    }
+    bool uses_lodf() const { return selects(representation::lodf); }
     // The same for the facing billboard: the scene then uploads its mesh and builds its programs.
-    bool uses_facing_billboards() const {
-        return any_ladder_reaches(representation::facing_billboard) ||
-               ((mode == kind::single || mode == kind::hard_switch) &&
-                (near == representation::facing_billboard || far == representation::facing_billboard));
-    }
+    bool uses_facing_billboards() const { return selects(representation::facing_billboard); }
     // The same for shells (Behrendt 2005 §3): the scene then bakes the Wang tiles' shell textures.
     bool uses_shells() const { return any_ladder_reaches(representation::shell); }
     // The same for billboard clouds: the scene then bakes them and uploads their atlases.
