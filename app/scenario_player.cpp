@@ -35,6 +35,7 @@
 #include "systems/select_representation_system.h"
 #include "setup/spawn_scenario.h"
 #include "systems/update_lodf_system.h"
+#include "systems/select_ground_grid_system.h"
 #include "systems/update_shells_system.h"
 #include "systems/update_point_prefix_system.h"
 #include "systems/update_camera_system.h"
@@ -63,6 +64,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<adapt_plant_budget_system>();
     schedule.add<cull_system>();
     schedule.add<update_shells_system>();
+    schedule.add<select_ground_grid_system>();
     schedule.add<fit_shadow_cascades_system>();
     schedule.add<select_representation_system>();
     schedule.add<aggregate_eco_tiles_system>();

@@ -167,6 +167,16 @@ struct scene_assets {
     std::vector<image_rgba8> cloud_transfer;
     image_rgba8 ground_texture;
     std::vector<std::uint16_t> terrain_meshes;  // the ground in tiles, culled one by one
+    // The ground's grids (geometric mip-mapping, lod/ground_grid.h), by grid g then tile (in
+    // terrain_meshes order): terrain_grids[g][t] is tile t on every 2^g-th sample (grid 0:
+    // terrain_meshes), terrain_skirts[g][t] its skirts there (models/terrain/terrain.h
+    // terrain_tile_skirts; k_no_skirt when it has none) and terrain_grid_errors[g][t] how far
+    // grid g strays vertically from the terrain. Empty in scenes built by hand: the renderer
+    // then draws terrain_meshes.
+    static constexpr std::uint16_t k_no_skirt = 0xFFFF;
+    std::vector<std::vector<std::uint16_t>> terrain_grids;
+    std::vector<std::vector<std::uint16_t>> terrain_skirts;
+    std::vector<std::vector<float>> terrain_grid_errors;
     float ground_uv_scale_m = 4.0f;
     heightfield terrain;
     // The scenario's environment map (environment.map), when it names one: its radiance SH as

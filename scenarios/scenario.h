@@ -30,6 +30,10 @@
 //                                              seed are ignored
 //     tiles_per_side integer      1            1 .. 256; the ground mesh in n x n tiles (at most
 //                                              resolution - 1 without a heightmap)
+//     max_error_px   number       0.5          0 .. 64; each tile is drawn from the coarsest grid
+//                                              of every 2^g-th sample whose height error shows
+//                                              as at most this many pixels (geometric
+//                                              mip-mapping; 0: every sample at any distance)
 //   }
 //   species        REQUIRED array of >= 1 {
 //     name               string REQUIRED, non-empty, unique among species
@@ -269,6 +273,7 @@ struct terrain_settings {
     glm::vec3 ground_color{0.32f, 0.30f, 0.18f};
     std::string heightmap;  // absolute path, empty: noise terrain
     std::uint32_t tiles_per_side = 1;
+    float max_error_px = 0.5f;  // components/ground_tile.h; resources/ground_lod.h k_ground_error_px
     bool operator==(const terrain_settings&) const = default;
 };
 

@@ -120,6 +120,7 @@ const field_table<terrain_settings>& terrain_fields() {
             .vec3("ground_color", &t::ground_color, {0.0, 1.0})
             .file_path("heightmap", &t::heightmap)
             .integer("tiles_per_side", &t::tiles_per_side, {1, 256})
+            .number("max_error_px", &t::max_error_px, {0.0, 64.0})
             .check([](const json_node& n, const t& s) {
                 // A heightmap's resolution is only known when it is read;
                 // terrain_tile_meshes clamps then.

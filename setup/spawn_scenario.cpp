@@ -18,6 +18,7 @@
 #include "components/lod_state.h"
 #include "components/cluster_changes.h"
 #include "components/shell_tile.h"
+#include "components/ground_tile.h"
 #include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
@@ -31,9 +32,11 @@
 #include "models/random.h"
 #include "models/generate/textures.h"
 #include "resources/lodf_slots.h"
+#include "resources/ground_lod.h"
 #include "resources/shell_view.h"
 #include "resources/draw_list.h"
 #include "lod/eco_tiles.h"
+#include "lod/ground_grid.h"
 #include "lod/shell_levels.h"
 #include "lod/shell_slanting.h"
 #include "models/terrain/terrain.h"
@@ -301,6 +304,48 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
     assets.library.species.push_back(std::move(entry));
 }
 
+// The ground's coarser grids and every grid's skirts (resources/scene_assets.h terrain_grids),
+// the skirts as deep as lod/ground_grid.h ground_skirt_depths says. Skipped, with a warning,
+// where the meshes would not fit 16-bit mesh ids (the ground is then drawn on its own samples at
+// every distance).
+void add_ground_grids(scene_assets& assets, std::uint32_t tiles_per_side) {
+    const std::uint32_t cells = assets.terrain.resolution - 1;
+    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);  // as terrain_tile_meshes clamps
+    const std::size_t grids = ground_grid_count(cells / tiles);
+    const std::size_t count = assets.terrain_meshes.size();
+    if (assets.meshes.size() + (2 * grids - 1) * count >= assets.k_no_skirt) {
+        spdlog::warn("terrain: {} tiles on {} grids need more meshes than 16-bit ids hold; the ground keeps "
+                     "its finest grid at every distance",
+                     count, grids);
+        return;
+    }
+    for (std::size_t g = 0; g < grids; ++g)
+        assets.terrain_grid_errors.push_back(g == 0 ? std::vector<float>(count, 0.0f)
+                                                    : terrain_tile_errors(assets.terrain, tiles, 1u << g));
+    auto add = [&](mesh_data&& mesh) {
+        if (mesh.indices.empty()) return scene_assets::k_no_skirt;
+        const auto id = std::uint16_t(assets.meshes.size());
+        assets.library.meshes.push_back({std::uint32_t(mesh.triangle_count()), representation::none});
+        assets.meshes.push_back(std::move(mesh));
+        return id;
+    };
+    for (std::size_t g = 0; g < grids; ++g) {
+        const auto stride = std::uint32_t(1u << g);
+        if (g == 0) {
+            assets.terrain_grids.push_back(assets.terrain_meshes);
+        } else {
+            std::vector<std::uint16_t>& ids = assets.terrain_grids.emplace_back();
+            for (mesh_data& tile : terrain_tile_meshes(assets.terrain, tiles, 1.0f, stride))
+                ids.push_back(add(std::move(tile)));
+        }
+        const std::vector<float> depths =
+            ground_skirt_depths(assets.terrain_grid_errors[g], assets.terrain_grid_errors.back(), tiles);
+        std::vector<std::uint16_t>& skirts = assets.terrain_skirts.emplace_back();
+        for (mesh_data& skirt : terrain_tile_skirts(assets.terrain, tiles, 1.0f, stride, depths))
+            skirts.push_back(add(std::move(skirt)));
+    }
+}
+
 }  // namespace
 
 scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scene_needs& needs,
@@ -319,6 +364,7 @@ scene_assets build_scene_assets(const scenario& s, bake_cache* cache, const scen
         assets.library.meshes.push_back({std::uint32_t(tile.triangle_count()), representation::none});
         assets.meshes.push_back(std::move(tile));
     }
+    add_ground_grids(assets, t.tiles_per_side);
     assets.ground_texture = tint(generate_ground_texture(k_texture_size), t.ground_color);
     if (!s.environment.map.empty()) {
         const environment_map map = read_named_file<std::runtime_error>(
@@ -509,7 +555,7 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
         const std::uint32_t tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
         const std::uint32_t cells = assets.terrain.resolution - 1;
         std::vector<std::vector<float>> errors;
-        for (std::uint32_t g = 0; g < shell_grid_count(cells / tiles_per_side); ++g)
+        for (std::uint32_t g = 0; g < ground_grid_count(cells / tiles_per_side); ++g)
             errors.push_back(terrain_tile_errors(assets.terrain, tiles_per_side, 1u << g));
         // The slices rise up to the stack's height and Eq. 2 moves a vertex vertically by at most
         // f times its distance from its triangle's centre on the terrain's own grid, which the
@@ -532,6 +578,22 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
         }
     }
     world.set_resource(std::move(view));
+}
+
+void spawn_ground_tiles(ecs::world& world, const scenario& s, const scene_assets& assets) {
+    world.set_resource(ground_lod{float(s.terrain.max_error_px)});
+    if (assets.terrain_grids.empty()) return;
+    for (std::size_t t = 0; t < assets.terrain_meshes.size(); ++t) {
+        const mesh_data& tile = assets.meshes.at(assets.terrain_meshes[t]);
+        ground_tile entity;
+        const glm::vec3 centre = 0.5f * (tile.bounds_min + tile.bounds_max);
+        entity.centre = s.world_offset + glm::dvec3(centre);
+        entity.radius = glm::length(tile.bounds_max - centre);
+        entity.grids = std::uint8_t(assets.terrain_grids.size());
+        for (std::size_t g = 0; g < assets.terrain_grids.size(); ++g)
+            entity.grid_error_m[g] = assets.terrain_grid_errors[g][t];
+        world.emplace<ground_tile>(world.create(), entity);
+    }
 }
 
 void spawn_lodf_clusters(ecs::world& world, const species_library& library, std::uint32_t slot_count) {
@@ -558,6 +620,7 @@ spawn_report spawn_scenario(ecs::world& world, const scenario& s, const scene_as
     spawn_viewer_and_sky(world, s, assets);
     report.plants = spawn_plants(world, s, assets);
     spawn_shells(world, s, assets);
+    spawn_ground_tiles(world, s, assets);
     report.population = bake_population_ambient(world, assets);
     if (report.population.receivers > 0)
         spdlog::info("population ambient (Luft 2007 §5): {} receivers, {} neighbour pairs, {} darkened "

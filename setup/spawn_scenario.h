@@ -50,6 +50,9 @@ void spawn_lodf_clusters(ecs::world& world, const species_library& library, std:
 // Behrendt 2005 §3: with shell textures, a shell_tile entity per terrain tile and the shell_view
 // resource (inactive without shells). Part of spawn_scenario.
 void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& assets);
+// One ground_tile entity per terrain tile, its grids' errors from scene_assets::terrain_grid_errors
+// (components/ground_tile.h); none when the assets have no grids (scenes built by hand).
+void spawn_ground_tiles(ecs::world& world, const scenario& s, const scene_assets& assets);
 
 // Scenario keyframes with heights above the terrain resolved to absolute world positions.
 std::vector<camera_keyframe> resolve_camera_keys(const scenario& s, const heightfield& terrain);

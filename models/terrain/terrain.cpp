@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "io/input_file.h"
 #include "models/noise.h"
@@ -112,11 +113,22 @@ std::vector<std::uint32_t> grid_samples(std::uint32_t first, std::uint32_t last,
     return samples;
 }
 
+// The grid vertex of sample (column, row): every grid and skirt repeats it bit for bit.
+vertex grid_vertex(const heightfield& field, std::uint32_t column, std::uint32_t row, float uv_per_m) {
+    const double x = column * field.spacing() - 0.5 * field.size_m;
+    const double z = row * field.spacing() - 0.5 * field.size_m;
+    vertex v;
+    v.position = glm::vec3(float(x), field.at(column, row), float(z));
+    v.normal = field.normal_at(x, z);
+    v.uv = glm::vec2(float(x) * uv_per_m, float(z) * uv_per_m);
+    return v;
+}
+
+float uv_per_metre(float uv_scale_m) { return uv_scale_m > 0.0f ? 1.0f / uv_scale_m : 1.0f; }
+
 mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1, std::uint32_t r0,
                     std::uint32_t r1, float uv_scale_m, std::uint32_t stride = 1) {
-    const double spacing = field.spacing();
-    const double half = 0.5 * field.size_m;
-    const float uv_per_m = uv_scale_m > 0.0f ? 1.0f / uv_scale_m : 1.0f;
+    const float uv_per_m = uv_per_metre(uv_scale_m);
     const std::vector<std::uint32_t> column_samples = grid_samples(c0, c1, stride);
     const std::vector<std::uint32_t> row_samples = grid_samples(r0, r1, stride);
     const auto columns = std::uint32_t(column_samples.size());
@@ -127,12 +139,7 @@ mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1
     glm::vec3 hi(std::numeric_limits<float>::lowest());
     for (std::uint32_t row : row_samples) {
         for (std::uint32_t column : column_samples) {
-            const double x = column * spacing - half;
-            const double z = row * spacing - half;
-            vertex v;
-            v.position = glm::vec3(float(x), field.at(column, row), float(z));
-            v.normal = field.normal_at(x, z);
-            v.uv = glm::vec2(float(x) * uv_per_m, float(z) * uv_per_m);
+            const vertex v = grid_vertex(field, column, row, uv_per_m);
             lo = glm::min(lo, v.position);
             hi = glm::max(hi, v.position);
             mesh.vertices.push_back(v);
@@ -150,6 +157,54 @@ mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1
     mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material_kind::ground});
     mesh.bounds_min = lo;
     mesh.bounds_max = hi;
+    return mesh;
+}
+
+// The skirts of the grid over vertex columns [c0, c1] and rows [r0, r1] at `stride`: on each side
+// inside the terrain (not on its border), a vertical strip from the grid's edge samples down by
+// depth_m, both rows of vertices with the edge's normal and uv. Each side is walked so that its
+// triangles (top a, bottom a', top b), (b, a', b') face out of the tile: the face normal
+// (a' - a) x (b - a) = (-depth·dz, 0, depth·dx) for a step (dx, dz) along the edge, so the
+// south side (+z out) runs towards +x, the north (-z) towards -x, the east (+x) towards -z and
+// the west (-x) towards +z.
+mesh_data skirt_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1, std::uint32_t r0,
+                     std::uint32_t r1, float uv_scale_m, std::uint32_t stride, float depth_m) {
+    const float uv_per_m = uv_per_metre(uv_scale_m);
+    const std::uint32_t last = field.resolution - 1;
+    const std::vector<std::uint32_t> columns = grid_samples(c0, c1, stride);
+    const std::vector<std::uint32_t> rows = grid_samples(r0, r1, stride);
+    mesh_data mesh;
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(std::numeric_limits<float>::lowest());
+    auto side = [&](auto sample_count, auto sample_at) {
+        const auto base = std::uint32_t(mesh.vertices.size());
+        for (std::size_t i = 0; i < sample_count; ++i) {
+            const auto [column, row] = sample_at(i);
+            vertex top = grid_vertex(field, column, row, uv_per_m);
+            vertex bottom = top;
+            bottom.position.y -= depth_m;
+            lo = glm::min(lo, bottom.position);
+            hi = glm::max(hi, top.position);
+            mesh.vertices.push_back(top);
+            mesh.vertices.push_back(bottom);
+        }
+        for (std::uint32_t i = 0; i + 1 < std::uint32_t(sample_count); ++i) {
+            const std::uint32_t a = base + 2 * i, b = a + 2;
+            mesh.indices.insert(mesh.indices.end(), {a, a + 1, b, b, a + 1, b + 1});
+        }
+    };
+    if (!(depth_m > 0.0f)) return mesh;  // edges that cannot part need no skirt
+    using sample = std::pair<std::uint32_t, std::uint32_t>;  // (column, row)
+    const std::size_t nc = columns.size(), nr = rows.size();
+    if (r1 < last) side(nc, [&](std::size_t i) { return sample{columns[i], r1}; });           // south
+    if (r0 > 0) side(nc, [&](std::size_t i) { return sample{columns[nc - 1 - i], r0}; });     // north
+    if (c1 < last) side(nr, [&](std::size_t i) { return sample{c1, rows[nr - 1 - i]}; });    // east
+    if (c0 > 0) side(nr, [&](std::size_t i) { return sample{c0, rows[i]}; });                 // west
+    if (!mesh.indices.empty()) {
+        mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material_kind::ground});
+        mesh.bounds_min = lo;
+        mesh.bounds_max = hi;
+    }
     return mesh;
 }
 
@@ -195,6 +250,20 @@ std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32
     for_each_tile("terrain_tile_meshes", field, tiles_per_side, stride,
                   [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
                       meshes.push_back(grid_mesh(field, c0, c1, r0, r1, uv_scale_m, stride));
+                  });
+    return meshes;
+}
+
+std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side, float uv_scale_m,
+                                           std::uint32_t stride, std::span<const float> depth_m) {
+    std::vector<mesh_data> meshes;
+    for_each_tile("terrain_tile_skirts", field, tiles_per_side, stride,
+                  [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
+                      const std::size_t tile = meshes.size();
+                      if (tile >= depth_m.size())
+                          throw std::invalid_argument("terrain_tile_skirts: a depth per tile is needed (" +
+                                                      std::to_string(depth_m.size()) + " given)");
+                      meshes.push_back(skirt_mesh(field, c0, c1, r0, r1, uv_scale_m, stride, depth_m[tile]));
                   });
     return meshes;
 }

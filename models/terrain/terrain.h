@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
+#include <span>
 #include <vector>
 
 #include "models/mesh.h"
@@ -60,6 +61,19 @@ heightfield load_heightmap(const std::filesystem::path& path, double size_m, flo
 // systems/render/passes/shell_pass.h). Throws std::invalid_argument for stride 0.
 std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32_t tiles_per_side,
                                            float uv_scale_m, std::uint32_t stride = 1);
+
+// Skirts for terrain_tile_meshes(field, tiles_per_side, uv_scale_m, stride), by tile: on each
+// side of the tile inside the terrain, a vertical strip hanging depth_m[tile] below the tile's
+// edge at that stride, facing out of the tile, with the edge's normals and uvs (it shows as
+// ground). Where neighbouring tiles are drawn at different strides their edges part at
+// T-junctions; the higher edge's skirt fills the crack when it reaches below the lower edge
+// (the skirts of Ulrich 2002's chunked LOD, cheaper than stitching index buffers per neighbour
+// level; systems/select_ground_grid_system.h chooses the strides). Sides on the terrain's border
+// get none, so a terrain of one tile gets empty meshes, as does a tile whose depth is 0 (a flat
+// terrain, whose edges cannot part). Throws std::invalid_argument for stride
+// 0 or fewer depths than tiles.
+std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side, float uv_scale_m,
+                                           std::uint32_t stride, std::span<const float> depth_m);
 
 // By tile (terrain_tile_meshes order), the largest vertical distance between a height sample
 // and that tile's grid at `stride`: how far the coarse surface strays from the terrain.

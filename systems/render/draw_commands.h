@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lighting/shadow_cascades.h"
+#include "lod/ground_grid.h"
 #include "models/mesh.h"
 #include "resources/draw_list.h"
 #include "resources/scene_assets.h"
@@ -42,11 +43,17 @@ constexpr std::size_t group_of(material_kind m, primitive_kind p,
            std::size_t(m);
 }
 
-// A tile of the terrain mesh, drawn where its bounding sphere meets the view or a cascade.
+// A tile of the terrain mesh, drawn where its bounding sphere meets the view or a cascade, on
+// the grid its ground_tile entity chose this frame (components/ground_tile.h; grid 0 without
+// one), with its skirts on that grid where a neighbour's grid differs.
 struct terrain_tile {
-    std::uint16_t mesh = 0;
+    std::uint16_t mesh = 0;  // grid 0
     glm::vec3 center{0.0f};  // terrain-local
     float radius = 0.0f;
+    std::array<std::uint16_t, k_max_ground_grids> grids{};   // by grid; grids[0] == mesh
+    std::array<std::uint16_t, k_max_ground_grids> skirts{};  // by grid; scene_assets::k_no_skirt: none
+    std::uint8_t grid_count = 1;
+    std::array<std::int32_t, 4> neighbours{-1, -1, -1, -1};  // tile indices sharing an edge; -1: none
 };
 
 class draw_commands {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <numbers>
@@ -32,10 +33,28 @@ void setup_instance_attributes(GLuint vao) {
 
 std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
     std::vector<terrain_tile> tiles;
-    for (std::uint16_t id : assets.terrain_meshes) {
-        const mesh_data& tile = assets.meshes.at(id);
-        const glm::vec3 center = 0.5f * (tile.bounds_min + tile.bounds_max);
-        tiles.push_back({id, center, glm::length(tile.bounds_max - center)});
+    const std::size_t count = assets.terrain_meshes.size();
+    const auto side = std::int32_t(std::lround(std::sqrt(double(count))));
+    for (std::size_t t = 0; t < count; ++t) {
+        const mesh_data& mesh = assets.meshes.at(assets.terrain_meshes[t]);
+        terrain_tile tile;
+        tile.mesh = assets.terrain_meshes[t];
+        tile.center = 0.5f * (mesh.bounds_min + mesh.bounds_max);
+        tile.radius = glm::length(mesh.bounds_max - tile.center);
+        tile.grids[0] = tile.mesh;
+        tile.skirts.fill(scene_assets::k_no_skirt);
+        tile.grid_count = std::uint8_t(std::max<std::size_t>(1, assets.terrain_grids.size()));
+        for (std::size_t g = 0; g < assets.terrain_grids.size(); ++g) {
+            tile.grids[g] = assets.terrain_grids[g].at(t);
+            tile.skirts[g] = assets.terrain_skirts[g].at(t);
+        }
+        // The tiles lie row-major (models/terrain/terrain.h terrain_tile_meshes).
+        if (side * side == std::int32_t(count)) {
+            const auto x = std::int32_t(t) % side, z = std::int32_t(t) / side;
+            tile.neighbours = {x > 0 ? std::int32_t(t) - 1 : -1, x + 1 < side ? std::int32_t(t) + 1 : -1,
+                               z > 0 ? std::int32_t(t) - side : -1, z + 1 < side ? std::int32_t(t) + side : -1};
+        }
+        tiles.push_back(tile);
     }
     return tiles;
 }

@@ -13,6 +13,7 @@
 
 #include "components/camera.h"
 #include "components/environment.h"
+#include "components/ground_tile.h"
 #include "components/shell_tile.h"
 #include "components/sun.h"
 #include "lighting/shadow_cascades.h"
@@ -103,6 +104,10 @@ struct frame_view {
     const shell_view* shells = nullptr;
     const shell_tile* shell_tiles = nullptr;
     std::size_t shell_tile_count = 0;
+    // The ground tiles' grids this frame (components/ground_tile.h), in terrain tile order; none:
+    // every tile on its finest grid.
+    const ground_tile* ground_tiles = nullptr;
+    std::size_t ground_tile_count = 0;
 
     // Sets the point/line fields above from what the viewer asks; view_camera must be set.
     void set_samples(const point_line_quality& quality);

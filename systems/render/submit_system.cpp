@@ -28,6 +28,10 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
         view.shell_tiles = ctx.read<shell_tile>().data();
         view.shell_tile_count = ctx.read<shell_tile>().size();
     }
+    if (const auto& ground = ctx.read<ground_tile>(); ground.size() > 0) {
+        view.ground_tiles = ground.data();
+        view.ground_tile_count = ground.size();
+    }
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

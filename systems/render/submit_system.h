@@ -6,6 +6,7 @@
 #include "components/camera.h"
 #include "components/cluster_changes.h"
 #include "components/environment.h"
+#include "components/ground_tile.h"
 #include "components/sun.h"
 #include "ecs/system.h"
 #include "resources/draw_list.h"
@@ -30,7 +31,7 @@ struct submit_system {
     static constexpr ecs::phase k_phase = ecs::phase::submit;
     static constexpr bool k_main_thread = true;
     using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy, lodf_slots,
-                             cluster_changes, species_library, shell_view, shell_tile>;
+                             cluster_changes, species_library, shell_view, shell_tile, ground_tile>;
     using writes = ecs::writes<render_device, frame_stats, seen_pixels>;
     static void run(ecs::system_context<submit_system>& ctx);
 };

@@ -32,7 +32,8 @@ constexpr std::size_t k_min_chunks = 3;
 
 // The scene: 120 plants in about 20 eco tiles of at most 8, spruces split into octree cells
 // (Deussen 2002 §6.1), a 40 m shadow distance so that far tiles can be drawn as their point
-// sets (§6.2), and a camera in a corner looking across the terrain.
+// sets (§6.2), a camera in a corner looking across the terrain, and the ground in 8 x 8 tiles
+// (their grids chosen in chunks too).
 scenario chunk_scene() {
     return load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) /
                               "tests/determinism/data/chunk_boundaries.json");

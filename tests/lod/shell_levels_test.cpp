@@ -66,15 +66,5 @@ TEST(shell_levels, a_pyramid_halves_its_slices_level_by_level) {
     EXPECT_EQ(shell_pyramid_levels(1), 1u);
 }
 
-// A tile's slice grids: strides 1, 2, 4, ... up to the first that leaves one cell (32 cells:
-// 1 .. 32, six grids; 4 cells: 1, 2, 4; one cell: the terrain's own), at most eight.
-TEST(shell_levels, a_tile_has_a_grid_per_stride_down_to_one_cell) {
-    EXPECT_EQ(shell_grid_count(32), 6u);
-    EXPECT_EQ(shell_grid_count(4), 3u);
-    EXPECT_EQ(shell_grid_count(5), 4u);  // 1, 2, 4, 8: stride 8 leaves one (short) cell
-    EXPECT_EQ(shell_grid_count(1), 1u);
-    EXPECT_EQ(shell_grid_count(100000), k_shell_grid_strides);
-}
-
 }  // namespace
 }  // namespace sylva

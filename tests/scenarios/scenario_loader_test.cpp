@@ -385,7 +385,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
     const std::pair<std::string, std::string> cases[] = {
         {"/terrain/size",
          "size_m, resolution, height_m, octaves, frequency, seed, ground_color, heightmap, "
-         "tiles_per_side"},
+         "tiles_per_side, max_error_px"},
         {"/species/0/heigth_m",
          "name, generator, model, height_m, reduced_distance_m, far_distance_m, max_distance_m, "
          "importance, octree_depth, lighting, implicit, ladder"},
@@ -419,7 +419,7 @@ TEST(scenario_loader, unknown_field_path_escapes_slash_and_tilde) {
     j["terrain"]["a/b~c"] = 1;
     expect_error(j, {"/terrain/a~1b~0c",
                      "unknown field; expected one of: size_m, resolution, height_m, octaves, "
-                     "frequency, seed, ground_color, heightmap, tiles_per_side",
+                     "frequency, seed, ground_color, heightmap, tiles_per_side, max_error_px",
                      "1"});
 }
 

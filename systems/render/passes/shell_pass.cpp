@@ -150,7 +150,7 @@ shell_pass::shell_pass(const scene_assets& assets) {
     std::vector<shell_vertex> vertices;
     const auto tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
     const std::uint32_t ground_cells = assets.terrain.resolution - 1;
-    const std::size_t grids = shell_grid_count(ground_cells / std::max(tiles_per_side, 1u));
+    const std::size_t grids = ground_grid_count(ground_cells / std::max(tiles_per_side, 1u));
     m_tile_ranges.assign(assets.terrain_meshes.size(), {});
     for (std::size_t g = 0; g < grids; ++g) {
         // Grid 0 is the terrain's own tiles, already in the assets.

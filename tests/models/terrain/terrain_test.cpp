@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
@@ -267,6 +268,55 @@ TEST(terrain_tiles, coarser_grids_keep_every_stride_th_sample_and_say_how_far_th
     for (float e : quarters) EXPECT_FLOAT_EQ(e, 1.5f);
     EXPECT_THROW(terrain_tile_meshes(f, 1, 1.0f, 0), std::invalid_argument);
     EXPECT_THROW(terrain_tile_errors(f, 1, 0), std::invalid_argument);
+}
+
+// Skirts (terrain_tile_skirts): a 5 x 5 field in 2 x 2 tiles of 2 cells. Tile 0 (the -x, -z
+// corner) has two sides inside the terrain, east and south: 2 sides x 3 samples x 2 vertices, 2
+// sides x 2 segments x 2 triangles. Its top vertices are the grid's own, bit for bit; its bottom
+// ones hang the tile's depth below them; every triangle faces out of the tile (GL's
+// counter-clockwise front faces, the ground's back faces culled). Tile 3 has west and north.
+TEST(terrain_tiles, skirts_hang_from_the_inner_edges_and_face_out_of_their_tile) {
+    const heightfield f = generate_terrain(4.0, 5, 3.0f, 3, 0.3f, 5);
+    const std::vector<float> depth{2.0f, 1.0f, 1.0f, 0.5f};
+    const std::vector<mesh_data> skirts = terrain_tile_skirts(f, 2, 1.0f, 1, depth);
+    const std::vector<mesh_data> tiles = terrain_tile_meshes(f, 2, 1.0f, 1);
+    ASSERT_EQ(skirts.size(), 4u);
+    for (std::size_t t = 0; t < 4; ++t) {
+        SCOPED_TRACE(t);
+        const mesh_data& skirt = skirts[t];
+        ASSERT_EQ(skirt.vertices.size(), 12u);
+        ASSERT_EQ(skirt.triangle_count(), 8u);
+        ASSERT_EQ(skirt.submeshes.size(), 1u);
+        EXPECT_EQ(skirt.submeshes[0].material, material_kind::ground);
+        const glm::vec3 centre = 0.5f * (tiles[t].bounds_min + tiles[t].bounds_max);
+        for (std::size_t i = 0; i < skirt.vertices.size(); i += 2) {
+            const vertex& top = skirt.vertices[i];
+            const vertex& bottom = skirt.vertices[i + 1];
+            const auto same = std::find_if(tiles[t].vertices.begin(), tiles[t].vertices.end(), [&](const vertex& v) {
+                return v.position == top.position && v.normal == top.normal && v.uv == top.uv;
+            });
+            EXPECT_NE(same, tiles[t].vertices.end());
+            EXPECT_NEAR(top.position.y - bottom.position.y, depth[t], 1e-5f);
+            EXPECT_EQ(glm::vec2(top.position.x, top.position.z), glm::vec2(bottom.position.x, bottom.position.z));
+            EXPECT_EQ(top.normal, bottom.normal);
+            // On an inner edge of the tile (x or z = 0), never on the terrain's border (+-2).
+            EXPECT_TRUE(top.position.x == 0.0f || top.position.z == 0.0f);
+        }
+        for (std::size_t k = 0; k < skirt.indices.size(); k += 3) {
+            const glm::vec3 a = skirt.vertices[skirt.indices[k]].position;
+            const glm::vec3 b = skirt.vertices[skirt.indices[k + 1]].position;
+            const glm::vec3 c = skirt.vertices[skirt.indices[k + 2]].position;
+            const glm::vec3 facing = glm::cross(b - a, c - a);
+            const glm::vec3 outward = (a + b + c) / 3.0f - centre;
+            EXPECT_GT(facing.x * outward.x + facing.z * outward.z, 0.0f);
+            EXPECT_FLOAT_EQ(facing.y, 0.0f);
+        }
+    }
+    // No depth, or one tile: no side can part, no skirt.
+    EXPECT_TRUE(terrain_tile_skirts(f, 2, 1.0f, 1, std::vector<float>(4, 0.0f))[0].indices.empty());
+    EXPECT_TRUE(terrain_tile_skirts(f, 1, 1.0f, 1, std::vector<float>{1.0f})[0].indices.empty());
+    EXPECT_THROW(terrain_tile_skirts(f, 2, 1.0f, 1, std::vector<float>{1.0f}), std::invalid_argument);
+    EXPECT_THROW(terrain_tile_skirts(f, 2, 1.0f, 0, depth), std::invalid_argument);
 }
 
 }  // namespace
