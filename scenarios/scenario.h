@@ -57,8 +57,8 @@
 //     implicit           object     {}           Luft 2007, with lighting "implicit": {
 //       generator_fraction number   0.25         0.001 .. 1; the foliage triangles that are
 //                                                generators (§3.1)
-//       rho_m            number     0            0 .. 1000; ρ (Eq. 2); 0: 0.2 x the foliage's radius
-//       tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
+//       rho_m            number     0            0 .. 1000; ρ (Eq. 2); 0: 0.2 x the foliage's
+//       radius tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
 //                                                foliage's own median density
 //       ka_min           number     0.3          0 .. 1; k_a,min (Eq. 4)
 //       d_min            number     0            0 .. 1000; d_min (Eq. 4); 0: the foliage's
@@ -273,7 +273,8 @@ struct terrain_settings {
     glm::vec3 ground_color{0.32f, 0.30f, 0.18f};
     std::string heightmap;  // absolute path, empty: noise terrain
     std::uint32_t tiles_per_side = 1;
-    float max_error_px = 0.5f;  // components/ground_tile.h; resources/ground_lod.h k_ground_error_px
+    float max_error_px =
+        0.5f;  // components/ground_tile.h; resources/ground_lod.h k_ground_error_px
     bool operator==(const terrain_settings&) const = default;
 };
 

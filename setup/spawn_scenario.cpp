@@ -5,52 +5,52 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <nlohmann/json.hpp>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 #include <string>
 
 #include "components/bounds.h"
 #include "components/camera.h"
+#include "components/cluster_changes.h"
 #include "components/environment.h"
 #include "components/fade_alpha.h"
-#include "components/lod_state.h"
-#include "components/cluster_changes.h"
-#include "components/shell_tile.h"
 #include "components/ground_tile.h"
+#include "components/lod_state.h"
 #include "components/octree_cell.h"
 #include "components/plant_instance.h"
 #include "components/point_prefix.h"
+#include "components/shell_tile.h"
 #include "components/sun.h"
 #include "components/transform.h"
 #include "io/input_file.h"
-#include "models/bake/lodf_leaves.h"
-#include "models/terrain/density.h"
-#include "models/image/image_ops.h"
-#include "models/terrain/placement.h"
-#include "models/random.h"
-#include "models/generate/textures.h"
-#include "resources/lodf_slots.h"
-#include "resources/ground_lod.h"
-#include "resources/shell_view.h"
-#include "resources/draw_list.h"
+#include "lighting/environment_map.h"
+#include "lighting/shadow_cascades.h"
+#include "lighting/transfer_rotation.h"
 #include "lod/eco_tiles.h"
 #include "lod/ground_grid.h"
 #include "lod/shell_levels.h"
 #include "lod/shell_slanting.h"
+#include "models/bake/lodf_leaves.h"
+#include "models/generate/textures.h"
+#include "models/image/image_ops.h"
+#include "models/random.h"
+#include "models/terrain/density.h"
+#include "models/terrain/placement.h"
 #include "models/terrain/terrain.h"
+#include "resources/draw_list.h"
 #include "resources/frame_stats.h"
-#include "lighting/environment_map.h"
-#include "lighting/shadow_cascades.h"
-#include "lighting/transfer_rotation.h"
+#include "resources/ground_lod.h"
+#include "resources/lodf_slots.h"
 #include "resources/playback.h"
-#include "setup/point_line_assets.h"
 #include "resources/shadow_receivers.h"
+#include "resources/shell_view.h"
 #include "scenarios/scenario_loader.h"
 #include "scenarios/species_lookup.h"
-#include "setup/species_models.h"
+#include "setup/point_line_assets.h"
 #include "setup/shell_assets.h"
+#include "setup/species_models.h"
 #include "setup/wang_populations.h"
 
 namespace sylva {
@@ -310,22 +310,26 @@ void add_species(scene_assets& assets, const scenario& s, std::size_t index, bak
 // every distance).
 void add_ground_grids(scene_assets& assets, std::uint32_t tiles_per_side) {
     const std::uint32_t cells = assets.terrain.resolution - 1;
-    const std::uint32_t tiles = std::clamp(tiles_per_side, 1u, cells);  // as terrain_tile_meshes clamps
+    const std::uint32_t tiles =
+        std::clamp(tiles_per_side, 1u, cells);  // as terrain_tile_meshes clamps
     const std::size_t grids = ground_grid_count(cells / tiles);
     const std::size_t count = assets.terrain_meshes.size();
     if (assets.meshes.size() + (2 * grids - 1) * count >= assets.k_no_skirt) {
-        spdlog::warn("terrain: {} tiles on {} grids need more meshes than 16-bit ids hold; the ground keeps "
-                     "its finest grid at every distance",
-                     count, grids);
+        spdlog::warn(
+            "terrain: {} tiles on {} grids need more meshes than 16-bit ids hold; the ground keeps "
+            "its finest grid at every distance",
+            count, grids);
         return;
     }
     for (std::size_t g = 0; g < grids; ++g)
-        assets.terrain_grid_errors.push_back(g == 0 ? std::vector<float>(count, 0.0f)
-                                                    : terrain_tile_errors(assets.terrain, tiles, 1u << g));
+        assets.terrain_grid_errors.push_back(
+            g == 0 ? std::vector<float>(count, 0.0f)
+                   : terrain_tile_errors(assets.terrain, tiles, 1u << g));
     auto add = [&](mesh_data&& mesh) {
         if (mesh.indices.empty()) return scene_assets::k_no_skirt;
         const auto id = std::uint16_t(assets.meshes.size());
-        assets.library.meshes.push_back({std::uint32_t(mesh.triangle_count()), representation::none});
+        assets.library.meshes.push_back(
+            {std::uint32_t(mesh.triangle_count()), representation::none});
         assets.meshes.push_back(std::move(mesh));
         return id;
     };
@@ -338,8 +342,8 @@ void add_ground_grids(scene_assets& assets, std::uint32_t tiles_per_side) {
             for (mesh_data& tile : terrain_tile_meshes(assets.terrain, tiles, 1.0f, stride))
                 ids.push_back(add(std::move(tile)));
         }
-        const std::vector<float> depths =
-            ground_skirt_depths(assets.terrain_grid_errors[g], assets.terrain_grid_errors.back(), tiles);
+        const std::vector<float> depths = ground_skirt_depths(
+            assets.terrain_grid_errors[g], assets.terrain_grid_errors.back(), tiles);
         std::vector<std::uint16_t>& skirts = assets.terrain_skirts.emplace_back();
         for (mesh_data& skirt : terrain_tile_skirts(assets.terrain, tiles, 1.0f, stride, depths))
             skirts.push_back(add(std::move(skirt)));

@@ -23,8 +23,9 @@ void select_ground_grid_system::run(ecs::system_context<select_ground_grid_syste
             }
             const float nearest =
                 std::max(float(glm::length(data[i].centre - cam.position)) - data[i].radius, 1e-3f);
-            data[i].grid = coarsest_ground_grid(std::span(data[i].grid_error_m).first(data[i].grids), nearest,
-                                                cam.pixels_per_radian, tolerance_px);
+            data[i].grid =
+                coarsest_ground_grid(std::span(data[i].grid_error_m).first(data[i].grids), nearest,
+                                     cam.pixels_per_radian, tolerance_px);
         }
     });
 }

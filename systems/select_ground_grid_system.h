@@ -1,8 +1,8 @@
 #pragma once
 // Every ground tile's grid this frame (lod/ground_grid.h): the coarsest whose vertical error,
 // seen from the camera at the tile's nearest point, shows as at most ground_lod::max_error_px,
-// tiles in parallel; grid 0 everywhere for full-geometry cameras (the bench's reference). Nothing when
-// the scene spawned no ground tiles (scenes built by hand draw the terrain's own tiles).
+// tiles in parallel; grid 0 everywhere for full-geometry cameras (the bench's reference). Nothing
+// when the scene spawned no ground tiles (scenes built by hand draw the terrain's own tiles).
 #include "components/camera.h"
 #include "components/ground_tile.h"
 #include "ecs/system.h"

@@ -54,8 +54,9 @@ void update_shells_system::run(ecs::system_context<update_shells_system>& ctx) {
             data[i].visible = sphere_in_frustum(frustum, glm::vec3(glm::dvec3(data[i].centre) + to_camera_relative),
                                                 data[i].radius);
             const float nearest = std::max(glm::length(data[i].centre - eye) - data[i].radius, 1e-3f);
-            data[i].grid = coarsest_ground_grid(std::span(data[i].grid_error_m).first(data[i].grids), nearest,
-                                                pixels_per_radian, k_shell_ground_error_px);
+            data[i].grid =
+                coarsest_ground_grid(std::span(data[i].grid_error_m).first(data[i].grids), nearest,
+                                     pixels_per_radian, k_shell_ground_error_px);
             data[i].level = shell_level_at(nearest, view.slice_height_m, pixels_per_radian, k_shell_min_spacing_px,
                                            view.max_level, k_shell_merge_band);
         }

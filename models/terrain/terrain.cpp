@@ -114,7 +114,8 @@ std::vector<std::uint32_t> grid_samples(std::uint32_t first, std::uint32_t last,
 }
 
 // The grid vertex of sample (column, row): every grid and skirt repeats it bit for bit.
-vertex grid_vertex(const heightfield& field, std::uint32_t column, std::uint32_t row, float uv_per_m) {
+vertex grid_vertex(const heightfield& field, std::uint32_t column, std::uint32_t row,
+                   float uv_per_m) {
     const double x = column * field.spacing() - 0.5 * field.size_m;
     const double z = row * field.spacing() - 0.5 * field.size_m;
     vertex v;
@@ -124,7 +125,9 @@ vertex grid_vertex(const heightfield& field, std::uint32_t column, std::uint32_t
     return v;
 }
 
-float uv_per_metre(float uv_scale_m) { return uv_scale_m > 0.0f ? 1.0f / uv_scale_m : 1.0f; }
+float uv_per_metre(float uv_scale_m) {
+    return uv_scale_m > 0.0f ? 1.0f / uv_scale_m : 1.0f;
+}
 
 mesh_data grid_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c1, std::uint32_t r0,
                     std::uint32_t r1, float uv_scale_m, std::uint32_t stride = 1) {
@@ -193,13 +196,14 @@ mesh_data skirt_mesh(const heightfield& field, std::uint32_t c0, std::uint32_t c
             mesh.indices.insert(mesh.indices.end(), {a, a + 1, b, b, a + 1, b + 1});
         }
     };
-    if (!(depth_m > 0.0f)) return mesh;  // edges that cannot part need no skirt
+    // Edges that cannot part need no skirt.
+    if (!(depth_m > 0.0f)) return mesh;
     using sample = std::pair<std::uint32_t, std::uint32_t>;  // (column, row)
     const std::size_t nc = columns.size(), nr = rows.size();
-    if (r1 < last) side(nc, [&](std::size_t i) { return sample{columns[i], r1}; });           // south
-    if (r0 > 0) side(nc, [&](std::size_t i) { return sample{columns[nc - 1 - i], r0}; });     // north
-    if (c1 < last) side(nr, [&](std::size_t i) { return sample{c1, rows[nr - 1 - i]}; });    // east
-    if (c0 > 0) side(nr, [&](std::size_t i) { return sample{c0, rows[i]}; });                 // west
+    if (r1 < last) side(nc, [&](std::size_t i) { return sample{columns[i], r1}; });        // south
+    if (r0 > 0) side(nc, [&](std::size_t i) { return sample{columns[nc - 1 - i], r0}; });  // north
+    if (c1 < last) side(nr, [&](std::size_t i) { return sample{c1, rows[nr - 1 - i]}; });  // east
+    if (c0 > 0) side(nr, [&](std::size_t i) { return sample{c0, rows[i]}; });              // west
     if (!mesh.indices.empty()) {
         mesh.submeshes.push_back({0, std::uint32_t(mesh.indices.size()), material_kind::ground});
         mesh.bounds_min = lo;
@@ -254,17 +258,19 @@ std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32
     return meshes;
 }
 
-std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side, float uv_scale_m,
-                                           std::uint32_t stride, std::span<const float> depth_m) {
+std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side,
+                                           float uv_scale_m, std::uint32_t stride,
+                                           std::span<const float> depth_m) {
     std::vector<mesh_data> meshes;
-    for_each_tile("terrain_tile_skirts", field, tiles_per_side, stride,
-                  [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
-                      const std::size_t tile = meshes.size();
-                      if (tile >= depth_m.size())
-                          throw std::invalid_argument("terrain_tile_skirts: a depth per tile is needed (" +
-                                                      std::to_string(depth_m.size()) + " given)");
-                      meshes.push_back(skirt_mesh(field, c0, c1, r0, r1, uv_scale_m, stride, depth_m[tile]));
-                  });
+    for_each_tile(
+        "terrain_tile_skirts", field, tiles_per_side, stride,
+        [&](std::uint32_t c0, std::uint32_t c1, std::uint32_t r0, std::uint32_t r1) {
+            const std::size_t tile = meshes.size();
+            if (tile >= depth_m.size())
+                throw std::invalid_argument("terrain_tile_skirts: a depth per tile is needed (" +
+                                            std::to_string(depth_m.size()) + " given)");
+            meshes.push_back(skirt_mesh(field, c0, c1, r0, r1, uv_scale_m, stride, depth_m[tile]));
+        });
     return meshes;
 }
 

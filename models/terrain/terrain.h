@@ -72,8 +72,9 @@ std::vector<mesh_data> terrain_tile_meshes(const heightfield& field, std::uint32
 // get none, so a terrain of one tile gets empty meshes, as does a tile whose depth is 0 (a flat
 // terrain, whose edges cannot part). Throws std::invalid_argument for stride
 // 0 or fewer depths than tiles.
-std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side, float uv_scale_m,
-                                           std::uint32_t stride, std::span<const float> depth_m);
+std::vector<mesh_data> terrain_tile_skirts(const heightfield& field, std::uint32_t tiles_per_side,
+                                           float uv_scale_m, std::uint32_t stride,
+                                           std::span<const float> depth_m);
 
 // By tile (terrain_tile_meshes order), the largest vertical distance between a height sample
 // and that tile's grid at `stride`: how far the coarse surface strays from the terrain.

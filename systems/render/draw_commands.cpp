@@ -66,7 +66,8 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
         // Skirts where an edge parts from a neighbour's on another grid (terrain_tile_skirts).
         bool skirted = false;
         if (tile.skirts[grid] != scene_assets::k_no_skirt)
-            for (std::int32_t n : tile.neighbours) skirted = skirted || (n >= 0 && grid_of(std::size_t(n)) != grid);
+            for (std::int32_t n : tile.neighbours)
+                skirted = skirted || (n >= 0 && grid_of(std::size_t(n)) != grid);
         const glm::vec3 center = view.terrain_position + tile.center;
         auto draw = [&](render_pass pass) {
             add(pass, meshes.get(tile.grids[grid]), terrain_instance, 1);
@@ -74,7 +75,8 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
         };
         if (sphere_in_frustum(frustum, center, tile.radius)) draw(render_pass::opaque);
         for (int c = 0; c < cascade_count; ++c)
-            if (sphere_overlaps_cascade(cascades[std::size_t(c)], center, tile.radius)) draw(shadow_pass(c));
+            if (sphere_overlaps_cascade(cascades[std::size_t(c)], center, tile.radius))
+                draw(shadow_pass(c));
     }
 }
 

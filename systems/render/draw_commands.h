@@ -50,10 +50,12 @@ struct terrain_tile {
     std::uint16_t mesh = 0;  // grid 0
     glm::vec3 center{0.0f};  // terrain-local
     float radius = 0.0f;
-    std::array<std::uint16_t, k_max_ground_grids> grids{};   // by grid; grids[0] == mesh
-    std::array<std::uint16_t, k_max_ground_grids> skirts{};  // by grid; scene_assets::k_no_skirt: none
+    std::array<std::uint16_t, k_max_ground_grids> grids{};  // by grid; grids[0] == mesh
+    std::array<std::uint16_t, k_max_ground_grids>
+        skirts{};  // by grid; scene_assets::k_no_skirt: none
     std::uint8_t grid_count = 1;
-    std::array<std::int32_t, 4> neighbours{-1, -1, -1, -1};  // tile indices sharing an edge; -1: none
+    std::array<std::int32_t, 4> neighbours{-1, -1, -1,
+                                           -1};  // tile indices sharing an edge; -1: none
 };
 
 class draw_commands {

@@ -51,8 +51,9 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
         // The tiles lie row-major (models/terrain/terrain.h terrain_tile_meshes).
         if (side * side == std::int32_t(count)) {
             const auto x = std::int32_t(t) % side, z = std::int32_t(t) / side;
-            tile.neighbours = {x > 0 ? std::int32_t(t) - 1 : -1, x + 1 < side ? std::int32_t(t) + 1 : -1,
-                               z > 0 ? std::int32_t(t) - side : -1, z + 1 < side ? std::int32_t(t) + side : -1};
+            tile.neighbours = {
+                x > 0 ? std::int32_t(t) - 1 : -1, x + 1 < side ? std::int32_t(t) + 1 : -1,
+                z > 0 ? std::int32_t(t) - side : -1, z + 1 < side ? std::int32_t(t) + side : -1};
         }
         tiles.push_back(tile);
     }

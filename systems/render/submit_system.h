@@ -9,9 +9,9 @@
 #include "components/ground_tile.h"
 #include "components/sun.h"
 #include "ecs/system.h"
+#include "lighting/shadow_cascades.h"
 #include "resources/draw_list.h"
 #include "resources/frame_stats.h"
-#include "lighting/shadow_cascades.h"
 #include "resources/lod_policy.h"
 #include "resources/lodf_slots.h"
 #include "resources/playback.h"
@@ -30,8 +30,9 @@ struct submit_system {
     static constexpr std::string_view k_name = "submit";
     static constexpr ecs::phase k_phase = ecs::phase::submit;
     static constexpr bool k_main_thread = true;
-    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock, lod_policy, lodf_slots,
-                             cluster_changes, species_library, shell_view, shell_tile, ground_tile>;
+    using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock,
+                             lod_policy, lodf_slots, cluster_changes, species_library, shell_view,
+                             shell_tile, ground_tile>;
     using writes = ecs::writes<render_device, frame_stats, seen_pixels>;
     static void run(ecs::system_context<submit_system>& ctx);
 };

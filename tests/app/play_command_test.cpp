@@ -122,7 +122,9 @@ TEST(play_command, every_shipped_scenario_plays) {
         // Its plants drawn, on whatever rung (single_tree's auto ladder draws its oak as points
         // in this small frame).
         const auto& frame = metrics["frames"][0];
-        EXPECT_GT(frame["triangles"].get<double>() + frame["points"].get<double>() + frame["lines"].get<double>(), 0.0)
+        EXPECT_GT(frame["triangles"].get<double>() + frame["points"].get<double>() +
+                      frame["lines"].get<double>(),
+                  0.0)
             << name;
         fs::remove_all(out);
     }

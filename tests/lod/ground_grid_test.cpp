@@ -51,8 +51,10 @@ TEST(ground_grid, the_walk_stops_at_the_first_grid_that_shows) {
 TEST(ground_grid, a_skirt_hangs_its_own_error_and_its_neighbours_largest_coarsest_error) {
     const std::vector<float> coarsest{1.0f, 2.0f, 3.0f, 4.0f};
     const std::vector<float> errors{0.5f, 0.0f, 0.25f, 1.0f};
-    EXPECT_EQ(ground_skirt_depths(errors, coarsest, 2), (std::vector<float>{3.5f, 4.0f, 4.25f, 4.0f}));
-    EXPECT_EQ(ground_skirt_depths(std::vector<float>{0.5f}, std::vector<float>{1.0f}, 1), std::vector<float>{0.5f});
+    EXPECT_EQ(ground_skirt_depths(errors, coarsest, 2),
+              (std::vector<float>{3.5f, 4.0f, 4.25f, 4.0f}));
+    EXPECT_EQ(ground_skirt_depths(std::vector<float>{0.5f}, std::vector<float>{1.0f}, 1),
+              std::vector<float>{0.5f});
     EXPECT_THROW(ground_skirt_depths(errors, coarsest, 3), std::invalid_argument);
 }
 
@@ -64,7 +66,8 @@ TEST(ground_grid, the_higher_edges_skirt_reaches_the_lower_edge_on_every_pair_of
     const std::uint32_t tiles = 2, cells = 16;
     const std::size_t grids = ground_grid_count(cells);
     std::vector<std::vector<float>> errors;
-    for (std::size_t g = 0; g < grids; ++g) errors.push_back(terrain_tile_errors(f, tiles, 1u << g));
+    for (std::size_t g = 0; g < grids; ++g)
+        errors.push_back(terrain_tile_errors(f, tiles, 1u << g));
     ASSERT_GT(errors.back()[0], 1.0f);  // rough enough for the edges to part
     // The edge between tile 0 (columns 0..16) and tile 1 (16..32) along rows 0..16, on a grid.
     auto edge_height = [&](std::uint32_t stride, std::uint32_t row) {

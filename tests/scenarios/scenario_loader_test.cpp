@@ -405,7 +405,8 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "representation, sample_distance_px, splat_factor, splats, fog_weighted_samples, "
          "primitive_budget, "
          "target_frame_ms, "
-         "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder, plant_budget_ms, max_error, lodf_slots"},
+         "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder, plant_budget_ms, "
+         "max_error, lodf_slots"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);

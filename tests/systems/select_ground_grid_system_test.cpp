@@ -54,7 +54,8 @@ TEST(select_ground_grid, each_tile_takes_the_coarsest_grid_under_the_tolerance) 
     EXPECT_EQ(ground_scene(0.5f).grids(4), (std::array<int, 3>{1, 2, 1}));
     EXPECT_EQ(ground_scene(2.0f).grids(2), (std::array<int, 3>{2, 3, 2}));
     EXPECT_EQ(ground_scene(0.0f).grids(2), (std::array<int, 3>{0, 0, 0}));
-    EXPECT_EQ(ground_scene(64.0f, true).grids(2), (std::array<int, 3>{0, 0, 0})) << "the reference's camera";
+    EXPECT_EQ(ground_scene(64.0f, true).grids(2), (std::array<int, 3>{0, 0, 0}))
+        << "the reference's camera";
 }
 
 }  // namespace

@@ -292,12 +292,14 @@ TEST(terrain_tiles, skirts_hang_from_the_inner_edges_and_face_out_of_their_tile)
         for (std::size_t i = 0; i < skirt.vertices.size(); i += 2) {
             const vertex& top = skirt.vertices[i];
             const vertex& bottom = skirt.vertices[i + 1];
-            const auto same = std::find_if(tiles[t].vertices.begin(), tiles[t].vertices.end(), [&](const vertex& v) {
-                return v.position == top.position && v.normal == top.normal && v.uv == top.uv;
-            });
+            const auto same = std::find_if(
+                tiles[t].vertices.begin(), tiles[t].vertices.end(), [&](const vertex& v) {
+                    return v.position == top.position && v.normal == top.normal && v.uv == top.uv;
+                });
             EXPECT_NE(same, tiles[t].vertices.end());
             EXPECT_NEAR(top.position.y - bottom.position.y, depth[t], 1e-5f);
-            EXPECT_EQ(glm::vec2(top.position.x, top.position.z), glm::vec2(bottom.position.x, bottom.position.z));
+            EXPECT_EQ(glm::vec2(top.position.x, top.position.z),
+                      glm::vec2(bottom.position.x, bottom.position.z));
             EXPECT_EQ(top.normal, bottom.normal);
             // On an inner edge of the tile (x or z = 0), never on the terrain's border (+-2).
             EXPECT_TRUE(top.position.x == 0.0f || top.position.z == 0.0f);
@@ -315,7 +317,8 @@ TEST(terrain_tiles, skirts_hang_from_the_inner_edges_and_face_out_of_their_tile)
     // No depth, or one tile: no side can part, no skirt.
     EXPECT_TRUE(terrain_tile_skirts(f, 2, 1.0f, 1, std::vector<float>(4, 0.0f))[0].indices.empty());
     EXPECT_TRUE(terrain_tile_skirts(f, 1, 1.0f, 1, std::vector<float>{1.0f})[0].indices.empty());
-    EXPECT_THROW(terrain_tile_skirts(f, 2, 1.0f, 1, std::vector<float>{1.0f}), std::invalid_argument);
+    EXPECT_THROW(terrain_tile_skirts(f, 2, 1.0f, 1, std::vector<float>{1.0f}),
+                 std::invalid_argument);
     EXPECT_THROW(terrain_tile_skirts(f, 2, 1.0f, 0, depth), std::invalid_argument);
 }
 
