@@ -554,13 +554,9 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
                     break;
                 }
         const float stack_m = view.slice_height_m * float(assets.shells.tiles.front().colour.size());
-        // The slices' grids (components/shell_tile.h): strides 1, 2, 4, ... while a tile has cells
-        // to merge, with each tile's vertical error.
-        const std::uint32_t tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
-        const std::uint32_t cells = assets.terrain.resolution - 1;
-        std::vector<std::vector<float>> errors;
-        for (std::uint32_t g = 0; g < ground_grid_count(cells / tiles_per_side); ++g)
-            errors.push_back(terrain_tile_errors(assets.terrain, tiles_per_side, 1u << g));
+        // The slices' grids are the ground's (components/shell_tile.h; add_ground_grids), with
+        // each tile's vertical error; the terrain's own alone when it has no coarser ones.
+        const std::vector<std::vector<float>>& errors = assets.terrain_grid_errors;
         // The slices rise up to the stack's height and Eq. 2 moves a vertex vertically by at most
         // f times its distance from its triangle's centre on the terrain's own grid, which the
         // shader holds every grid to (shaders/shell.vert; lod/shell_slanting.h).
@@ -576,7 +572,7 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
             const glm::vec3 bottom = tile.bounds_min - glm::vec3(0.0f, lift, 0.0f);
             entity.centre = 0.5f * (bottom + top);
             entity.radius = glm::length(top - entity.centre);
-            entity.grids = std::uint8_t(errors.size());
+            entity.grids = std::uint8_t(std::max<std::size_t>(1, errors.size()));
             for (std::size_t g = 0; g < errors.size(); ++g) entity.grid_error_m[g] = errors[g].at(t);
             world.emplace<shell_tile>(world.create(), entity);
         }

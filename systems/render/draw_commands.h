@@ -47,10 +47,9 @@ constexpr std::size_t group_of(material_kind m, primitive_kind p,
 // the grid its ground_tile entity chose this frame (components/ground_tile.h; grid 0 without
 // one), with its skirts on that grid where a neighbour's grid differs.
 struct terrain_tile {
-    std::uint16_t mesh = 0;  // grid 0
     glm::vec3 center{0.0f};  // terrain-local
     float radius = 0.0f;
-    std::array<std::uint16_t, k_max_ground_grids> grids{};  // by grid; grids[0] == mesh
+    std::array<std::uint16_t, k_max_ground_grids> grids{};  // mesh ids by grid
     std::array<std::uint16_t, k_max_ground_grids>
         skirts{};  // by grid; scene_assets::k_no_skirt: none
     std::uint8_t grid_count = 1;

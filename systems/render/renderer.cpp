@@ -38,10 +38,9 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
     for (std::size_t t = 0; t < count; ++t) {
         const mesh_data& mesh = assets.meshes.at(assets.terrain_meshes[t]);
         terrain_tile tile;
-        tile.mesh = assets.terrain_meshes[t];
         tile.center = 0.5f * (mesh.bounds_min + mesh.bounds_max);
         tile.radius = glm::length(mesh.bounds_max - tile.center);
-        tile.grids[0] = tile.mesh;
+        tile.grids[0] = assets.terrain_meshes[t];
         tile.skirts.fill(scene_assets::k_no_skirt);
         tile.grid_count = std::uint8_t(std::max<std::size_t>(1, assets.terrain_grids.size()));
         for (std::size_t g = 0; g < assets.terrain_grids.size(); ++g) {

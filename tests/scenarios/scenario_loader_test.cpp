@@ -493,6 +493,8 @@ TEST(scenario_loader, values_at_the_limits_load_and_just_outside_are_rejected) {
         {"/terrain/resolution", 2, 4097, 1, 4098,
          "out of range; expected an integer from 2 to 4097"},
         {"/terrain/octaves", 1, 16, 0, 17, "out of range; expected an integer from 1 to 16"},
+        {"/terrain/max_error_px", 0, 64, -0.5, 64.5,
+         "out of range; expected a number from 0 to 64"},
         {"/terrain/ground_color/1", 0, 1, -0.01, 1.01,
          "out of range; expected a number from 0 to 1"},
         {"/species/0/height_m", 0.1, 150, 0.09, 150.5,

@@ -145,19 +145,16 @@ shell_pass::shell_pass(const scene_assets& assets) {
     m_area = {float(shells.area[0]), float(shells.area[1]), float(shells.area[2]), float(shells.area[3])};
     m_lattice = {float(shells.origin.x + double(first_i) * t), float(shells.origin.y + double(first_j) * t), float(t),
                  float(1.0 / t)};
-    // The terrain's triangles on every grid of components/shell_tile.h, each vertex with its
-    // triangle's centre (Eq. 2 needs m), grid by grid within each tile.
+    // The terrain's triangles on every grid of the ground (resources/scene_assets.h terrain_grids,
+    // which components/shell_tile.h's grids are; the terrain's own tiles alone when it has none),
+    // each vertex with its triangle's centre (Eq. 2 needs m), grid by grid within each tile.
     std::vector<shell_vertex> vertices;
-    const auto tiles_per_side = std::uint32_t(std::lround(std::sqrt(double(assets.terrain_meshes.size()))));
-    const std::uint32_t ground_cells = assets.terrain.resolution - 1;
-    const std::size_t grids = ground_grid_count(ground_cells / std::max(tiles_per_side, 1u));
+    const std::size_t grids = std::max<std::size_t>(1, assets.terrain_grids.size());
     m_tile_ranges.assign(assets.terrain_meshes.size(), {});
     for (std::size_t g = 0; g < grids; ++g) {
-        // Grid 0 is the terrain's own tiles, already in the assets.
-        const std::vector<mesh_data> coarser = g > 0 ? terrain_tile_meshes(ground, tiles_per_side, 1.0f, 1u << g)
-                                                     : std::vector<mesh_data>{};
-        for (std::size_t n = 0; n < m_tile_ranges.size() && (g == 0 || n < coarser.size()); ++n) {
-            const mesh_data& tile = g == 0 ? assets.meshes.at(assets.terrain_meshes[n]) : coarser[n];
+        for (std::size_t n = 0; n < m_tile_ranges.size(); ++n) {
+            const mesh_data& tile =
+                assets.meshes.at(g == 0 ? assets.terrain_meshes[n] : assets.terrain_grids[g][n]);
             const auto first = std::uint32_t(vertices.size());
             for (std::size_t k = 0; k + 2 < tile.indices.size(); k += 3) {
                 const vertex* v[3] = {&tile.vertices[tile.indices[k]], &tile.vertices[tile.indices[k + 1]],
