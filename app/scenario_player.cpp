@@ -12,7 +12,6 @@
 
 #include "app/device_costs.h"
 #include "app/rung_tables.h"
-#include "scenarios/ladder_fields.h"
 #include "components/camera.h"
 #include "components/fade_alpha.h"
 #include "components/lod_state.h"
@@ -20,26 +19,28 @@
 #include "components/point_prefix.h"
 #include "components/tile_visibility.h"
 #include "models/cache/bake_cache.h"
+#include "resources/frame_stats.h"
+#include "resources/lodf_slots.h"
+#include "resources/seen_pixels.h"
+#include "scenarios/ladder_fields.h"
+#include "setup/spawn_scenario.h"
 #include "systems/adapt_plant_budget_system.h"
 #include "systems/adapt_sample_distance_system.h"
 #include "systems/aggregate_eco_tiles_system.h"
 #include "systems/build_draw_list_system.h"
 #include "systems/cull_system.h"
 #include "systems/fit_shadow_cascades_system.h"
-#include "resources/lodf_slots.h"
-#include "resources/frame_stats.h"
-#include "resources/seen_pixels.h"
 #include "systems/project_environment_system.h"
 #include "systems/render/pass_timer.h"
 #include "systems/render/submit_system.h"
-#include "systems/select_representation_system.h"
-#include "setup/spawn_scenario.h"
-#include "systems/update_lodf_system.h"
 #include "systems/select_ground_grid_system.h"
-#include "systems/update_shells_system.h"
-#include "systems/update_point_prefix_system.h"
+#include "systems/select_representation_system.h"
 #include "systems/update_camera_system.h"
+#include "systems/update_lodf_system.h"
+#include "systems/update_point_prefix_system.h"
+#include "systems/update_shells_system.h"
 #include "systems/update_sun_system.h"
+#include "systems/update_terrain_shadow_system.h"
 
 namespace sylva {
 namespace {
@@ -71,6 +72,7 @@ void register_frame_systems(ecs::schedule& schedule) {
     schedule.add<update_point_prefix_system>();
     schedule.add<update_lodf_system>();
     schedule.add<project_environment_system>();
+    schedule.add<update_terrain_shadow_system>();
     schedule.add<build_draw_list_system>();
     schedule.add<submit_system>();
     schedule.build();

@@ -46,6 +46,7 @@
 #include "resources/playback.h"
 #include "resources/shadow_receivers.h"
 #include "resources/shell_view.h"
+#include "resources/terrain_shadow.h"
 #include "scenarios/scenario_loader.h"
 #include "scenarios/species_lookup.h"
 #include "setup/point_line_assets.h"
@@ -582,6 +583,15 @@ void spawn_shells(ecs::world& world, const scenario& s, const scene_assets& asse
 
 void spawn_ground_tiles(ecs::world& world, const scenario& s, const scene_assets& assets) {
     world.set_resource(ground_lod{float(s.terrain.max_error_px)});
+    // The sun's shadow of the ground comes from its heights, not from the shadow cascades
+    // (lighting/terrain_shadow.h).
+    if (assets.terrain.resolution >= 2) {
+        terrain_shadow shadow;
+        shadow.resolution = assets.terrain.resolution;
+        shadow.size_m = assets.terrain.size_m;
+        shadow.heights = assets.terrain.heights;
+        world.set_resource(std::move(shadow));
+    }
     if (assets.terrain_grids.empty()) return;
     for (std::size_t t = 0; t < assets.terrain_meshes.size(); ++t) {
         const mesh_data& tile = assets.meshes.at(assets.terrain_meshes[t]);

@@ -22,8 +22,8 @@ draw_commands::draw_commands(std::vector<terrain_tile> terrain_tiles)
     : m_terrain_tiles(std::move(terrain_tiles)) {}
 
 std::size_t draw_commands::bytes_needed(const draw_list& draws) const {
-    // A terrain tile: its surface and skirts in the view and up to four cascades.
-    return (draws.batches.size() + m_terrain_tiles.size() * 10 + 8) * k_material_kinds *
+    // A terrain tile: its surface and skirts in the view.
+    return (draws.batches.size() + m_terrain_tiles.size() * 2 + 8) * k_material_kinds *
            sizeof(indirect_command);
 }
 
@@ -49,13 +49,11 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
         add(batch.pass, meshes.get(batch.mesh), instance_base + batch.first_instance, batch.instance_count,
             batch.count, batch.faded);
     }
-    // Terrain tiles: each one drawn where its bounding sphere meets the view or a cascade.
+    // Terrain tiles: each one drawn where its bounding sphere meets the view.
     const auto terrain_instance = instance_base + std::uint32_t(draws.instances.size());
     const camera& cam = *view.view_camera;
     const frustum_planes frustum = extract_frustum_planes(cam.projection * cam.view);
-    const std::array<cascade_bounds, k_max_cascades> cascades = cascade_boxes(*view.cascades);
-    // Each on its ground tile's grid (components/ground_tile.h), the same in the view and the
-    // cascades so the ground shadows itself as it is drawn.
+    // Each on its ground tile's grid (components/ground_tile.h).
     auto grid_of = [&](std::size_t t) -> std::uint8_t {
         if (t >= view.ground_tile_count) return 0;
         return std::min<std::uint8_t>(view.ground_tiles[t].grid, m_terrain_tiles[t].grid_count - 1);
@@ -69,14 +67,11 @@ void draw_commands::for_each_command(const frame_view& view, const mesh_pool& me
             for (std::int32_t n : tile.neighbours)
                 skirted = skirted || (n >= 0 && grid_of(std::size_t(n)) != grid);
         const glm::vec3 center = view.terrain_position + tile.center;
-        auto draw = [&](render_pass pass) {
-            add(pass, meshes.get(tile.grids[grid]), terrain_instance, 1);
-            if (skirted) add(pass, meshes.get(tile.skirts[grid]), terrain_instance, 1);
-        };
-        if (sphere_in_frustum(frustum, center, tile.radius)) draw(render_pass::opaque);
-        for (int c = 0; c < cascade_count; ++c)
-            if (sphere_overlaps_cascade(cascades[std::size_t(c)], center, tile.radius))
-                draw(shadow_pass(c));
+        // Not into the cascades: the ground's shadow comes from its heights
+        // (lighting/terrain_shadow.h), which shade the ground and everything on it.
+        if (!sphere_in_frustum(frustum, center, tile.radius)) continue;
+        add(render_pass::opaque, meshes.get(tile.grids[grid]), terrain_instance, 1);
+        if (skirted) add(render_pass::opaque, meshes.get(tile.skirts[grid]), terrain_instance, 1);
     }
 }
 

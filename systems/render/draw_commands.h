@@ -43,7 +43,8 @@ constexpr std::size_t group_of(material_kind m, primitive_kind p,
            std::size_t(m);
 }
 
-// A tile of the terrain mesh, drawn where its bounding sphere meets the view or a cascade, on
+// A tile of the terrain mesh, drawn where its bounding sphere meets the view (it casts no shadow
+// into the cascades: resources/terrain_shadow.h), on
 // the grid its ground_tile entity chose this frame (components/ground_tile.h; grid 0 without
 // one), with its skirts on that grid where a neighbour's grid differs.
 struct terrain_tile {

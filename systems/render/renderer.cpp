@@ -145,6 +145,8 @@ void renderer::write_uniforms(const frame_view& view) {
         u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
     for (int i = 0; i < 9; ++i)
         u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
+    m_terrain_shadow.uniforms(view.terrain_position, cascade_count > 0 && sun_up, u.terrain_shadow,
+                              u.terrain_shadow_height);
     const sh9 sun_basis = sh_basis(s.direction);
     for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).
@@ -194,6 +196,7 @@ void renderer::render(const frame_view& view) {
                                      m_commands.bytes_needed(draws) + 16 * 16;
     m_ring.begin_frame(bytes_needed);
     m_frame_upload_bytes = m_sky.update(*view.sky, *view.sun_light);
+    m_frame_upload_bytes += m_terrain_shadow.update(view.terrain_shadows);
     write_uniforms(view);
     write_instances(view);
     m_frame_upload_bytes +=
@@ -207,6 +210,8 @@ void renderer::render(const frame_view& view) {
     m_context.frame_indirect_buffer = m_ring.buffer();
     glBindBufferRange(GL_UNIFORM_BUFFER, 0, m_ring.buffer(), GLintptr(m_uniform_offset),
                       sizeof(frame_uniforms));
+    // No pass binds another texture to this unit, so it holds for the whole frame.
+    if (m_terrain_shadow.casts()) glBindTextureUnit(k_terrain_shadow_unit, m_terrain_shadow.id());
     for (frame_pass* pass : m_passes) pass->draw(m_context);
     m_ring.end_frame();
 }

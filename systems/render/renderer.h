@@ -25,6 +25,7 @@
 #include "resources/lodf_slots.h"
 #include "resources/scene_assets.h"
 #include "resources/shell_view.h"
+#include "resources/terrain_shadow.h"
 #include "systems/render/draw_commands.h"
 #include "systems/render/frame_ring.h"
 #include "systems/render/lodf_commands.h"
@@ -45,6 +46,7 @@
 #include "systems/render/scene_textures.h"
 #include "systems/render/shadow_maps.h"
 #include "systems/render/sky_texture.h"
+#include "systems/render/terrain_shadow_texture.h"
 
 namespace sylva::render {
 
@@ -108,6 +110,9 @@ struct frame_view {
     // every tile on its finest grid.
     const ground_tile* ground_tiles = nullptr;
     std::size_t ground_tile_count = 0;
+    // The terrain's shadow under this frame's sun (resources/terrain_shadow.h); null: the scene
+    // has no terrain (or was built by hand), nothing is in a terrain's shadow.
+    const terrain_shadow* terrain_shadows = nullptr;
 
     // Sets the point/line fields above from what the viewer asks; view_camera must be set.
     void set_samples(const point_line_quality& quality);
@@ -158,6 +163,7 @@ private:
     pass_timer m_timer;
     scene_textures m_textures;
     sky_texture m_sky;
+    terrain_shadow_texture m_terrain_shadow;
     draw_commands m_commands;
     float m_ground_uv_scale = 4.0f;
     // Rebollo 2006: the LoDF slots' indirect commands, when a species has LoDF foliage; the

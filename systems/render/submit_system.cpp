@@ -32,6 +32,7 @@ void submit_system::run(ecs::system_context<submit_system>& ctx) {
         view.ground_tiles = ground.data();
         view.ground_tile_count = ground.size();
     }
+    view.terrain_shadows = ctx.try_resource<terrain_shadow>();
     device.renderer->render(view);
     const auto issued = std::chrono::steady_clock::now();
     frame_stats& stats = ctx.resource_mut<frame_stats>();

@@ -16,6 +16,7 @@
 #include "resources/lodf_slots.h"
 #include "resources/playback.h"
 #include "resources/seen_pixels.h"
+#include "resources/terrain_shadow.h"
 #include "systems/render/renderer.h"
 
 namespace sylva {
@@ -32,7 +33,7 @@ struct submit_system {
     static constexpr bool k_main_thread = true;
     using reads = ecs::reads<camera, sun, environment, cascade_set, draw_list, playback_clock,
                              lod_policy, lodf_slots, cluster_changes, species_library, shell_view,
-                             shell_tile, ground_tile>;
+                             shell_tile, ground_tile, terrain_shadow>;
     using writes = ecs::writes<render_device, frame_stats, seen_pixels>;
     static void run(ecs::system_context<submit_system>& ctx);
 };

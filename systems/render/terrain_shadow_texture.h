@@ -1,0 +1,46 @@
+#pragma once
+// The terrain's shadow on the GPU (resources/terrain_shadow.h): one RG32F texel per height
+// sample, (height, shadow depth above it), read by shaders/shading.glsl terrain_sun_visibility
+// with linear filtering, texel centres on the samples. Uploaded into the same texture whenever
+// the shadow is remade (the sun moved) and only when the terrain shadows something; the frame
+// loop creates no GL object for it.
+#include <cstdint>
+#include <glm/vec4.hpp>
+
+#include "resources/terrain_shadow.h"
+#include "systems/render/gl_objects.h"
+
+namespace sylva::render {
+
+// The texture unit shaders/shading.glsl reads it from (after the shells' transfer pages, 5-9).
+inline constexpr GLuint k_terrain_shadow_unit = 10;
+
+class terrain_shadow_texture {
+public:
+    // Brings the texture up to `shadow` (null: no terrain); returns the bytes uploaded.
+    std::uint64_t update(const terrain_shadow* shadow);
+    // True when the last update left a shadow worth looking up (the terrain shadows something).
+    bool casts() const { return m_casts; }
+    GLuint id() const { return m_texture.id(); }
+
+    // The frame uniforms' two vectors (shaders/common.glsl u_terrain_shadow, _height) for a
+    // terrain whose origin is at camera-relative `terrain_position`: xy + camera-relative xz,
+    // times z, plus w, is the texture coordinate; x of the second plus a camera-relative y is the
+    // height above the terrain's origin, y the width of a shadow's edge in metres, z 1 when the
+    // lookup is on.
+    void uniforms(glm::vec3 terrain_position, bool shadows_on, glm::vec4& mapping,
+                  glm::vec4& height) const;
+
+private:
+    gl_texture m_texture;
+    std::uint32_t m_resolution = 0;
+    double m_size_m = 0.0;
+    float m_edge_m = 0.0f;
+    bool m_casts = false;
+    // What the texture holds: the resource's revision and sun (two worlds drawn by one renderer
+    // can share a revision number, as the sky's can).
+    std::uint64_t m_revision = 0;
+    glm::vec3 m_sun{0.0f};
+};
+
+}  // namespace sylva::render
