@@ -196,7 +196,9 @@ void renderer::render(const frame_view& view) {
                                      m_commands.bytes_needed(draws) + 16 * 16;
     m_ring.begin_frame(bytes_needed);
     m_frame_upload_bytes = m_sky.update(*view.sky, *view.sun_light);
-    m_frame_upload_bytes += m_terrain_shadow.update(view.terrain_shadows);
+    // Only with shadows: without them nothing looks the terrain's shadow up.
+    m_frame_upload_bytes +=
+        m_terrain_shadow.update(m_context.cascade_count > 0 ? view.terrain_shadows : nullptr);
     write_uniforms(view);
     write_instances(view);
     m_frame_upload_bytes +=

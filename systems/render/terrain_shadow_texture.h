@@ -17,7 +17,8 @@ inline constexpr GLuint k_terrain_shadow_unit = 10;
 
 class terrain_shadow_texture {
 public:
-    // Brings the texture up to `shadow` (null: no terrain); returns the bytes uploaded.
+    // Brings the texture up to `shadow` (null: no terrain, or no shadows drawn); returns the
+    // bytes uploaded.
     std::uint64_t update(const terrain_shadow* shadow);
     // True when the last update left a shadow worth looking up (the terrain shadows something).
     bool casts() const { return m_casts; }
