@@ -23,6 +23,20 @@ float dissolve_hash(uint a, uint b) {
     return float(h >> 8u) * (1.0 / 16777216.0);
 }
 #endif
+#ifdef MATERIAL_GROUND
+// The terrain's normal where the fragment lies, from its own samples (systems/render/
+// scene_textures.h ground_normal, x and z), read bilinearly as the finest grid's vertex normals
+// would be interpolated: a coarser grid far away (components/ground_tile.h) keeps the terrain's
+// shading and loses only its shape's sub-pixel detail. Without the texture (scenes built by
+// hand), the vertex normal.
+layout(binding = 11) uniform sampler2D u_ground_normal;
+vec3 ground_normal(vec3 position, vec3 vertex_normal) {
+    if (u_terrain_shadow_height.w < 0.5) return vertex_normal;
+    vec2 uv = (position.xz + u_terrain_map.xy) * u_terrain_map.z + u_terrain_map.w;
+    vec2 xz = texture(u_ground_normal, uv).rg;
+    return normalize(vec3(xz.x, sqrt(max(1.0 - dot(xz, xz), 0.0)), xz.y));
+}
+#endif
 #ifdef MATERIAL_BILLBOARD
 flat in vec2 v_yaw_cos_sin;
 // Model-space normals * 0.5 + 0.5.
@@ -62,6 +76,9 @@ void main() {
 #endif
     vec3 base = albedo.rgb * (1.0 + 0.18 * v_tint);
     vec3 n = normalize(v_normal);
+#if defined(MATERIAL_GROUND)
+    n = ground_normal(v_position, n);
+#endif
 #if defined(MATERIAL_LEAF)
     if (!gl_FrontFacing) n = -n;  // leaves are thin double-sided cards
 #endif

@@ -50,8 +50,8 @@ layout(binding = 10) uniform sampler2D u_terrain_shadow_map;
 
 float terrain_sun_visibility(vec3 position) {
     if (u_terrain_shadow_height.z < 0.5) return 1.0;
-    vec2 uv = (position.xz + u_terrain_shadow.xy) * u_terrain_shadow.z + u_terrain_shadow.w;
-    if (any(lessThan(uv, vec2(u_terrain_shadow.w))) || any(greaterThan(uv, vec2(1.0 - u_terrain_shadow.w))))
+    vec2 uv = (position.xz + u_terrain_map.xy) * u_terrain_map.z + u_terrain_map.w;
+    if (any(lessThan(uv, vec2(u_terrain_map.w))) || any(greaterThan(uv, vec2(1.0 - u_terrain_map.w))))
         return 1.0;
     vec2 ground = texture(u_terrain_shadow_map, uv).rg;  // height, shadow depth above it
     float above = max(position.y + u_terrain_shadow_height.x - ground.x, 0.0);

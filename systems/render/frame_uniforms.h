@@ -22,9 +22,10 @@ struct frame_uniforms {
     glm::vec4 cascade_texel_world{0.0f};
     glm::vec4 sh_radiance[9]{};  // the sky's radiance SH, rgb (precomputed radiance transfer)
     glm::vec4 sun_sh[3]{};       // SH basis at the sun's direction, 9 values packed 4 + 4 + 1
-    // The terrain's shadow (systems/render/terrain_shadow_texture.h uniforms): texture mapping,
-    // then (height offset, edge width m, on, 0).
-    glm::vec4 terrain_shadow{0.0f};
+    // Camera-relative xz to the terrain's sample textures (ground normals, terrain shadow):
+    // (xz offset, scale, half texel); then the terrain shadow's (height offset, edge width m,
+    // shadow on, ground normals on) (systems/render/terrain_shadow_texture.h).
+    glm::vec4 terrain_map{0.0f};
     glm::vec4 terrain_shadow_height{0.0f};
 };
 static_assert(offsetof(frame_uniforms, cascade_view_projection) == 256);
@@ -34,7 +35,7 @@ static_assert(offsetof(frame_uniforms, fog) == 704);
 static_assert(offsetof(frame_uniforms, cascade_texel_world) == 736);
 static_assert(offsetof(frame_uniforms, sh_radiance) == 752);
 static_assert(offsetof(frame_uniforms, sun_sh) == 896);
-static_assert(offsetof(frame_uniforms, terrain_shadow) == 944);
+static_assert(offsetof(frame_uniforms, terrain_map) == 944);
 static_assert(sizeof(frame_uniforms) == 976);
 
 }  // namespace sylva::render

@@ -63,8 +63,9 @@ std::vector<terrain_tile> terrain_tiles_of(const scene_assets& assets) {
 
 renderer::renderer(const renderer_settings& settings, const scene_assets& assets)
     : m_settings(settings),
-      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon, settings.lines,
-                  !assets.shells.empty(), !assets.shells.empty() && assets.shells.tiles.front().has_transfer(),
+      m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon,
+                  settings.lines, !assets.shells.empty(),
+                  !assets.shells.empty() && assets.shells.tiles.front().has_transfer(),
                   has_population_receivers(assets)}),
       m_ring(std::size_t(4) << 20),
       m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
@@ -72,6 +73,8 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
       m_sky(assets),
       m_commands(terrain_tiles_of(assets)),
       m_ground_uv_scale(assets.ground_uv_scale_m),
+      m_terrain_resolution(assets.terrain.resolution),
+      m_terrain_size_m(assets.terrain.size_m),
       m_shell_pass(assets) {
     for (std::size_t i = 0; i < assets.meshes.size(); ++i) {
         // Scenes built by hand (tests) may leave the library's mesh table empty: normal-lit.
@@ -145,7 +148,9 @@ void renderer::write_uniforms(const frame_view& view) {
         u.sh_irradiance[i] = glm::vec4(view.sky->irradiance_sh[std::size_t(i)], 0.0f);
     for (int i = 0; i < 9; ++i)
         u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
-    m_terrain_shadow.uniforms(view.terrain_position, cascade_count > 0 && sun_up, u.terrain_shadow,
+    u.terrain_map = terrain_map(view.terrain_position, m_terrain_resolution, m_terrain_size_m);
+    u.terrain_shadow_height.w = m_textures.ground_normal ? 1.0f : 0.0f;
+    m_terrain_shadow.uniforms(view.terrain_position, cascade_count > 0 && sun_up,
                               u.terrain_shadow_height);
     const sh9 sun_basis = sh_basis(s.direction);
     for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
@@ -214,6 +219,8 @@ void renderer::render(const frame_view& view) {
                       sizeof(frame_uniforms));
     // No pass binds another texture to this unit, so it holds for the whole frame.
     if (m_terrain_shadow.casts()) glBindTextureUnit(k_terrain_shadow_unit, m_terrain_shadow.id());
+    if (m_textures.ground_normal)
+        glBindTextureUnit(k_ground_normal_unit, m_textures.ground_normal.id());
     for (frame_pass* pass : m_passes) pass->draw(m_context);
     m_ring.end_frame();
 }

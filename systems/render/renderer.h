@@ -166,6 +166,8 @@ private:
     terrain_shadow_texture m_terrain_shadow;
     draw_commands m_commands;
     float m_ground_uv_scale = 4.0f;
+    std::uint32_t m_terrain_resolution = 0;  // the terrain's samples per side (0: none)
+    double m_terrain_size_m = 0.0;
     // Rebollo 2006: the LoDF slots' indirect commands, when a species has LoDF foliage; the
     // species each slot's commands were written for (k_no_lodf_slot: none).
     std::uint32_t m_lodf_clusters = 0;  // the most LoDF clusters of any species; 0: no LoDF

@@ -48,6 +48,29 @@ scene_textures::scene_textures(const scene_assets& assets) {
     leaf = make_texture_array(assets.leaf_textures, false, true);
     bark = make_texture_array(assets.bark_textures, true);
     ground = make_texture_array(std::span(&assets.ground_texture, 1), true);
+    if (assets.terrain.resolution >= 2) {
+        const heightfield& field = assets.terrain;
+        const auto n = std::size_t(field.resolution);
+        std::vector<float> xz(n * n * 2);
+        for (std::size_t r = 0; r < n; ++r)
+            for (std::size_t c = 0; c < n; ++c) {
+                // The vertex normal of the grid vertex there (models/terrain/terrain.cpp).
+                const glm::vec3 normal =
+                    field.normal_at(double(c) * field.spacing() - 0.5 * field.size_m,
+                                    double(r) * field.spacing() - 0.5 * field.size_m);
+                xz[2 * (r * n + c)] = normal.x;
+                xz[2 * (r * n + c) + 1] = normal.z;
+            }
+        ground_normal = make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(ground_normal.id(), 1, GL_RG32F, GLsizei(n), GLsizei(n));
+        glTextureSubImage2D(ground_normal.id(), 0, 0, 0, GLsizei(n), GLsizei(n), GL_RG, GL_FLOAT,
+                            xz.data());
+        glTextureParameteri(ground_normal.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(ground_normal.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(ground_normal.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(ground_normal.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        uploaded_bytes += xz.size() * sizeof(float);
+    }
     if (!assets.billboard_albedo.empty()) {
         billboard_albedo = make_texture_array(assets.billboard_albedo, false, true);
         billboard_normal = make_texture_array(assets.billboard_normal, false);

@@ -15,6 +15,11 @@ struct scene_textures {
     gl_texture leaf;
     gl_texture bark;
     gl_texture ground;
+    // The terrain's normals at its own samples (x and z; y is what makes them unit), read by the
+    // ground's fragments at their world position (shaders/mesh.frag ground_normal): a coarser
+    // ground grid (components/ground_tile.h) is then lit as the terrain's samples light it, not
+    // by the few normals of its own vertices. None without a terrain.
+    gl_texture ground_normal;
     gl_texture billboard_albedo;    // crossed billboards: colour with coverage alpha
     gl_texture billboard_normal;    // and model-space normals
     gl_texture billboard_transfer;  // SH transfer pages, k_transfer_pages layers per species

@@ -34,21 +34,23 @@ std::uint64_t terrain_shadow_texture::update(const terrain_shadow* shadow) {
     return shadow->texels.size() * sizeof(float);
 }
 
-void terrain_shadow_texture::uniforms(glm::vec3 terrain_position, bool shadows_on,
-                                      glm::vec4& mapping, glm::vec4& height) const {
-    if (!m_casts || !shadows_on || m_resolution < 2) {
-        mapping = glm::vec4(0.0f);
-        height = glm::vec4(0.0f);
-        return;
-    }
+glm::vec4 terrain_map(glm::vec3 terrain_position, std::uint32_t resolution, double size_m) {
+    if (resolution < 2) return glm::vec4(0.0f);
     // Sample i of a row sits at x = -size/2 + i spacing from the terrain's origin and at texture
     // coordinate (i + 0.5) / resolution.
-    const double spacing = m_size_m / double(m_resolution - 1);
-    const auto half = float(0.5 * m_size_m);
-    mapping =
-        glm::vec4(half - terrain_position.x, half - terrain_position.z,
-                  float(1.0 / (spacing * double(m_resolution))), float(0.5 / double(m_resolution)));
-    height = glm::vec4(-terrain_position.y, m_edge_m, 1.0f, 0.0f);
+    const double spacing = size_m / double(resolution - 1);
+    const auto half = float(0.5 * size_m);
+    return glm::vec4(half - terrain_position.x, half - terrain_position.z,
+                     float(1.0 / (spacing * double(resolution))), float(0.5 / double(resolution)));
+}
+
+void terrain_shadow_texture::uniforms(glm::vec3 terrain_position, bool shadows_on,
+                                      glm::vec4& height) const {
+    if (!m_casts || !shadows_on || m_resolution < 2) {
+        height = glm::vec4(0.0f, 1.0f, 0.0f, height.w);
+        return;
+    }
+    height = glm::vec4(-terrain_position.y, m_edge_m, 1.0f, height.w);
 }
 
 }  // namespace sylva::render

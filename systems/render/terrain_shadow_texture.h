@@ -5,6 +5,7 @@
 // the shadow is remade (the sun moved) and only when the terrain shadows something; the frame
 // loop creates no GL object for it.
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "resources/terrain_shadow.h"
@@ -12,8 +13,15 @@
 
 namespace sylva::render {
 
-// The texture unit shaders/shading.glsl reads it from (after the shells' transfer pages, 5-9).
+// The texture units shaders/shading.glsl and mesh.frag read it and the ground's normals from
+// (after the shells' transfer pages, 5-9).
 inline constexpr GLuint k_terrain_shadow_unit = 10;
+inline constexpr GLuint k_ground_normal_unit = 11;
+
+// Camera-relative xz to the texture coordinate of a terrain sample texture (resolution^2
+// samples over size_m, origin at camera-relative `terrain_position`): (xz + m.xy) * m.z + m.w,
+// sample i at (i + 0.5) / resolution.
+glm::vec4 terrain_map(glm::vec3 terrain_position, std::uint32_t resolution, double size_m);
 
 class terrain_shadow_texture {
 public:
@@ -24,13 +32,11 @@ public:
     bool casts() const { return m_casts; }
     GLuint id() const { return m_texture.id(); }
 
-    // The frame uniforms' two vectors (shaders/common.glsl u_terrain_shadow, _height) for a
-    // terrain whose origin is at camera-relative `terrain_position`: xy + camera-relative xz,
-    // times z, plus w, is the texture coordinate; x of the second plus a camera-relative y is the
-    // height above the terrain's origin, y the width of a shadow's edge in metres, z 1 when the
-    // lookup is on.
-    void uniforms(glm::vec3 terrain_position, bool shadows_on, glm::vec4& mapping,
-                  glm::vec4& height) const;
+    // The frame uniforms' shadow vector (shaders/common.glsl u_terrain_shadow_height) for a
+    // terrain whose origin is at camera-relative `terrain_position`: x plus a camera-relative y
+    // is the height above the terrain's origin, y the width of a shadow's edge in metres, z 1
+    // when the lookup is on; w is left as it is.
+    void uniforms(glm::vec3 terrain_position, bool shadows_on, glm::vec4& height) const;
 
 private:
     gl_texture m_texture;
