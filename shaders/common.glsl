@@ -17,7 +17,7 @@ layout(std140, binding = 0) uniform frame_block {
     vec4 u_sh_radiance[9];             // rgb per coefficient: the sky's radiance SH (transfer.glsl)
     vec4 u_sun_sh[3];                  // the 9 SH basis values at the sun's direction
     vec4 u_terrain_map;                // (xz offset, scale, half texel): camera-relative xz -> uv
-    vec4 u_terrain_shadow_height;      // x height offset, y shadow edge m, z shadow on, w normals on
+    vec4 u_terrain_params;             // x height offset, y shadow edge m, z shadow on, w normals on
 };
 
 // Ramamoorthi & Hanrahan 2001: irradiance E(n) from 9 SH coefficients. The coefficients are

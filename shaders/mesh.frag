@@ -31,7 +31,7 @@ float dissolve_hash(uint a, uint b) {
 // hand), the vertex normal.
 layout(binding = 11) uniform sampler2D u_ground_normal;
 vec3 ground_normal(vec3 position, vec3 vertex_normal) {
-    if (u_terrain_shadow_height.w < 0.5) return vertex_normal;
+    if (u_terrain_params.w < 0.5) return vertex_normal;
     vec2 uv = (position.xz + u_terrain_map.xy) * u_terrain_map.z + u_terrain_map.w;
     vec2 xz = texture(u_ground_normal, uv).rg;
     return normalize(vec3(xz.x, sqrt(max(1.0 - dot(xz, xz), 0.0)), xz.y));

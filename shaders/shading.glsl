@@ -49,13 +49,13 @@ float cascade_sun_visibility(vec3 position, vec3 normal, float view_depth) {
 layout(binding = 10) uniform sampler2D u_terrain_shadow_map;
 
 float terrain_sun_visibility(vec3 position) {
-    if (u_terrain_shadow_height.z < 0.5) return 1.0;
+    if (u_terrain_params.z < 0.5) return 1.0;
     vec2 uv = (position.xz + u_terrain_map.xy) * u_terrain_map.z + u_terrain_map.w;
     if (any(lessThan(uv, vec2(u_terrain_map.w))) || any(greaterThan(uv, vec2(1.0 - u_terrain_map.w))))
         return 1.0;
     vec2 ground = texture(u_terrain_shadow_map, uv).rg;  // height, shadow depth above it
-    float above = max(position.y + u_terrain_shadow_height.x - ground.x, 0.0);
-    return clamp((above - ground.y) / u_terrain_shadow_height.y + 1.0, 0.0, 1.0);
+    float above = max(position.y + u_terrain_params.x - ground.x, 0.0);
+    return clamp((above - ground.y) / u_terrain_params.y + 1.0, 0.0, 1.0);
 }
 
 // The sun's visibility: the shadow cascades' (other objects) times the terrain's.

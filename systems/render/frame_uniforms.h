@@ -23,10 +23,10 @@ struct frame_uniforms {
     glm::vec4 sh_radiance[9]{};  // the sky's radiance SH, rgb (precomputed radiance transfer)
     glm::vec4 sun_sh[3]{};       // SH basis at the sun's direction, 9 values packed 4 + 4 + 1
     // Camera-relative xz to the terrain's sample textures (ground normals, terrain shadow):
-    // (xz offset, scale, half texel); then the terrain shadow's (height offset, edge width m,
-    // shadow on, ground normals on) (systems/render/terrain_shadow_texture.h).
+    // (xz offset, scale, half texel); then the lookups' parameters (height offset, shadow edge
+    // width m, shadow on, ground normals on) (systems/render/terrain_shadow_texture.h).
     glm::vec4 terrain_map{0.0f};
-    glm::vec4 terrain_shadow_height{0.0f};
+    glm::vec4 terrain_params{0.0f};
 };
 static_assert(offsetof(frame_uniforms, cascade_view_projection) == 256);
 static_assert(offsetof(frame_uniforms, cascade_split_far) == 512);

@@ -149,9 +149,8 @@ void renderer::write_uniforms(const frame_view& view) {
     for (int i = 0; i < 9; ++i)
         u.sh_radiance[i] = glm::vec4(view.sky->radiance_sh[std::size_t(i)], 0.0f);
     u.terrain_map = terrain_map(view.terrain_position, m_terrain_resolution, m_terrain_size_m);
-    u.terrain_shadow_height.w = m_textures.ground_normal ? 1.0f : 0.0f;
-    m_terrain_shadow.uniforms(view.terrain_position, cascade_count > 0 && sun_up,
-                              u.terrain_shadow_height);
+    u.terrain_params.w = m_textures.ground_normal ? 1.0f : 0.0f;
+    m_terrain_shadow.uniforms(view.terrain_position, cascade_count > 0 && sun_up, u.terrain_params);
     const sh9 sun_basis = sh_basis(s.direction);
     for (int i = 0; i < 9; ++i) u.sun_sh[i / 4][i % 4] = sun_basis[std::size_t(i)];
     // Fog takes the sky's colour near the horizon, from the same SH (a horizontal normal).

@@ -10,7 +10,7 @@ std::uint64_t terrain_shadow_texture::update(const terrain_shadow* shadow) {
               shadow->texels.size() == std::size_t(shadow->resolution) * shadow->resolution * 2;
     if (!m_casts) return 0;
     if (m_texture && m_resolution == shadow->resolution && m_revision == shadow->revision &&
-        m_sun == shadow->sun_direction && m_size_m == shadow->size_m)
+        m_sun == shadow->sun_direction)
         return 0;
     const auto n = GLsizei(shadow->resolution);
     if (!m_texture || m_resolution != shadow->resolution) {
@@ -23,7 +23,6 @@ std::uint64_t terrain_shadow_texture::update(const terrain_shadow* shadow) {
     }
     glTextureSubImage2D(m_texture.id(), 0, 0, 0, n, n, GL_RG, GL_FLOAT, shadow->texels.data());
     m_resolution = shadow->resolution;
-    m_size_m = shadow->size_m;
     m_revision = shadow->revision;
     m_sun = shadow->sun_direction;
     // A shadow's edge as wide as the sun's ray climbs over one sample (the sweep's interpolation
@@ -45,12 +44,12 @@ glm::vec4 terrain_map(glm::vec3 terrain_position, std::uint32_t resolution, doub
 }
 
 void terrain_shadow_texture::uniforms(glm::vec3 terrain_position, bool shadows_on,
-                                      glm::vec4& height) const {
-    if (!m_casts || !shadows_on || m_resolution < 2) {
-        height = glm::vec4(0.0f, 1.0f, 0.0f, height.w);
+                                      glm::vec4& params) const {
+    if (!m_casts || !shadows_on) {
+        params = glm::vec4(0.0f, 1.0f, 0.0f, params.w);
         return;
     }
-    height = glm::vec4(-terrain_position.y, m_edge_m, 1.0f, height.w);
+    params = glm::vec4(-terrain_position.y, m_edge_m, 1.0f, params.w);
 }
 
 }  // namespace sylva::render

@@ -32,16 +32,15 @@ public:
     bool casts() const { return m_casts; }
     GLuint id() const { return m_texture.id(); }
 
-    // The frame uniforms' shadow vector (shaders/common.glsl u_terrain_shadow_height) for a
-    // terrain whose origin is at camera-relative `terrain_position`: x plus a camera-relative y
-    // is the height above the terrain's origin, y the width of a shadow's edge in metres, z 1
-    // when the lookup is on; w is left as it is.
-    void uniforms(glm::vec3 terrain_position, bool shadows_on, glm::vec4& height) const;
+    // The shadow's part of the frame uniforms' terrain parameters (shaders/common.glsl
+    // u_terrain_params) for a terrain whose origin is at camera-relative `terrain_position`: x
+    // plus a camera-relative y is the height above the terrain's origin, y the width of a
+    // shadow's edge in metres, z 1 when the lookup is on; w (the ground normals') is left as is.
+    void uniforms(glm::vec3 terrain_position, bool shadows_on, glm::vec4& params) const;
 
 private:
     gl_texture m_texture;
     std::uint32_t m_resolution = 0;
-    double m_size_m = 0.0;
     float m_edge_m = 0.0f;
     bool m_casts = false;
     // What the texture holds: the resource's revision and sun (two worlds drawn by one renderer
