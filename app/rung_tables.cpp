@@ -10,6 +10,7 @@
 #include "components/transform.h"
 #include "lod/point_line_lod.h"
 #include "measure/image_metrics.h"
+#include "models/bake/crossed_billboard.h"
 #include "models/image/image_ops.h"
 #include "resources/playback.h"
 #include "scenarios/scenario_loader.h"
@@ -244,8 +245,12 @@ std::uint64_t table_key(const scenario& one, const scenario& patch, const std::v
         if (drawn_as[k].caster != representation::none)
             text << "|shadow:" << int(rungs[k]) << '>' << int(drawn_as[k].caster);
     }
-    text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ',' << int(points.splats) << ','
-         << int(points.fog_weighted) << "|version:" << k_format_version;
+    text << "|points:" << points.sample_distance_px << ',' << points.splat_factor << ','
+         << int(points.splats) << ',' << int(points.fog_weighted) << "|version:"
+         << k_format_version
+         // The bakes the tables measure keep their own keys; the billboards' is not in the
+         // scenario's text (a new bake of the facing views must not reuse the old tables).
+         << "|billboards:" << k_crossed_billboard_format;
     const std::string key = text.str();
     return fnv1a(key.data(), key.size());
 }

@@ -16,7 +16,9 @@ struct instance_pose {
     float s;
     mat3 rotation;
     float scale;
-    vec3 world;  // camera-relative world position
+    vec3 world;         // camera-relative world position
+    vec3 model_normal;  // the vertex's normal in model space (in_normal but for FACING_EYE)
+    vec2 uv;            // its texture coordinates (in_uv but for FACING_EYE)
 };
 
 // FACING_EYE (material_kind::facing_billboard, the view only): the crossed billboard's pair of
@@ -29,32 +31,63 @@ struct instance_pose {
 // origin; the rotation below takes +z to (sin yaw, 0, cos yaw)), less 90 degrees for the second
 // quad, whose front is +x. Its normal and transfer pages turn with it. Straight above the plant
 // there is no azimuth: both quads at the plant's own yaw, the crossed billboard.
+// The shown quad is then tilted back to the baked elevation nearest the eye's above the plant's
+// middle (the facing mesh's normals carry its height as y), and reads that view (models/bake/crossed_billboard.h facing_view_plane and the atlas
+// layout: k_facing_elevations_deg 0, 8, 16, 30 degrees, the nearest chosen at the midpoints).
 struct facing_choice {
     float yaw;
-    bool shown;  // this vertex's quad is the one shown
+    bool shown;     // this vertex's quad is the one shown
+    int elevation;  // the index of the baked elevation shown
 };
-facing_choice face_the_eye(vec3 position, float own_yaw, vec3 model_normal) {
+facing_choice face_the_eye(vec3 position, float own_yaw, vec3 model_normal, float middle) {
     vec2 to_eye = -position.xz;
-    if (dot(to_eye, to_eye) <= 1e-12) return facing_choice(own_yaw, true);
+    if (dot(to_eye, to_eye) <= 1e-12) return facing_choice(own_yaw, true, 0);
     float eye_yaw = atan(to_eye.x, to_eye.y);
     float relative = eye_yaw - own_yaw;
     bool second = abs(sin(relative)) > abs(cos(relative));
     bool of_second = abs(model_normal.x) > abs(model_normal.z);
-    return facing_choice(second ? eye_yaw - 1.5707963267948966 : eye_yaw, second == of_second);
+    float elevation = degrees(atan(-position.y - middle, length(to_eye)));
+    int k = elevation < 4.0 ? 0 : elevation < 12.0 ? 1 : elevation < 23.0 ? 2 : 3;
+    return facing_choice(second ? eye_yaw - 1.5707963267948966 : eye_yaw, second == of_second, k);
+}
+const float k_facing_elevation_radians[4] = float[4](0.0, 0.13962634, 0.27925268, 0.52359878);
+
+// A facing quad's vertex (model space: the elevation-0 view's corner, its normal the quad's
+// horizontal one) moved onto the view at `elevation`: the plane tilted back about its horizontal
+// axis through the plant's `middle`, its edges (top - bottom) / 2 cos e + w sin e above and
+// below the middle along the tilted up axis (w the quad's half-width, the vertex's distance from
+// the trunk), as the bake drew it; the texture coordinates moved from the elevation-0 cell to
+// that view's.
+void tilt_facing_vertex(int elevation, float middle, inout vec3 position, inout vec3 normal, inout vec2 uv) {
+    float e = k_facing_elevation_radians[elevation];
+    float c = cos(e), s = sin(e);
+    vec3 across = vec3(position.x, 0.0, position.z);
+    float w = length(across);
+    bool top = uv.y < 0.5;
+    float v = (position.y - middle) * c + (top ? w * s : -w * s);
+    vec3 tilted_up = vec3(0.0, c, 0.0) - normal * s;
+    position = across + vec3(0.0, middle, 0.0) + v * tilted_up;
+    normal = normal * c + vec3(0.0, s, 0.0);
+    uv.x += float(elevation) / 7.0;  // two views of 1/14 of the atlas's width per elevation
 }
 
 instance_pose pose_instance() {
     instance_pose p;
     float yaw = in_instance_position_yaw.w;
+    vec3 position = in_position;
+    p.model_normal = in_normal;
+    p.uv = in_uv;
+    p.scale = in_instance_scale_tint_fade_layer.x;
 #ifdef FACING_EYE
-    facing_choice facing = face_the_eye(in_instance_position_yaw.xyz, yaw, in_normal);
+    facing_choice facing = face_the_eye(in_instance_position_yaw.xyz, yaw, in_normal, in_normal.y * p.scale);
     yaw = facing.yaw;
+    p.model_normal.y = 0.0;
+    tilt_facing_vertex(facing.elevation, in_normal.y, position, p.model_normal, p.uv);
 #endif
     p.s = sin(yaw);
     p.c = cos(yaw);
     p.rotation = mat3(p.c, 0.0, -p.s, 0.0, 1.0, 0.0, p.s, 0.0, p.c);
-    p.scale = in_instance_scale_tint_fade_layer.x;
-    p.world = p.rotation * (in_position * p.scale) + in_instance_position_yaw.xyz;
+    p.world = p.rotation * (position * p.scale) + in_instance_position_yaw.xyz;
 #ifdef FACING_EYE
     if (!facing.shown) p.world = in_instance_position_yaw.xyz;
 #endif

@@ -52,13 +52,13 @@ void main() {
     instance_pose pose = pose_instance();
     vec3 world = pose.world;
     v_position = world;
-    v_normal = pose.rotation * in_normal;
+    v_normal = pose.rotation * pose.model_normal;
 #if defined(IMPLICIT_LIGHTING) && (defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD))
     v_population = population_ambient(in_position);
 #elif defined(IMPLICIT_LIGHTING)
     v_normal *= population_ambient(in_position);  // the normal's length is k_a (Luft 2007 §3.2)
 #endif
-    v_uv = in_uv;
+    v_uv = pose.uv;
     v_tint = in_instance_scale_tint_fade_layer.y;
     v_layer = in_instance_scale_tint_fade_layer.w;
 #if defined(MATERIAL_BILLBOARD) || defined(MATERIAL_BILLBOARD_CLOUD)

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/bake/crossed_billboard.h"
 #include "systems/render/textures.h"
 
 namespace sylva::render {
@@ -72,7 +73,9 @@ scene_textures::scene_textures(const scene_assets& assets) {
         uploaded_bytes += xz.size() * sizeof(float);
     }
     if (!assets.billboard_albedo.empty()) {
-        billboard_albedo = make_texture_array(assets.billboard_albedo, false, true);
+        billboard_albedo =
+            make_texture_array(assets.billboard_albedo, false, true,
+                               crossed_billboard_atlas_columns(assets.billboard_albedo[0].height));
         billboard_normal = make_texture_array(assets.billboard_normal, false);
         if (!assets.billboard_transfer.empty())
             billboard_transfer = make_texture_array(assets.billboard_transfer, false);

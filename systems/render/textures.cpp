@@ -86,6 +86,15 @@ float alpha_coverage(const image_rgba8& image, float scale) {
     return texels ? float(passing) / float(texels) : 0.0f;
 }
 
+// Fraction of the texels of columns [first, last) whose alpha passes the test.
+float column_coverage(const image_rgba8& image, std::uint32_t first, std::uint32_t last) {
+    std::size_t passing = 0;
+    for (std::uint32_t y = 0; y < image.height; ++y)
+        for (std::uint32_t x = first; x < last; ++x) passing += image.at(x, y)[3] >= 128 ? 1 : 0;
+    const std::size_t texels = std::size_t(last - first) * image.height;
+    return texels ? float(passing) / float(texels) : 0.0f;
+}
+
 void preserve_alpha_coverage(image_rgba8& level, float target) {
     float low = 0.0f, high = 4.0f;
     for (int i = 0; i < 12; ++i) {  // coverage grows with the scale
@@ -97,7 +106,20 @@ void preserve_alpha_coverage(image_rgba8& level, float target) {
         level.texels[i] = std::uint8_t(std::min(255.0f, float(level.texels[i]) * scale + 0.5f));
 }
 
-gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, bool alpha_tested) {
+void preserve_alpha_coverage(image_rgba8& level, float target, std::uint32_t first,
+                             std::uint32_t last) {
+    if (first == 0 && last == level.width) return preserve_alpha_coverage(level, target);
+    image_rgba8 part{last - first, level.height,
+                     std::vector<std::uint8_t>(std::size_t(last - first) * level.height * 4)};
+    for (std::uint32_t y = 0; y < level.height; ++y)
+        std::copy_n(level.at(first, y), std::size_t(last - first) * 4, part.at(0, y));
+    preserve_alpha_coverage(part, target);
+    for (std::uint32_t y = 0; y < level.height; ++y)
+        std::copy_n(part.at(0, y), std::size_t(last - first) * 4, level.at(first, y));
+}
+
+gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, bool alpha_tested,
+                              std::span<const std::uint32_t> columns) {
     if (layers.empty()) throw std::invalid_argument("make_texture_array: no layers");
     const auto w = layers[0].width;
     const auto h = layers[0].height;
@@ -116,7 +138,19 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
         // Mips built here, each from the previous one: colour averaged over the opaque texels
         // only, alpha-test coverage kept. Level 0 itself goes up with its holes' colour bled
         // in, so bilinear taps at a leaf's outline do not mix in the cut-out's colour.
-        const float coverage = alpha_coverage(layers[i]);
+        // Each image of an atlas keeps its own coverage while every image is at least a texel
+        // wide; below that, the layer's.
+        std::vector<std::uint32_t> edges{0, w};
+        if (!columns.empty()) edges.assign(columns.begin(), columns.end());
+        if (edges.size() < 2 || edges.front() != 0 || edges.back() != w ||
+            !std::is_sorted(edges.begin(), edges.end()))
+            throw std::invalid_argument(
+                "make_texture_array: the columns must rise from 0 to the width");
+        const float whole = alpha_coverage(layers[i]);
+        std::vector<float> coverage(edges.size() - 1, 0.0f);
+        for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+            if (edges[k + 1] > edges[k])
+                coverage[k] = column_coverage(layers[i], edges[k], edges[k + 1]);
         image_rgba8 level = layers[i];
         bleed_colour(level);
         glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(i), GLsizei(w), GLsizei(h), 1, GL_RGBA,
@@ -124,7 +158,17 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
         for (int l = 1; l < levels; ++l) {
             level = downsample_cut_out(level);
             image_rgba8 kept = level;
-            preserve_alpha_coverage(kept, coverage);
+            bool apart = true;
+            for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+                apart = apart && (coverage[k] == 0.0f || (edges[k + 1] >> l) > (edges[k] >> l));
+            if (!apart) {
+                preserve_alpha_coverage(kept, whole);
+            } else {
+                for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+                    if (coverage[k] > 0.0f)
+                        preserve_alpha_coverage(kept, coverage[k], edges[k] >> l,
+                                                edges[k + 1] >> l);
+            }
             glTextureSubImage3D(texture.id(), l, 0, 0, GLint(i), GLsizei(kept.width), GLsizei(kept.height),
                                 1, GL_RGBA, GL_UNSIGNED_BYTE, kept.texels.data());
         }

@@ -40,6 +40,24 @@ TEST(alpha_mipmaps, rescaled_levels_keep_level_0_coverage) {
     }
 }
 
+// An atlas keeps each image's coverage apart (make_texture_array's columns): rescaling columns
+// [0, 4) of an 8 x 2 level whose rows read alpha 40, 80, 120, 160 there (coverage 0.25) to reach
+// 0.75 takes the smallest scale passing 80 (127.5 / 80 = 1.59: 40 stays below), and leaves
+// columns [4, 8) (alpha 100, passing nothing) as they were.
+TEST(alpha_mipmaps, an_atlas_image_keeps_its_own_coverage) {
+    image_rgba8 level{8, 2, std::vector<std::uint8_t>(8 * 2 * 4, 90)};
+    for (std::uint32_t y = 0; y < 2; ++y)
+        for (std::uint32_t x = 0; x < 8; ++x)
+            level.at(x, y)[3] = x < 4 ? std::uint8_t(40 * (x + 1)) : 100;
+    render::preserve_alpha_coverage(level, 0.75f, 0, 4);
+    for (std::uint32_t y = 0; y < 2; ++y) {
+        EXPECT_LT(level.at(0, y)[3], 128);
+        for (std::uint32_t x = 1; x < 4; ++x) EXPECT_GE(level.at(x, y)[3], 128) << x;
+        EXPECT_LE(level.at(1, y)[3], 130);  // the smallest scale that passes it
+        for (std::uint32_t x = 4; x < 8; ++x) EXPECT_EQ(level.at(x, y)[3], 100) << x;
+    }
+}
+
 TEST(alpha_mipmaps, downsample_is_a_2x2_box_filter) {
     image_rgba8 image{2, 2, {0, 0, 0, 0, 100, 100, 100, 100, 200, 200, 200, 200, 255, 255, 255, 255}};
     const image_rgba8 one = render::downsample(image);

@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "app/scenario_player.h"
+#include "components/bounds.h"
 #include "components/transform.h"
 #include "gl_test_support.h"
 #include "ladder_walk.h"
@@ -36,7 +37,8 @@ scenario oak_on(std::vector<ladder_step_settings> ladder) {
     return s;
 }
 
-// The oak's pixels in the ID buffer seen from `azimuth_deg` around it, level, 40 m away.
+// The oak's pixels in the ID buffer seen from `azimuth_deg` around it, level, 40 m away (or
+// from `elevation_deg` above its middle, looking at the middle).
 class orbit {
 public:
     explicit orbit(const char* rung)
@@ -45,25 +47,39 @@ public:
     struct seen {
         double pixels = 0.0;
         double fragments = 0.0;  // fragment shader invocations of the frame (0: not counted)
+        std::vector<bool> mask;  // the oak's pixels
     };
-    seen at(double azimuth_deg) {
+    seen at(double azimuth_deg) { return from(azimuth_deg, glm::dvec3(0.0, 6.0, 0.0), 0.0); }
+    seen at(double azimuth_deg, double elevation_deg) {
+        const double middle = double(m_player.world().table<bounds>().data()[0].center_height);
+        return from(azimuth_deg, glm::dvec3(0.0, middle, 0.0), elevation_deg);
+    }
+
+private:
+    seen from(double azimuth_deg, glm::dvec3 target, double elevation_deg) {
         ecs::world& world = m_player.world();
         const world_transform& oak = world.table<world_transform>().data()[0];
         const glm::dvec3 base = oak.position;
         const double a = azimuth_deg * M_PI / 180.0 + double(oak.yaw);
+        const double e = elevation_deg * M_PI / 180.0;
         camera_keyframe key;
-        key.position = base + glm::dvec3(40.0 * std::sin(a), 6.0, 40.0 * std::cos(a));
-        key.target = base + glm::dvec3(0.0, 6.0, 0.0);
+        key.position =
+            base + target +
+            40.0 * glm::dvec3(std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a));
+        key.target = base + target;
         key.fov_deg = 50.0f;
         world.resource<camera_track>().keys = {key};
         m_player.set_frame(0);
         const frame_record record = m_player.step();
         const std::vector<std::uint32_t> ids = m_player.capture_plant_ids();
-        return {double(std::count_if(ids.begin(), ids.end(), [](std::uint32_t id) { return id != 0; })),
-                double(record.fragments)};
+        seen out;
+        out.mask.resize(ids.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) out.mask[i] = ids[i] != 0;
+        out.pixels = double(std::count(out.mask.begin(), out.mask.end(), true));
+        out.fragments = double(record.fragments);
+        return out;
     }
 
-private:
     static player_options id_buffer() {
         player_options options;
         options.id_buffer = true;
@@ -99,6 +115,42 @@ TEST(facing_billboard, shows_the_nearer_quad_face_on_where_the_crossed_pair_thin
     // quads shade fragments.
     EXPECT_LT(c[2].pixels / c[0].pixels, 0.92);
     if (c[2].fragments > 0.0) EXPECT_LT(f[2].fragments, c[2].fragments);
+}
+
+double iou(const std::vector<bool>& a, const std::vector<bool>& b) {
+    std::size_t both = 0, either = 0;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        both += a[i] && b[i];
+        either += a[i] || b[i];
+    }
+    return either ? double(both) / double(either) : 0.0;
+}
+
+// Seen from above, the facing billboard tilts back to its nearest baked elevation and shows the
+// crown from there, so its silhouette follows the full mesh's; the crossed pair shows its level
+// views foreshortened. At eye level both show the same (the level views). (IoU with the mesh at
+// 0 / 16 / 30 degrees: facing 0.938 / 0.930 / 0.918, crossed 0.939 / 0.917 / 0.853; with the
+// quad tilted about the plant's foot instead of its middle, so that in perspective it stood
+// farther than the crown, facing 0.872 at 16 degrees.)
+TEST(facing_billboard, seen_from_above_shows_the_view_from_its_elevation) {
+    SYLVA_REQUIRE_GL();
+    orbit full("mesh_full");
+    orbit facing("facing_billboard");
+    orbit crossed("crossed_billboard");
+    for (const double elevation : {0.0, 16.0, 30.0}) {
+        const orbit::seen m = full.at(0.0, elevation), f = facing.at(0.0, elevation),
+                          c = crossed.at(0.0, elevation);
+        const double facing_iou = iou(f.mask, m.mask), crossed_iou = iou(c.mask, m.mask);
+        std::printf(
+            "elevation %4.1f deg: IoU with the full mesh facing %.4f crossed %.4f (%.0f / %.0f / "
+            "%.0f px)\n",
+            elevation, facing_iou, crossed_iou, m.pixels, f.pixels, c.pixels);
+        ASSERT_GT(m.pixels, 1000.0);
+        if (elevation == 0.0)
+            EXPECT_NEAR(facing_iou, crossed_iou, 0.02);
+        else
+            EXPECT_GT(facing_iou, crossed_iou + 0.01) << "at " << elevation << " deg";
+    }
 }
 
 // Across the band from the crossed billboard into the facing one the oak keeps its coverage

@@ -42,7 +42,8 @@ TEST(crossed_billboard_assets, every_species_gets_a_billboard_mesh_and_equal_siz
         EXPECT_NEAR(quads.bounds_max.y, s.species[i].height_m, 1e-3f * s.species[i].height_m) << e.name;
 
         const image_rgba8& albedo = assets.billboard_albedo[i];
-        EXPECT_EQ(albedo.width, 2 * k_species_billboard_resolution);
+        EXPECT_EQ(albedo.width,
+                  7 * k_species_billboard_resolution);  // two quads, eight facing views
         EXPECT_EQ(albedo.height, k_species_billboard_resolution);
         EXPECT_EQ(albedo.texels.size(), std::size_t(albedo.width) * albedo.height * 4);
         EXPECT_EQ(assets.billboard_normal[i].width, albedo.width);
