@@ -4,6 +4,7 @@
 #include <glm/vec4.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "models/bake/crossed_billboard.h"
 #include "systems/render/textures.h"
@@ -73,9 +74,12 @@ scene_textures::scene_textures(const scene_assets& assets) {
         uploaded_bytes += xz.size() * sizeof(float);
     }
     if (!assets.billboard_albedo.empty()) {
-        billboard_albedo =
-            make_texture_array(assets.billboard_albedo, false, true,
-                               crossed_billboard_atlas_columns(assets.billboard_albedo[0].height));
+        // The bake's atlases keep each image's coverage apart; an atlas made by hand (tests) is
+        // one image.
+        const image_rgba8& first = assets.billboard_albedo[0];
+        std::vector<std::uint32_t> columns = crossed_billboard_atlas_columns(first.height);
+        if (columns.back() != first.width) columns.clear();
+        billboard_albedo = make_texture_array(assets.billboard_albedo, false, true, columns);
         billboard_normal = make_texture_array(assets.billboard_normal, false);
         if (!assets.billboard_transfer.empty())
             billboard_transfer = make_texture_array(assets.billboard_transfer, false);
