@@ -32,8 +32,10 @@ struct instance_pose {
 // quad, whose front is +x. Its normal and transfer pages turn with it. Straight above the plant
 // there is no azimuth: both quads at the plant's own yaw, the crossed billboard.
 // The shown quad is then tilted back to the baked elevation nearest the eye's above the plant's
-// middle (the facing mesh's normals carry its height as y), and reads that view (models/bake/crossed_billboard.h facing_view_plane and the atlas
-// layout: k_facing_elevations_deg 0, 8, 16, 30 degrees, the nearest chosen at the midpoints).
+// middle (the facing mesh's normals carry its height as y) and reads that view: models/bake/
+// crossed_billboard.h facing_view_plane and its atlas layout (k_facing_elevations_deg 0, 8, 16
+// and 30 degrees, the nearest chosen at the midpoints; seven R-wide columns, the views from the
+// third and a half on). tests/gl/facing_billboard_gl_test.cpp draws it against the full mesh.
 struct facing_choice {
     float yaw;
     bool shown;     // this vertex's quad is the one shown
