@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -86,6 +87,8 @@ float alpha_coverage(const image_rgba8& image, float scale) {
     return texels ? float(passing) / float(texels) : 0.0f;
 }
 
+namespace {
+
 // Fraction of the texels of columns [first, last) whose alpha passes the test.
 float column_coverage(const image_rgba8& image, std::uint32_t first, std::uint32_t last) {
     std::size_t passing = 0;
@@ -94,6 +97,8 @@ float column_coverage(const image_rgba8& image, std::uint32_t first, std::uint32
     const std::size_t texels = std::size_t(last - first) * image.height;
     return texels ? float(passing) / float(texels) : 0.0f;
 }
+
+}  // namespace
 
 void preserve_alpha_coverage(image_rgba8& level, float target) {
     float low = 0.0f, high = 4.0f;
@@ -144,8 +149,10 @@ gl_texture make_texture_array(std::span<const image_rgba8> layers, bool repeat, 
         if (!columns.empty()) edges.assign(columns.begin(), columns.end());
         if (edges.size() < 2 || edges.front() != 0 || edges.back() != w ||
             !std::is_sorted(edges.begin(), edges.end()))
-            throw std::invalid_argument(
-                "make_texture_array: the columns must rise from 0 to the width");
+            throw std::invalid_argument("make_texture_array: " + std::to_string(edges.size()) +
+                                        " column edges from " + std::to_string(edges.front()) + " to " +
+                                        std::to_string(edges.back()) + " for layers " +
+                                        std::to_string(w) + " wide (they must rise from 0 to it)");
         const float whole = alpha_coverage(layers[i]);
         std::vector<float> coverage(edges.size() - 1, 0.0f);
         for (std::size_t k = 0; k + 1 < edges.size(); ++k)
