@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ecs/parallel.h"
 #include "models/bake/transfer_pages.h"
 
 namespace sylva {
@@ -176,23 +177,31 @@ crossed_billboard bake_crossed_billboard(const plant_model& model,
         atlas->texels.assign(std::size_t(atlas->width) * atlas->height * 4, 0);
     }
     if (transfer) out.transfer_pages = blank_transfer_pages(out.albedo.width, out.albedo.height);
-    const auto place = [&](const billboard_plane& plane, const billboard_bake_settings& at,
-                           std::uint32_t x0, std::uint32_t y0) {
-        const billboard_image image = bake_billboard(source, plane, at);
-        blit(out.albedo, image.albedo, x0, y0);
-        blit(out.normal, image.normal, x0, y0);
-        if (transfer) blit_transfer(out.transfer_pages, image, x0, y0);
+    // The two crossed quads and the eight facing views, each into its own columns: baked in
+    // parallel (no two touch the same texels; each bake is deterministic). On the 135 k-triangle
+    // broadleaf_hd the ten took 1.23 s one after another and 0.61 s on 2 cores; the two quads
+    // alone, the whole bake before the views, 0.34 s.
+    struct view {
+        billboard_plane plane;
+        billboard_bake_settings settings;
+        std::uint32_t column;
     };
+    std::vector<view> views;
     for (std::size_t q = 0; q < planes.size(); ++q) {
-        place(planes[q], bake, std::uint32_t(q) * settings.resolution, 0);
+        views.push_back({planes[q], bake, std::uint32_t(q) * settings.resolution});
         add_quad(out.mesh, planes[q], q);
     }
-    billboard_bake_settings view = bake;
-    view.width = settings.resolution / 2;
+    billboard_bake_settings facing = bake;
+    facing.width = settings.resolution / 2;
     for (std::size_t k = 0; k < k_facing_elevations_deg.size(); ++k)
         for (std::size_t q = 0; q < planes.size(); ++q)
-            place(facing_view_plane(planes, q, k), view, facing_column(q, k, settings.resolution),
-                  0);
+            views.push_back({facing_view_plane(planes, q, k), facing, facing_column(q, k, settings.resolution)});
+    ecs::parallel_for_each_index(views.size(), [&](std::size_t i) {
+        const billboard_image image = bake_billboard(source, views[i].plane, views[i].settings);
+        blit(out.albedo, image.albedo, views[i].column, 0);
+        blit(out.normal, image.normal, views[i].column, 0);
+        if (transfer) blit_transfer(out.transfer_pages, image, views[i].column, 0);
+    });
     out.mesh.submeshes.push_back({0, std::uint32_t(out.mesh.indices.size()), material_kind::billboard});
     const extent e = extent_of(out.mesh);
     out.mesh.bounds_min = e.min;
