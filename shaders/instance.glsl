@@ -33,9 +33,10 @@ struct instance_pose {
 // there is no azimuth: both quads at the plant's own yaw, the crossed billboard.
 // The shown quad is then tilted back to the baked elevation nearest the eye's above the plant's
 // middle (the facing mesh's normals carry its height as y) and reads that view: models/bake/
-// crossed_billboard.h facing_view_plane and its atlas layout (k_facing_elevations_deg 0, 8, 16
-// and 30 degrees, the nearest chosen at the midpoints; seven R-wide columns, the views from the
-// third and a half on). tests/gl/facing_billboard_gl_test.cpp draws it against the full mesh.
+// crossed_billboard.h facing_view_plane and its atlas layout, given as FACING_ELEVATIONS (radians)
+// and FACING_ELEVATION_S (the atlas's width one elevation's views take; program_table.cpp).
+// tests/gl/facing_billboard_gl_test.cpp draws it against the full mesh.
+#ifdef FACING_EYE
 struct facing_choice {
     float yaw;
     bool shown;     // this vertex's quad is the one shown
@@ -48,11 +49,12 @@ facing_choice face_the_eye(vec3 position, float own_yaw, vec3 model_normal, floa
     float relative = eye_yaw - own_yaw;
     bool second = abs(sin(relative)) > abs(cos(relative));
     bool of_second = abs(model_normal.x) > abs(model_normal.z);
-    float elevation = degrees(atan(-position.y - middle, length(to_eye)));
-    int k = elevation < 4.0 ? 0 : elevation < 12.0 ? 1 : elevation < 23.0 ? 2 : 3;
+    float elevation = atan(-position.y - middle, length(to_eye));
+    int k = 0;  // the nearest: past the midpoint to the next
+    for (int i = 1; i < 4; ++i)
+        if (elevation > 0.5 * (FACING_ELEVATIONS[i - 1] + FACING_ELEVATIONS[i])) k = i;
     return facing_choice(second ? eye_yaw - 1.5707963267948966 : eye_yaw, second == of_second, k);
 }
-const float k_facing_elevation_radians[4] = float[4](0.0, 0.13962634, 0.27925268, 0.52359878);
 
 // A facing quad's vertex (model space: the elevation-0 view's corner, its normal the quad's
 // horizontal one) moved onto the view at `elevation`: the plane tilted back about its horizontal
@@ -61,7 +63,7 @@ const float k_facing_elevation_radians[4] = float[4](0.0, 0.13962634, 0.27925268
 // the trunk), as the bake drew it; the texture coordinates moved from the elevation-0 cell to
 // that view's.
 void tilt_facing_vertex(int elevation, float middle, inout vec3 position, inout vec3 normal, inout vec2 uv) {
-    float e = k_facing_elevation_radians[elevation];
+    float e = FACING_ELEVATIONS[elevation];
     float c = cos(e), s = sin(e);
     vec3 across = vec3(position.x, 0.0, position.z);
     float w = length(across);
@@ -70,8 +72,9 @@ void tilt_facing_vertex(int elevation, float middle, inout vec3 position, inout 
     vec3 tilted_up = vec3(0.0, c, 0.0) - normal * s;
     position = across + vec3(0.0, middle, 0.0) + v * tilted_up;
     normal = normal * c + vec3(0.0, s, 0.0);
-    uv.x += float(elevation) / 7.0;  // two views of 1/14 of the atlas's width per elevation
+    uv.x += float(elevation) * FACING_ELEVATION_S;  // two views per elevation
 }
+#endif
 
 instance_pose pose_instance() {
     instance_pose p;

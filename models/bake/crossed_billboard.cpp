@@ -31,15 +31,14 @@ extent extent_of(const mesh_data& mesh) {
     return e;
 }
 
-// Copies `src` into `dst` with its top-left texel at (x0, y0).
-void blit(image_rgba8& dst, const image_rgba8& src, std::uint32_t x0, std::uint32_t y0) {
+// Copies `src` into `dst` with its left edge at column `x0`.
+void blit(image_rgba8& dst, const image_rgba8& src, std::uint32_t x0) {
     for (std::uint32_t y = 0; y < src.height; ++y)
-        std::memcpy(dst.at(x0, y0 + y), src.at(0, y), std::size_t(src.width) * 4);
+        std::memcpy(dst.at(x0, y), src.at(0, y), std::size_t(src.width) * 4);
 }
 
 // The atlas's columns: the two crossed quads' images, R wide each, an empty R/2, the facing
 // views, R/2 wide each, by elevation and then quad, and an empty R/2 (the header's layout).
-constexpr std::uint32_t k_atlas_widths = 7;  // the atlas is this many R wide
 std::uint32_t facing_column(std::size_t quad, std::size_t elevation, std::uint32_t resolution) {
     return std::uint32_t(2 * k_crossed_billboard_quads + 1 + 2 * elevation + quad) *
            (resolution / 2);
@@ -61,8 +60,8 @@ void add_quad(mesh_data& mesh, const billboard_plane& plane, glm::vec2 lower_lef
 
 // A crossed quad: its image in the atlas's column `slot`.
 void add_quad(mesh_data& mesh, const billboard_plane& plane, std::size_t slot) {
-    const float s0 = float(slot) / float(k_atlas_widths);
-    const float s1 = float(slot + 1) / float(k_atlas_widths);
+    const float s0 = float(slot) / float(k_crossed_billboard_atlas_widths);
+    const float s1 = float(slot + 1) / float(k_crossed_billboard_atlas_widths);
     add_quad(mesh, plane, {s0, 1.0f}, {s1, 0.0f});
 }
 
@@ -75,7 +74,7 @@ std::vector<std::uint32_t> crossed_billboard_atlas_columns(std::uint32_t resolut
             columns.push_back(facing_column(q, k, resolution));
     columns.push_back(
         facing_column(0, k_facing_elevations_deg.size(), resolution));  // the last empty one
-    columns.push_back(k_atlas_widths * resolution);
+    columns.push_back(k_crossed_billboard_atlas_widths * resolution);
     return columns;
 }
 
@@ -124,12 +123,11 @@ mesh_data facing_billboard_mesh(const mesh_data& crossed) {
         planes[q] = {v[0].position, v[1].position - v[0].position, v[3].position - v[0].position};
     }
     mesh_data out;
-    const float first =
-        (float(k_crossed_billboard_quads) + 0.5f) / float(k_atlas_widths);  // facing_column
-    const float cell = 0.5f / float(k_atlas_widths);
+    // The elevation-0 views' columns as fractions of the atlas (at R = 2 a view is one texel).
+    const auto s_of = [](std::size_t column) { return float(column) / float(2 * k_crossed_billboard_atlas_widths); };
     for (std::size_t q = 0; q < planes.size(); ++q)
-        add_quad(out, facing_view_plane(planes, q, 0), {first + float(q) * cell, 1.0f},
-                 {first + float(q + 1) * cell, 0.0f});
+        add_quad(out, facing_view_plane(planes, q, 0), {s_of(facing_column(q, 0, 2)), 1.0f},
+                 {s_of(facing_column(q, 0, 2) + 1), 0.0f});
     // The eye's elevation is measured from the plant's middle, the same point for all four
     // corners: each vertex carries its height as its normal's y (the quads' normals are
     // horizontal, and the shader replaces them by the tilted view's).
@@ -172,7 +170,7 @@ crossed_billboard bake_crossed_billboard(const plant_model& model,
 
     crossed_billboard out;
     for (image_rgba8* atlas : {&out.albedo, &out.normal}) {
-        atlas->width = settings.resolution * k_atlas_widths;
+        atlas->width = settings.resolution * k_crossed_billboard_atlas_widths;
         atlas->height = settings.resolution;
         atlas->texels.assign(std::size_t(atlas->width) * atlas->height * 4, 0);
     }
@@ -198,8 +196,8 @@ crossed_billboard bake_crossed_billboard(const plant_model& model,
             views.push_back({facing_view_plane(planes, q, k), facing, facing_column(q, k, settings.resolution)});
     ecs::parallel_for_each_index(views.size(), [&](std::size_t i) {
         const billboard_image image = bake_billboard(source, views[i].plane, views[i].settings);
-        blit(out.albedo, image.albedo, views[i].column, 0);
-        blit(out.normal, image.normal, views[i].column, 0);
+        blit(out.albedo, image.albedo, views[i].column);
+        blit(out.normal, image.normal, views[i].column);
         if (transfer) blit_transfer(out.transfer_pages, image, views[i].column, 0);
     });
     out.mesh.submeshes.push_back({0, std::uint32_t(out.mesh.indices.size()), material_kind::billboard});

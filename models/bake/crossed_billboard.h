@@ -52,9 +52,11 @@ namespace sylva {
 // 2: meshes in models/cache/mesh_io.h form; 3: optional transfer pages; 4: the facing views
 constexpr std::uint32_t k_crossed_billboard_format = 4;
 constexpr std::size_t k_crossed_billboard_quads = 2;
-// The facing views' elevations above the horizon, in degrees (shaders/instance.glsl holds the
-// same four; a GL test draws each).
+// The facing views' elevations above the horizon, in degrees (the facing programs get them, and
+// the layout, as defines: systems/render/program_table.cpp).
 constexpr std::array<float, 4> k_facing_elevations_deg{0.0f, 8.0f, 16.0f, 30.0f};
+// The atlas is this many R wide (the layout above); one elevation's two views are 1/7 of it.
+constexpr std::uint32_t k_crossed_billboard_atlas_widths = 7;
 
 struct crossed_billboard_settings {
     std::uint32_t resolution = 256;   // each quad's image is resolution x resolution texels, each

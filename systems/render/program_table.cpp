@@ -1,6 +1,9 @@
 #include "systems/render/program_table.h"
 
 #include <stdexcept>
+#include <string>
+
+#include "models/bake/crossed_billboard.h"
 
 namespace sylva::render {
 namespace {
@@ -201,7 +204,15 @@ program_source program_table::source_of(pass_kind pass, material_kind material,
     if (material == material_kind::ground) source.defines.push_back("MATERIAL_GROUND");
     if (is_billboard(material)) source.defines.push_back("MATERIAL_BILLBOARD");
     // Turned to the eye in the view only: in a shadow map it would turn with the eye too.
-    if (material == material_kind::facing_billboard && !shadow) source.defines.push_back("FACING_EYE");
+    // Its views' elevations and their place in the atlas, from the bake (models/bake/
+    // crossed_billboard.h).
+    if (material == material_kind::facing_billboard && !shadow) {
+        source.defines.push_back("FACING_EYE");
+        const auto& e = k_facing_elevations_deg;
+        source.defines.push_back("FACING_ELEVATIONS radians(vec4(" + std::to_string(e[0]) + ", " + std::to_string(e[1]) +
+                                 ", " + std::to_string(e[2]) + ", " + std::to_string(e[3]) + "))");
+        source.defines.push_back("FACING_ELEVATION_S (1.0 / " + std::to_string(k_crossed_billboard_atlas_widths) + ".0)");
+    }
     if (material == material_kind::billboard_cloud) {
         source.defines.push_back("MATERIAL_BILLBOARD_CLOUD");
         if (lighting == lighting_variant::pre_lit) source.defines.push_back("CLOUD_PRE_LIT");
