@@ -35,5 +35,20 @@ TEST(scenario_options, a_zero_plant_budget_switches_the_ladder_by_projected_size
     EXPECT_EQ(s.lod.plant_budget_ms, 0.0);
 }
 
+TEST(scenario_options,
+     a_frame_time_target_climbs_from_the_cheapest_rungs_not_from_the_file_s_budget) {
+    scenario_options o;
+    o.path = std::string(SYLVA_SOURCE_DIR) + "/scenarios/landscape.json";
+    ASSERT_GT(load_with_overrides(o).lod.plant_budget_ms, 0.0);
+    o.target_frame_ms = 150.0;
+    scenario s = load_with_overrides(o);
+    EXPECT_EQ(s.lod.target_frame_ms, 150.0);
+    EXPECT_EQ(s.lod.plant_budget_ms, 0.0);
+    o.plant_budget_ms = 40.0;  // a start given beside it is kept
+    s = load_with_overrides(o);
+    EXPECT_EQ(s.lod.target_frame_ms, 150.0);
+    EXPECT_EQ(s.lod.plant_budget_ms, 40.0);
+}
+
 }  // namespace
 }  // namespace sylva
