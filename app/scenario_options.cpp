@@ -71,12 +71,10 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
     command
         .add_option("--target-frame-ms", options.target_frame_ms,
                     "Hold this GPU frame time (not deterministic; overrides lod.target_frame_ms): "
-                    "with points_lines "
-                    "by adapting d' every frame, with --representation ladder by adapting the auto "
-                    "ladder's plant "
-                    "budget every frame, from every plant on its cheapest rung (--plant-budget-ms "
-                    "gives another "
-                    "start; the file's plant budget is not one)")
+                    "with points_lines by adapting d' every frame, with --representation ladder by "
+                    "adapting the auto ladder's plant budget every frame, from every plant on its "
+                    "cheapest rung (--plant-budget-ms gives another start; the file's plant budget "
+                    "is not one)")
         ->check(CLI::Range(0.0, 1e5));
     command
         .add_option("--plant-budget-ms", options.plant_budget_ms,
