@@ -43,7 +43,7 @@ std::string error_from(F&& attempt) {
     return {};
 }
 
-// The embedded scenarios/tiny.json (k_stress_scenario).
+// The embedded scenarios/tiny.json (k_stress_scenario), drawn by its mesh levels.
 scenario tiny_scenario();
 
 // Plays frames 0 and 1 (the first frame has no previous LOD state) and captures frame 1.

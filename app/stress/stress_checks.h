@@ -44,7 +44,8 @@ struct stress_row {
     std::string detail;  // why it failed, or what else was seen
 };
 
-// The tiny scenario (embedded scenarios/tiny.json) the GL checks render, 160x90.
+// The tiny scenario (embedded scenarios/tiny.json) the GL checks render, 160x90, by its mesh levels
+// (stress::tiny_scenario).
 inline constexpr const char* k_stress_scenario = "scenarios/tiny.json";
 
 // Renders tiny.json at world offsets 0, 1e4, 1e5, 1e6 m (x and z) and compares each with the

@@ -112,12 +112,13 @@ TEST(bench_command, representation_options_add_the_configuration_play_would_draw
 }
 
 TEST(bench_command, options_that_do_not_apply_are_refused_not_ignored) {
-    // tiny draws mesh levels: d' and budgets mean nothing there.
+    // Over mesh levels d' and budgets mean nothing.
     for (const char* option : {"--sample-distance 2", "--splats soft", "--primitive-budget 1000", "--target-frame-ms 30"}) {
         const auto dir = std::filesystem::temp_directory_path() / "sylva_bench_refused";
         std::filesystem::remove_all(dir);
-        const auto r = test::run_sylva(std::string("bench tiny --frames 1 --only baseline ") + option + " --out " +
-                                       dir.string());
+        const auto r = test::run_sylva(
+            std::string("bench tiny --representation mesh_levels --frames 1 --only baseline ") +
+            option + " --out " + dir.string());
         EXPECT_EQ(r.exit_code, 2) << option << ": " << r.output;
         const std::string name = std::string(option).substr(0, std::string(option).find(' '));
         EXPECT_NE(r.output.find(name + " sets points and lines"), std::string::npos) << r.output;

@@ -189,8 +189,13 @@ std::vector<hostile_case> hostile_cases() {
                      {"x.glb", "File too large"}, "ulimit -f 8;"});
     cases.push_back({"export_cloud_on_a_full_disk", {}, "export-cloud grass --texture-size 16 --out {dir}/c.glb", 1,
                      {"c.glb", "File too large"}, "ulimit -f 8;"});
-    cases.push_back({"play_on_a_full_disk", {}, "play tiny --headless --frames 2 --width 32 --height 18 --out {dir}/out",
-                     1, {"frame_0000.png", "File too large"}, "ulimit -f 0;"});
+    cases.push_back({"play_on_a_full_disk",
+                     {},
+                     "play tiny --representation mesh_levels --headless --frames 2 --width 32 "
+                     "--height 18 --out {dir}/out",
+                     1,
+                     {"frame_0000.png", "File too large"},
+                     "ulimit -f 0;"});
     // --- glTF: containers, nesting, confinement, lies about sizes ------------------------------
     auto inspect_case = [&](std::string name, std::function<void(const fs::path&)> setup,
                             std::vector<std::string> expected, std::string file = "model/tree.glb",

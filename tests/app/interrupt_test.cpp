@@ -68,9 +68,11 @@ int exit_code_of(pid_t child) {
 void expect_partial_play(int signal, int expected_code, const std::string& signal_name) {
     const fs::path dir = test::fresh_temp_dir("interrupt_play_" + signal_name);
     const fs::path log = dir / "log.txt";
-    const pid_t child = start("play tiny --headless --frames 100000 --width 32 --height 18 --out " +
-                                  (dir / "out").string(),
-                              log);
+    const pid_t child = start(
+        "play tiny --representation mesh_levels --headless --frames 100000 --width 32 --height 18 "
+        "--out " +
+            (dir / "out").string(),
+        log);
     ASSERT_TRUE(wait_for(child, log, "frame 3/100000")) << read_all(log);
     ::kill(child, signal);
     EXPECT_EQ(exit_code_of(child), expected_code) << read_all(log);

@@ -52,7 +52,7 @@ TEST(play_command, missing_file_and_bad_option_values_exit_2) {
 // The auto ladder's options on the command line: each needs a ladder, and a threshold is not
 // a budget. The message names the option, the field and the value, and exits 2 before drawing.
 TEST(play_command, ladder_budget_options_without_a_ladder_or_together_exit_2_naming_them) {
-    const result error = run("play tiny --headless --max-error 0.05");
+    const result error = run("play tiny --headless --representation mesh_levels --max-error 0.05");
     EXPECT_EQ(error.exit_code, 2);
     EXPECT_NE(error.output.find("--max-error"), std::string::npos) << error.output;
     EXPECT_NE(error.output.find("/lod/max_error"), std::string::npos) << error.output;
@@ -151,7 +151,9 @@ TEST(play_command, reference_and_full_geometry_draw_every_plant_at_full_detail) 
 TEST(play_command, exr_frames_are_written_through_openimageio) {
     const fs::path out = temp_dir("exr");
     const std::string scenario = std::string(SYLVA_SOURCE_DIR) + "/scenarios/tiny.json";
-    const result r = run("play " + scenario + " --headless --frames 1 --format exr --out " + out.string());
+    const result r = run("play " + scenario +
+                         " --representation mesh_levels --headless --frames 1 --format exr --out " +
+                         out.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     std::ifstream exr(out / "frame_0000.exr", std::ios::binary);
     char magic[4] = {};

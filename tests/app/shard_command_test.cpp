@@ -83,7 +83,9 @@ TEST(shard_command, bench_shards_merge_into_the_whole_bench_with_its_transitions
 
 TEST(shard_command, bad_ranges_and_merges_exit_2_naming_what_is_wrong) {
     const fs::path dir = test::fresh_temp_dir("shard_errors");
-    const auto beyond = test::run_sylva("play tiny --headless --frame-range 2:9 --out " + (dir / "x").string());
+    const auto beyond = test::run_sylva(
+        "play tiny --representation mesh_levels --headless --frame-range 2:9 --out " +
+        (dir / "x").string());
     EXPECT_EQ(beyond.exit_code, 2);
     EXPECT_NE(beyond.output.find("--frame-range 2:9"), std::string::npos) << beyond.output;
     EXPECT_FALSE(fs::exists(dir / "x"));
@@ -96,7 +98,11 @@ TEST(shard_command, bad_ranges_and_merges_exit_2_naming_what_is_wrong) {
     EXPECT_NE(timed.output.find("frame-time target"), std::string::npos) << timed.output;
     EXPECT_FALSE(fs::exists(dir / "t"));
 
-    ASSERT_EQ(test::run_sylva("play tiny --headless --frames 4 --frame-range 0:2 --out " + (dir / "a").string()).exit_code, 0);
+    ASSERT_EQ(test::run_sylva("play tiny --representation mesh_levels --headless --frames 4 "
+                              "--frame-range 0:2 --out " +
+                              (dir / "a").string())
+                  .exit_code,
+              0);
     const auto gap = test::run_sylva("merge " + (dir / "a").string() + " --out " + (dir / "m").string());
     EXPECT_EQ(gap.exit_code, 2);
     EXPECT_NE(gap.output.find("frames 2 to 3 of the path are in no shard"), std::string::npos) << gap.output;

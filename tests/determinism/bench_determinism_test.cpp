@@ -10,6 +10,7 @@
 #include "../gl/gl_test_support.h"
 #include "app/bench_runner.h"
 #include "scenarios/scenario_loader.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
@@ -25,7 +26,7 @@ std::vector<bench_configuration_spec> some_configurations() {
 }
 
 bench_report bench_tiny(int threads) {
-    scenario s = load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    scenario s = testing::tiny_with_mesh_levels();
     bench_settings settings;
     settings.threads = threads;
     settings.costs = primitive_costs{1.0, 0.5, 4.0};  // fixed: a measurement would differ run to run
@@ -100,8 +101,7 @@ TEST(bench_determinism, errors_and_primitives_are_identical_for_1_and_2_threads)
 // of the round-by-round ratios.
 TEST(bench_timing_rounds, later_rounds_time_every_configuration_and_change_no_error) {
     SYLVA_REQUIRE_GL();
-    scenario s =
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    scenario s = testing::tiny_with_mesh_levels();
     s.frames = 3;
     std::vector<bench_configuration_spec> chosen;
     for (const auto& c : default_bench_configurations())

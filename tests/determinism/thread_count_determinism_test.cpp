@@ -7,6 +7,7 @@
 #include "../gl/gl_test_support.h"
 #include "app/scenario_player.h"
 #include "scenarios/scenario_loader.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
@@ -17,7 +18,7 @@ struct run_hashes {
 };
 
 scenario tiny() {
-    return load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    return testing::tiny_with_mesh_levels();
 }
 
 run_hashes play(int threads, render::gl_context* context) {

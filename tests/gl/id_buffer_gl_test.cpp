@@ -9,12 +9,13 @@
 #include "components/lod_state.h"
 #include "gl_test_support.h"
 #include "scenarios/scenario_loader.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
 
 scenario tiny() {
-    return load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    return testing::tiny_with_mesh_levels();
 }
 
 TEST(id_buffer, names_visible_plants_and_leaves_the_image_unchanged) {

@@ -11,12 +11,13 @@
 #include "measure/image_metrics.h"
 #include "measure/temporal_metrics.h"
 #include "scenarios/scenario_loader.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
 
 scenario tiny() {
-    return load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    return testing::tiny_with_mesh_levels();
 }
 
 player_options points_lines(float sample_distance_px) {

@@ -13,8 +13,9 @@
 #include "models/cache/bake_cache.h"
 #include "models/random.h"
 #include "scenarios/scenario_loader.h"
-#include "systems/render/primitive_cost_calibration.h"
 #include "setup/spawn_scenario.h"
+#include "systems/render/primitive_cost_calibration.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
@@ -28,9 +29,7 @@ std::unique_ptr<render::renderer> small_renderer(const scene_assets& assets) {
 }
 
 scene_assets tiny_assets() {
-    return build_scene_assets(
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json"),
-        nullptr);
+    return build_scene_assets(testing::tiny_with_mesh_levels(), nullptr);
 }
 
 using testing::quick_calibration;
@@ -133,8 +132,7 @@ TEST(primitive_cost_calibration, leaves_no_trace_in_the_frames_after_it) {
     // after it must equal the same frame without it (it once left its own sky behind, because
     // both environments carried revision 1).
     SYLVA_REQUIRE_GL();
-    const scenario s =
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    const scenario s = testing::tiny_with_mesh_levels();
     const std::filesystem::path dir =
         std::filesystem::path(::testing::TempDir()) / "sylva_calibration_trace";
     std::filesystem::remove_all(dir);

@@ -11,6 +11,7 @@
 #include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
 #include "systems/render/shader_work_calibration.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
@@ -18,8 +19,7 @@ namespace {
 using testing::quick_calibration;
 
 struct shadowed_renderer {
-    scene_assets assets = build_scene_assets(
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json"), nullptr);
+    scene_assets assets = build_scene_assets(testing::tiny_with_mesh_levels(), nullptr);
     std::unique_ptr<render::renderer> r = [this] {
         render::renderer_settings settings;
         settings.width = 320;
@@ -87,8 +87,7 @@ TEST(shader_work_calibration, refuses_a_timer_that_sees_no_work) {
 
 TEST(shader_work_calibration, refuses_a_renderer_without_shadow_maps_before_timing_anything) {
     SYLVA_REQUIRE_GL();
-    const scene_assets assets = build_scene_assets(
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json"), nullptr);
+    const scene_assets assets = build_scene_assets(testing::tiny_with_mesh_levels(), nullptr);
     render::renderer_settings settings;
     settings.width = 320;
     settings.height = 180;

@@ -8,12 +8,13 @@
 
 #include "../gl/gl_test_support.h"
 #include "golden_support.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
 
 scenario tiny() {
-    return load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
+    return testing::tiny_with_mesh_levels();
 }
 
 TEST(golden, tiny_scenario_frame_3_matches_the_committed_image) {

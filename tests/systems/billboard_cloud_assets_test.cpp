@@ -8,14 +8,14 @@
 #include "models/image/image_ops.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
 
 // A tree (4 m and taller: 1024 x 512 atlas) and a small plant (512 x 256).
 scenario tree_and_fern() {
-    scenario s =
-        load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios" / "tiny.json");
+    scenario s = testing::tiny_with_mesh_levels();
     s.species.resize(2);
     s.species[1].name = "fern";
     s.species[1].generator = "fern";

@@ -1,19 +1,22 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
-#include <unistd.h>
 
 #include "models/cache/bake_cache.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
 #include "setup/species_models.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
 
 namespace fs = std::filesystem;
 
-scenario tiny() { return load_scenario_file(fs::path(SYLVA_SOURCE_DIR) / "scenarios" / "tiny.json"); }
+scenario tiny() {
+    return testing::tiny_with_mesh_levels();
+}
 
 TEST(crossed_billboard_assets, every_species_gets_a_billboard_mesh_and_equal_sized_atlas_layers) {
     const scenario s = tiny();

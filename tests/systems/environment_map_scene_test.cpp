@@ -8,10 +8,11 @@
 
 #include "components/environment.h"
 #include "components/sun.h"
-#include "scenarios/scenario_loader.h"
 #include "lighting/sky_model.h"
-#include "systems/project_environment_system.h"
+#include "scenarios/scenario_loader.h"
 #include "setup/spawn_scenario.h"
+#include "systems/project_environment_system.h"
+#include "tests/tiny_scene.h"
 
 namespace sylva {
 namespace {
@@ -38,7 +39,7 @@ fs::path write_map(const std::string& name, int width, int height) {
 }
 
 scenario tiny_with_map(const fs::path& map) {
-    scenario s = load_scenario_file(fs::path(SYLVA_SOURCE_DIR) / "scenarios" / "tiny.json");
+    scenario s = testing::tiny_with_mesh_levels();
     s.species.resize(1);  // the map is what is tested; one species keeps the assets quick
     s.populations.resize(1);
     s.populations[0].species = s.species[0].name;
