@@ -23,6 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 KEPT = os.path.join(HERE, "results", "ladder_verdict")
 PAGE = os.path.join(HERE, "results", "ladder_verdict.md")
 BASELINE_POINTS = ["crossed_billboard_only", "baseline_25m", "baseline", "baseline_100m"]
+NOISE = 0.03  # this machine's timing noise in a time ratio
 
 
 def same_image(a, b):
@@ -66,7 +67,42 @@ def scenario_section(kept):
         out.append(f"| `{name}` | {point(b)} | {said} | {twin} | {near_text} |")
     out += ["", f"Every point beaten: {'yes' if verdict['beats_every_baseline_point'] else 'no'} "
             "(a ✓ or ✗ at 1.00 ± 0.03 is within this machine's timing noise; a tie draws the same image).", ""]
-    return out
+    return out + transitions_section(by_name, autos)
+
+
+def figure(value):
+    return "n/a" if value is None or value != value else f"{value:.2f}"
+
+
+def transitions_section(by_name, autos):
+    """Issue 21's transitions at equal frame time: for each baseline point, the slowest auto point
+    at most as slow (within the timing noise, 0.03), its popping and lighting jump against the
+    baseline point's. A jump is n/a when no plant finished a change of representation over the
+    frames (nothing to measure, not 0)."""
+    out = ["Transitions at equal frame time (the slowest auto point at most 0.03× slower than the "
+           "baseline point; popping and lighting jump, lower is better):", "",
+           "| baseline point | auto point | popping | lighting jump |", "|---|---|---|---|"]
+    for name in BASELINE_POINTS:
+        if name not in by_name:
+            continue
+        b = by_name[name]
+        t = b["frame_ms"]["vs_baseline"]
+        cheaper = [a for a in autos if a["frame_ms"]["vs_baseline"] <= t + NOISE]
+        if not cheaper:
+            out.append(f"| `{name}` | none at or below {t + NOISE:.2f}× | | |")
+            continue
+        a = max(cheaper, key=lambda c: c["frame_ms"]["vs_baseline"])
+        ea, eb = a["error"], b["error"]
+        pop = f"{figure(ea['popping'])} against {figure(eb['popping'])} {'✓' if ea['popping'] < eb['popping'] else '✗'}"
+        ja, jb = ea.get("lighting_jump"), eb.get("lighting_jump")
+        if jb is None:
+            jump = f"{figure(ja)} against n/a (no whole transition in its frames)"
+        elif ja is None:
+            jump = f"n/a (no whole transition in its frames) against {figure(jb)}"
+        else:
+            jump = f"{figure(ja)} against {figure(jb)} {'✓' if ja < jb else '✗'}"
+        out.append(f"| `{name}` | {a['name']} ({a['frame_ms']['vs_baseline']:.2f}×) | {pop} | {jump} |")
+    return out + [""]
 
 
 def write_page():
