@@ -1,19 +1,25 @@
 // `sylva bake SCENARIO.json|MODEL.glb`: builds every species model a scenario needs (or one
 // imported glTF model) and its representations (crossed billboard, Deussen 2002 points and
-// lines, Behrendt 2005 billboard cloud) into the bake cache, with a progress bar, so later plays
-// and benches start at once. Later representation bakes (PRT) join the same loop.
+// lines, Behrendt 2005 billboard cloud) into the bake cache, with a progress bar; then, for a
+// scenario, whatever else its play makes on a GL device (an auto ladder's rungs and measured
+// tables, the device's primitive costs, shells, LoDF) by building the player `sylva play`
+// builds, on a headless context. Later plays and benches then start at once.
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <spdlog/spdlog.h>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/scenario_options.h"
+#include "app/scenario_player.h"
 #include "io/input_file.h"
 #include "models/cache/bake_cache.h"
 #include "models/cache/plant_model_io.h"
 #include "scenarios/scenario_loader.h"
 #include "setup/species_models.h"
+#include "systems/render/gl_context.h"
 
 namespace sylva {
 namespace {
@@ -22,6 +28,7 @@ struct bake_options {
     std::string input;
     std::string cache_dir;
     bool force = false;
+    bool species_only = false;
 };
 
 // One line, redrawn in place: [#####-----] 3/7 oak (baked, 412 ms)
@@ -34,7 +41,8 @@ void progress(std::size_t done, std::size_t total, const std::string& what) {
     if (done == total) std::fprintf(stderr, "\n");
 }
 
-std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64_t& seed) {
+std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64_t& seed,
+                                              std::optional<scenario>& loaded) {
     const std::filesystem::path input(o.input);
     const std::string ext = input.extension().string();
     if (ext == ".gltf" || ext == ".glb") {
@@ -44,7 +52,7 @@ std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64
         model.model = std::filesystem::absolute(input).string();
         return {model};
     }
-    const scenario s = load_scenario_file_or_bundled(o.input);
+    const scenario& s = loaded.emplace(load_scenario_file_or_bundled(o.input));
     seed = s.seed;
     // As spawning resolves them, so play finds these entries (an "implicit" model is its own).
     std::vector<species_settings> out;
@@ -52,16 +60,47 @@ std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64
     return out;
 }
 
+// What playing `s` makes beyond its species' bakes, made as `sylva play` makes it: the player
+// is built on a headless context at the scenario's size, through `cache`, and dropped.
+int bake_what_play_makes(const scenario& s, bake_cache& cache) {
+    const std::size_t hits = cache.hits(), misses = cache.misses();
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        render::context_options context_options;
+        context_options.width = int(s.width);
+        context_options.height = int(s.height);
+        context_options.headless = true;
+        auto context = render::create_context(context_options);
+        spdlog::info("making what playing '{}' ({} representation) needs on {}", s.name,
+                     s.lod.representation, context->renderer());
+        const scenario_player player(s, 0, context.get(), &cache);
+    } catch (const std::exception& e) {
+        spdlog::error("{}; the species above are baked, the rest is made at the first play",
+                      e.what());
+        return k_exit_failure;
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    spdlog::info(
+        "what '{}' plays with on this device (its ladder's rungs and tables, primitive costs, "
+        "...): {} "
+        "cache entries reused, {} made, in {:.1f} s",
+        s.name, cache.hits() - hits, cache.misses() - misses, seconds);
+    return k_exit_ok;
+}
+
 int bake(const bake_options& o) {
     std::uint64_t seed = 1;
     std::vector<species_settings> species;
+    std::optional<scenario> loaded;  // when the input is a scenario
     try {
-        species = species_to_bake(o, seed);
+        species = species_to_bake(o, seed, loaded);
     } catch (const scenario_error& e) {
         spdlog::error("{}", e.what());
         return k_exit_bad_input;
     }
     bake_cache cache(o.cache_dir);
+    if (o.force) cache.rebake_all();
     try {
         for (std::size_t i = 0; i < species.size(); ++i) {
             // The same seed derivation as scenario spawning, so play finds these entries.
@@ -73,14 +112,9 @@ int bake(const bake_options& o) {
                 cache.path_of("point_lines", species_point_line_key(species[i], species_seed));
             const std::filesystem::path cloud =
                 cache.path_of("billboard_clouds", species_billboard_cloud_key(species[i], species_seed));
-            if (o.force) {
-                std::filesystem::remove(cache.path_of("plants", key));
-                std::filesystem::remove(billboard);
-                std::filesystem::remove(point_lines);
-                std::filesystem::remove(cloud);
-            }
-            const bool cached = std::filesystem::exists(cache.path_of("plants", key)) &&
-                                std::filesystem::exists(billboard) && std::filesystem::exists(point_lines) &&
+            const bool cached = !o.force && std::filesystem::exists(cache.path_of("plants", key)) &&
+                                std::filesystem::exists(billboard) &&
+                                std::filesystem::exists(point_lines) &&
                                 std::filesystem::exists(cloud);
             progress(i, species.size(), species[i].name + (cached ? " (cached)" : " (baking)"));
             const auto start = std::chrono::steady_clock::now();
@@ -103,7 +137,8 @@ int bake(const bake_options& o) {
     spdlog::info("{} species (model, crossed billboard, points and lines, billboard cloud each): {} cache entries reused, {} baked, "
                  "in {}",
                  species.size(), cache.hits(), cache.misses(), cache.root().string());
-    return k_exit_ok;
+    if (!loaded || o.species_only) return k_exit_ok;
+    return bake_what_play_makes(*loaded, cache);
 }
 
 }  // namespace
@@ -113,7 +148,12 @@ command_runner add_bake_command(CLI::App& app) {
     app.add_option("input", options->input, "A scenario (.json) or a plant model (.gltf, .glb)")->required();
     app.add_option("--cache", options->cache_dir,
                    "Cache folder (default: $SYLVA_CACHE_DIR, else $XDG_CACHE_HOME/sylva, else ~/.cache/sylva)");
-    app.add_flag("--force", options->force, "Bake again even when the cache has an entry");
+    app.add_flag("--force", options->force,
+                 "Bake and measure everything again even when the cache has an entry");
+    app.add_flag("--species-only", options->species_only,
+                 "Only the species' models and representations: not what a scenario's play "
+                 "measures on the GL "
+                 "device (an auto ladder's rung tables, the device's primitive costs)");
     return [options] { return bake(*options); };
 }
 

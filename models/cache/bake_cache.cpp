@@ -123,7 +123,8 @@ void bake_cache::remove_damaged(const std::filesystem::path& path, const std::st
 std::optional<std::vector<std::byte>> bake_cache::load(std::string_view kind, std::uint64_t key) {
     const std::filesystem::path path = path_of(kind, key);
     std::error_code ec;
-    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) {
+    if ((m_rebake && !m_stored.contains({std::string(kind), key})) ||
+        !std::filesystem::exists(std::filesystem::symlink_status(path, ec))) {
         ++m_misses;
         return std::nullopt;
     }
@@ -170,6 +171,7 @@ void bake_cache::store(std::string_view kind, std::uint64_t key, std::span<const
     } catch (const output_error& e) {
         throw std::runtime_error(std::string("bake cache: ") + e.what());
     }
+    if (m_rebake) m_stored.emplace(std::string(kind), key);
 }
 
 void bake_cache::store_or_warn(std::string_view kind, std::uint64_t key, std::span<const std::byte> bytes) {

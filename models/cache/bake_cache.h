@@ -14,9 +14,11 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sylva {
@@ -48,6 +50,11 @@ public:
     // per process, removed, and the last load counted as a miss.
     void discard(std::string_view kind, std::uint64_t key, const std::string& reason);
 
+    // From now on every entry is made again: a load misses (counted as one) unless this cache
+    // stored the entry itself since, so each is baked once and later reads in the same run hit
+    // (`sylva bake --force`).
+    void rebake_all() { m_rebake = true; }
+
     std::filesystem::path path_of(std::string_view kind, std::uint64_t key) const;
     const std::filesystem::path& root() const { return m_root; }
     std::size_t hits() const { return m_hits; }
@@ -59,6 +66,8 @@ private:
     std::filesystem::path m_root;
     std::size_t m_hits = 0;
     std::size_t m_misses = 0;
+    bool m_rebake = false;
+    std::set<std::pair<std::string, std::uint64_t>> m_stored;  // with m_rebake: made in this run
 };
 
 // Decodes (kind, key) from the cache with `read`; an entry that is absent, damaged, or that

@@ -49,6 +49,25 @@ TEST_F(temp_cache, get_or_bake_bakes_once_then_hits) {
     EXPECT_EQ(reopened.hits(), 1u);
 }
 
+// `sylva bake --force`: every entry made again once, then read back within the same run.
+TEST_F(temp_cache, rebake_all_misses_each_entry_until_it_is_made_again) {
+    bake_cache(root).store("plants", 7, bytes_of("old"));
+    bake_cache cache(root);
+    cache.rebake_all();
+    int bakes = 0;
+    auto bake = [&] {
+        ++bakes;
+        return bytes_of("new");
+    };
+    EXPECT_EQ(cache.get_or_bake("plants", 7, bake), bytes_of("new"));
+    EXPECT_EQ(cache.get_or_bake("plants", 7, bake), bytes_of("new"));
+    EXPECT_EQ(bakes, 1);
+    EXPECT_EQ(cache.misses(), 1u);
+    EXPECT_EQ(cache.hits(), 1u);
+    EXPECT_EQ(*bake_cache(root).load("plants", 7),
+              bytes_of("new"));  // a later run reads the new one
+}
+
 TEST_F(temp_cache, writes_leave_no_temporary_files) {
     bake_cache cache(root);
     cache.store("plants", 1, bytes_of("a"));
