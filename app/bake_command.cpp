@@ -82,9 +82,8 @@ int bake_what_play_makes(const scenario& s, bake_cache& cache) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     spdlog::info(
-        "what '{}' plays with on this device (its ladder's rungs and tables, primitive costs, "
-        "...): {} "
-        "cache entries reused, {} made, in {:.1f} s",
+        "what '{}' plays with on this device (its ladder's rungs and tables, primitive "
+        "costs, ...): {} cache entries reused, {} made, in {:.1f} s",
         s.name, cache.hits() - hits, cache.misses() - misses, seconds);
     return k_exit_ok;
 }
@@ -152,8 +151,8 @@ command_runner add_bake_command(CLI::App& app) {
                  "Bake and measure everything again even when the cache has an entry");
     app.add_flag("--species-only", options->species_only,
                  "Only the species' models and representations: not what a scenario's play "
-                 "measures on the GL "
-                 "device (an auto ladder's rung tables, the device's primitive costs)");
+                 "measures on the GL device (an auto ladder's rung tables, the device's "
+                 "primitive costs)");
     return [options] { return bake(*options); };
 }
 

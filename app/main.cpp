@@ -75,7 +75,10 @@ int run(int argc, char** argv) {
     auto* inspect = app.add_subcommand(
         "inspect", "Print a plant's triangles, leaves, branches, materials, bounds, units and LoDF structure");
     commands.emplace_back(inspect, sylva::add_inspect_command(*inspect));
-    auto* bake = app.add_subcommand("bake", "Bake a scenario's species (or one glTF model) into the bake cache");
+    auto* bake = app.add_subcommand(
+        "bake",
+        "Make what a scenario plays with (its species' bakes, its ladder's rung tables, the "
+        "device's costs), or one glTF model's bakes, in the bake cache");
     commands.emplace_back(bake, sylva::add_bake_command(*bake));
     auto* bench = app.add_subcommand(
         "bench", "Measure frame time against image error for every configuration; writes a table and a plot");

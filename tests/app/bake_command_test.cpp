@@ -53,8 +53,8 @@ void copy_device_calibration(const fs::path& to) {
         fs::copy(from / kind, to / kind, fs::copy_options::recursive, ec);  // absent: measured
 }
 
-// tiny's spruce alone on a two-rung auto ladder: its tables take seconds, tiny's whole ladder ~100
-// s.
+// tiny's spruce alone on a two-rung auto ladder: its tables take seconds (tiny's whole ladder
+// about 100 s).
 TEST(bake_command, a_scenario_s_auto_ladder_tables_are_measured_so_its_play_measures_none) {
     const fs::path dir = test::fresh_temp_dir("bake_ladder");
     copy_device_calibration(dir / "cache");
