@@ -98,11 +98,11 @@ TEST(shard_command, bad_ranges_and_merges_exit_2_naming_what_is_wrong) {
     EXPECT_NE(timed.output.find("frame-time target"), std::string::npos) << timed.output;
     EXPECT_FALSE(fs::exists(dir / "t"));
 
-    ASSERT_EQ(test::run_sylva("play tiny --representation mesh_levels --headless --frames 4 "
-                              "--frame-range 0:2 --out " +
-                              (dir / "a").string())
-                  .exit_code,
-              0);
+    const auto half = test::run_sylva(
+        "play tiny --representation mesh_levels --headless --frames 4 "
+        "--frame-range 0:2 --out " +
+        (dir / "a").string());
+    ASSERT_EQ(half.exit_code, 0) << half.output;
     const auto gap = test::run_sylva("merge " + (dir / "a").string() + " --out " + (dir / "m").string());
     EXPECT_EQ(gap.exit_code, 2);
     EXPECT_NE(gap.output.find("frames 2 to 3 of the path are in no shard"), std::string::npos) << gap.output;
