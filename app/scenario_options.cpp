@@ -100,13 +100,10 @@ scenario load_with_overrides(const scenario_options& options) {
     if (options.frames) s.frames = *options.frames;
     if (options.width) s.width = *options.width;
     if (options.height) s.height = *options.height;
-    if (options.representation) {
-        s.lod.representation = *options.representation;
-        // The file's plant budget or error threshold chooses its ladder's rungs: another
-        // representation asked for on the command line leaves them (a budget asked for there
-        // too is still refused below).
-        if (s.lod.representation != "ladder") s.lod.plant_budget_ms = s.lod.max_error = 0.0;
-    }
+    // The file's plant budget or error threshold chooses its ladder's rungs: another
+    // representation asked for on the command line leaves them (a budget asked for there too is
+    // still refused below).
+    if (options.representation) draw_by(s, *options.representation);
     if (options.lighting) {
         s.lod.lighting = *options.lighting;
         for (species_settings& species : s.species) species.lighting = "scenario";

@@ -4,13 +4,14 @@
 #include <bit>
 #include <limits>
 #include <set>
+#include <utility>
 
 #include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "models/terrain/wang_tile_rules.h"
+#include "scenarios/embedded_files.h"
 #include "scenarios/json_reader.h"
 #include "scenarios/ladder_fields.h"
-#include "scenarios/embedded_files.h"
 
 namespace sylva {
 namespace {
@@ -665,6 +666,11 @@ scenario load_default_scenario() {
     const auto text = embedded_file(k_default_path);
     if (!text) throw scenario_error(source, "", "", "not embedded in this build");
     return load_scenario_text(*text, source);
+}
+
+void draw_by(scenario& s, std::string representation) {
+    s.lod.representation = std::move(representation);
+    if (s.lod.representation != "ladder") s.lod.plant_budget_ms = s.lod.max_error = 0.0;
 }
 
 std::vector<std::string> bundled_scenario_names() {

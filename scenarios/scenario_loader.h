@@ -51,6 +51,10 @@ scenario load_default_scenario();
 scenario load_bundled_scenario(std::string_view name);
 std::vector<std::string> bundled_scenario_names();
 
+// `s` drawn by `representation` (one of k_lod_representations): a representation other than
+// "ladder" drops the file's plant budget and error threshold, which choose a ladder's rungs.
+void draw_by(scenario& s, std::string representation);
+
 // The camera path used when a scenario gives no camera keyframes: a flight across the terrain
 // from its south-west to its north-east quarter, 15-25 m above the ground, over duration_s.
 std::vector<scenario_camera_key> default_camera_keyframes(const terrain_settings& terrain,

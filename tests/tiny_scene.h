@@ -16,8 +16,7 @@ namespace sylva::testing {
 inline scenario tiny_with_mesh_levels() {
     scenario s =
         load_scenario_file(std::filesystem::path(SYLVA_SOURCE_DIR) / "scenarios/tiny.json");
-    s.lod.representation = "mesh_levels";
-    s.lod.plant_budget_ms = 0.0;
+    draw_by(s, "mesh_levels");
     return s;
 }
 

@@ -26,8 +26,7 @@ scenario tiny_scenario() {
     // The checks stress the frame loop's numbers (offsets, light, time, LOD distances), not the
     // ladder: they draw tiny's mesh levels, whose switches lod_scale moves, and need no rung
     // tables (an auto ladder measures them first, ~100 s without a bake cache).
-    s.lod.representation = "mesh_levels";
-    s.lod.plant_budget_ms = 0.0;
+    draw_by(s, "mesh_levels");
     return s;
 }
 
