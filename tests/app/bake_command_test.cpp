@@ -5,12 +5,12 @@
 
 #include <array>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "models/cache/bake_cache.h"
 #include "run_sylva.h"
 
 namespace sylva {
@@ -41,12 +41,7 @@ TEST(bake_command, bakes_once_then_serves_every_species_from_the_cache) {
 // The device's calibration (about a minute on llvmpipe, kept in the cache by device) from the
 // suite's own cache when it has one, so a fresh cache measures only the scenario's tables.
 void copy_device_calibration(const fs::path& to) {
-    const char* env = std::getenv("SYLVA_CACHE_DIR");
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    const char* home = std::getenv("HOME");
-    const fs::path from = env && *env   ? fs::path(env)
-                          : xdg && *xdg ? fs::path(xdg) / "sylva"
-                                        : fs::path(home ? home : "/") / ".cache" / "sylva";
+    const fs::path from = bake_cache().root();  // $SYLVA_CACHE_DIR, else the user's
     std::error_code ec;
     fs::create_directories(to, ec);
     for (const char* kind : {"primitive_cost_model", "shader_work_costs"})
