@@ -17,6 +17,11 @@ float opacity_along(float alpha, float path) {
     return 1.0f - std::pow(1.0f - std::min(alpha, 0.999f), path);
 }
 
+glm::vec3 seen_normal(const glm::vec3& from_above, const glm::vec3& view) {
+    const float length = glm::length(view);
+    return length > 0.0f ? from_above * (std::abs(view.y) / length) : from_above;
+}
+
 int footprint_taps(const glm::vec2& dx, const glm::vec2& dy, int max_taps) {
     const float lx = glm::length(dx), ly = glm::length(dy);
     const float ratio = std::max(lx, ly) / std::max(std::min(lx, ly), 1e-6f);

@@ -130,7 +130,9 @@ void main() {
     // FLIP fell from 0.060/0.068/0.071 to 0.057/0.063/0.063 at 5°/10°/20° (landscape's: 0.0267
     // to 0.0258), SSIM +0.001.
     vec4 seen_from_above = textureGrad(u_shell_normal, vec3(uv, layer), dx, dy);
-    vec3 n = filtered_normal(seen_from_above.rgb * 2.0 - 1.0);
+    // Seen from β above the horizontal the leaves' seen sides agree less than from above: the
+    // mean shortened by sin β (lod/shell_sampling.h seen_normal, where it is measured).
+    vec3 n = filtered_normal(seen_from_above.rgb * 2.0 - 1.0) * abs(normalize(v_position).y);
     // The sun through the slices above (alpha: their vertical transmittance T, lod/shell_canopy.h),
     // crossed over 1/sin e of each slab's thickness, so T^(1/sin e); with shadows, as the plants'
     // rungs are shadowed by their neighbours only then. On docs/measure_shells.py's far field

@@ -209,13 +209,14 @@ luminances shell_and_mesh_luminance(double elevation_deg, bool shadows) {
 // come, not made unit again (Toksvig 2005, shaders/shell.frag): a renormalised mean lights a crown
 // as one surface facing up. Seen from 25° above, the shells' plants are still brighter than the
 // meshes' (the slices show each crown as seen from above, its sunlit, sky-facing top): as built
-// 1.34x the meshes' luminance under a 60° sun and 1.21x under a 15° one; renormalised, 1.39x and
-// 1.24x. The bound keeps the bias from growing.
+// 1.184x the meshes' luminance under a 60° sun and 1.149x under a 15° one; with the normal not
+// shortened by the view's elevation (lod/shell_sampling.h seen_normal) 1.34x and 1.21x;
+// renormalised as well, 1.39x and 1.24x. The bound keeps the bias from growing.
 TEST(shell_gl, shells_lit_by_their_normals_are_not_much_brighter_than_their_plants) {
     SYLVA_REQUIRE_GL();
     for (const double elevation : {60.0, 15.0}) {
         const luminances l = shell_and_mesh_luminance(elevation, false);
-        EXPECT_LT(l.shells / l.meshes, elevation > 30.0 ? 1.36 : 1.225)
+        EXPECT_LT(l.shells / l.meshes, elevation > 30.0 ? 1.20 : 1.165)
             << "sun at " << elevation << " deg: meshes " << l.meshes << ", shells " << l.shells;
         EXPECT_GT(l.shells / l.meshes, 1.0)
             << "sun at " << elevation << " deg: the top-down bias measured here is gone; look again";
@@ -230,10 +231,10 @@ TEST(shell_gl, with_shadows_the_slices_above_shade_the_slices_below) {
     SYLVA_REQUIRE_GL();
     for (const double elevation : {60.0, 15.0}) {
         const luminances l = shell_and_mesh_luminance(elevation, true);
-        // As built 1.269x the meshes' luminance under a 60° sun and 1.197x under a 15° one;
-        // without the slices above, 1.297x and 1.211x (before the slices' opacity was taken along
-        // the view, lod/shell_sampling.h, which moved the built values from 1.265x and 1.193x).
-        EXPECT_LT(l.shells / l.meshes, elevation > 30.0 ? 1.28 : 1.202)
+        // As built 1.142x the meshes' luminance under a 60° sun and 1.137x under a 15° one (before
+        // the normal was shortened by the view's elevation, lod/shell_sampling.h seen_normal,
+        // 1.269x and 1.197x; without the slices above then, 1.297x and 1.211x).
+        EXPECT_LT(l.shells / l.meshes, elevation > 30.0 ? 1.155 : 1.15)
             << "sun at " << elevation << " deg: meshes " << l.meshes << ", shells " << l.shells;
     }
 }

@@ -44,6 +44,22 @@ TEST(shell_sampling, the_path_through_a_slab_grows_as_the_view_grazes_it) {
     EXPECT_EQ(slab_path(at(1.0f), up), k_shell_max_path);
 }
 
+// By hand: from 30° above, sin 30° = 1/2, so a from-above mean (0.1, 0.8, -0.2) lights as
+// (0.05, 0.4, -0.1); straight down it is kept; from the horizon it is an even spread (0); the
+// view's length and direction along it do not matter.
+TEST(shell_sampling, the_slices_normal_shortens_as_the_view_grazes_them) {
+    const glm::vec3 n(0.1f, 0.8f, -0.2f);
+    const glm::vec3 from_30(std::cos(glm::radians(30.0f)), -0.5f, 0.0f);
+    const glm::vec3 half = seen_normal(n, from_30);
+    EXPECT_NEAR(half.x, 0.05f, 1e-6f);
+    EXPECT_NEAR(half.y, 0.4f, 1e-6f);
+    EXPECT_NEAR(half.z, -0.1f, 1e-6f);
+    EXPECT_NEAR(glm::length(seen_normal(n, 7.0f * from_30) - half), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(seen_normal(n, -from_30) - half), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(seen_normal(n, glm::vec3(0.0f, -2.0f, 0.0f)) - n), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(seen_normal(n, glm::vec3(0.0f, 0.0f, -5.0f))), 0.0f, 1e-6f);
+}
+
 // A footprint 11 texels long and 1 wide takes the most fetches; a round one, one; 2.5 : 1, three.
 TEST(shell_sampling, a_long_footprint_is_cut_into_fetches) {
     EXPECT_EQ(footprint_taps({1.0f, 0.0f}, {0.0f, 11.0f}), k_shell_max_taps);
