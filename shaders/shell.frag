@@ -40,6 +40,17 @@ uniform int u_layers_per_tile;
 uniform vec2 u_fade;  // the shell is transparent nearer than x metres, whole beyond y
 uniform int u_premultiplied;  // 0: straight colour, the standard equation (measurement only)
 uniform vec4 u_area;  // x0, z0, x1, z1: where the tiled populations grow (terrain-local)
+// The colour's footprint against the one the derivatives give: 0.5 when drawn into the half-size
+// layer (systems/render/passes/shell_pass.h), whose composite filters it up bilinearly. Fetched
+// at the layer texel's own footprint the colour was filtered twice, by the mips at the layer's
+// scale and by the composite, and the far field blurred; at a frame pixel's footprint (half a
+// layer texel's) the composite alone filters at the layer's scale. On docs/measure_shells.py's
+// far fields (1 frame, 480x270) SSIM 0.9594/0.9472/0.9367 became 0.9606/0.9480/0.9390 at
+// 5°/10°/20°, FLIP 0.0399/0.0389/0.0408 became 0.0380/0.0378/0.0397, landscape's 0.9839 0.9849;
+// a quarter measured no better (0.9604/0.9476/0.9382), and drawn straight into the frame a half
+// lowered SSIM (0.9535 to 0.9521 at 5°: aliasing), so there it stays 1. The lighting's fetches
+// keep the whole footprint: they vary slowly and the normal's length is its spread (Toksvig).
+uniform float u_footprint_scale;
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_nearest;  // the shell layer's nearest slice (MIN-blended)
@@ -83,8 +94,8 @@ void main() {
     float ratio = max(lx, ly) / max(min(lx, ly), 1e-6);
     int taps = int(clamp(ceil(ratio), 1.0, float(k_max_taps)));
     vec2 step = (lx > ly ? dx : dy) / float(taps);
-    vec2 gx = lx > ly ? step : dx;
-    vec2 gy = lx > ly ? dy : step;
+    vec2 gx = (lx > ly ? step : dx) * u_footprint_scale;
+    vec2 gy = (lx > ly ? dy : step) * u_footprint_scale;
     vec2 first = cell_f + (0.5 - 0.5 * float(taps)) * step;
     vec2 last = cell_f + (0.5 * float(taps) - 0.5) * step;
     // Most footprints lie within one Wang tile: then one lookup of the index serves every fetch.

@@ -47,6 +47,7 @@ shell_pass::uniform_locations shell_pass::uniforms_of(GLuint program) {
     u.level_criterion = glGetUniformLocation(program, "u_level_criterion");
     u.level_slices = glGetUniformLocation(program, "u_level_slices");
     u.level_first_layer = glGetUniformLocation(program, "u_level_first_layer");
+    u.footprint_scale = glGetUniformLocation(program, "u_footprint_scale");
     return u;
 }
 
@@ -248,6 +249,9 @@ void shell_pass::draw(pass_context& context) {
     glUniform3f(u.level_criterion, shells.pixels_per_radian, k_shell_min_spacing_px, k_shell_merge_band);
     glUniform1iv(u.level_slices, GLsizei(levels()), m_level_slices.data());
     glUniform1iv(u.level_first_layer, GLsizei(levels()), m_level_first_layer.data());
+    // Into the half-size layer the colour is fetched at a frame pixel's footprint, half a layer
+    // texel's (shaders/shell.frag u_footprint_scale).
+    glUniform1f(u.footprint_scale, shells.half_resolution ? 0.5f : 1.0f);
     const glm::vec3 eye = -view.terrain_position;  // terrain-local
     if (shells.half_resolution) begin_layer(context);
     glUseProgram(program);

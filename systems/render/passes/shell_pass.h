@@ -61,8 +61,10 @@ private:
     // The program's uniforms, asked once (the frame does no string work).
     struct uniform_locations {
         GLuint program = 0;
-        GLint terrain_position = -1, slice_height = -1, slant = -1, slant_reach = -1, premultiplied = -1, lattice = -1, area = -1, layers_per_tile = -1,
-              fade = -1, level = -1, max_level = -1, level_criterion = -1, level_slices = -1, level_first_layer = -1;
+        GLint terrain_position = -1, slice_height = -1, slant = -1, slant_reach = -1,
+              premultiplied = -1, lattice = -1, area = -1, layers_per_tile = -1, fade = -1,
+              level = -1, max_level = -1, level_criterion = -1, level_slices = -1,
+              level_first_layer = -1, footprint_scale = -1;
     };
     static uniform_locations uniforms_of(GLuint program);
     // Binds the half-resolution layer (made or resized for the frame), cleared, with its depth
