@@ -40,6 +40,14 @@ float cascade_sun_visibility(vec3 position, vec3 normal, float view_depth) {
 #endif
 }
 
+// True where the cascades hold shadows: with shadows on, nearer than the last cascade's far end
+// (beyond it cascade_sun_visibility is 1: nothing shades anything there but the terrain).
+bool within_cascades(vec3 position) {
+    if (u_sun_direction.w < 0.5) return false;
+    float view_depth = -(u_view * vec4(position, 1.0)).z;
+    return view_depth <= u_cascade_split_far[int(u_sun_radiance.w) - 1];
+}
+
 // The terrain's shadow (lighting/terrain_shadow.h): a point is in it when its height above the
 // ground is below the shadow's depth there, read from the (height, depth) texture bilinearly;
 // the light comes back over `edge` metres above the shadow's top. At any distance, so the

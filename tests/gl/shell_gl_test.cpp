@@ -245,6 +245,33 @@ scenario shrubs_seen_grazing(bool shell, bool bare = false) {
                   R"({"t": 0, "position": [-46, 3, 0], "target": [30, 0, 0], "fov_deg": 50})", shell, bare);
 }
 
+// The slices above shade a slice only where the cascades hold shadows: beyond their far end the
+// plants the shells stand for are not shaded by each other either (shaders/shell.frag,
+// shading.glsl within_cascades). The grazing shrubs with shadows reaching past them are darker
+// than without shadows (the slices' own shade); with the cascades ending a metre from the eye,
+// they are drawn as without shadows (nothing else casts here, and the ground is flat).
+TEST(shell_gl, beyond_the_cascades_the_slices_above_shade_nothing) {
+    SYLVA_REQUIRE_GL();
+    const auto with = [](bool shadows, float shadow_distance_m) {
+        scenario s = shrubs_seen_grazing(true);
+        s.render.shadows = shadows;
+        s.shadows.max_distance_m = shadow_distance_m;
+        return s;
+    };
+    const frame bare = play(shrubs_seen_grazing(false, true), 2);
+    const frame unshadowed = play(with(false, 250.0f), 2);
+    const frame within = play(with(true, 250.0f), 2);
+    const frame beyond = play(with(true, 1.0f), 2);
+    const std::vector<bool> mask = plant_mask(unshadowed.image, bare.image);
+    const glm::dvec3 u = mean_colour(unshadowed.image, mask);
+    const glm::dvec3 w = mean_colour(within.image, mask);
+    const glm::dvec3 b = mean_colour(beyond.image, mask);
+    // As built, green in 8-bit steps: unshadowed and beyond the cascades equal, within them
+    // darker by 3.7 (the old rule, shading at any distance, drew beyond them as within).
+    EXPECT_LT(glm::length(b - u), 0.5) << "beyond " << b.y << ", unshadowed " << u.y;
+    EXPECT_GT(u.y - w.y, 1.0) << "within " << w.y << ", unshadowed " << u.y;
+}
+
 struct grazing_view {
     double iou = 0.0;            // of the shells' plant pixels and the meshes'
     double covered = 0.0;        // the share of the meshes' plant pixels the shells cover
