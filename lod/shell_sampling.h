@@ -30,7 +30,7 @@
 //    the horizontal, a tilted leaf shows whichever side faces the eye, so the sides seen agree less
 //    than from above; lit with the from-above mean, the far field came out brighter than its plants
 //    (5° above valley's canopy +5 to +7 of 255 in its rows, 20° +2; in tests/gl/shell_gl_test.cpp's
-//    shrubs seen from 25°, 1.27 and 1.20 times the meshes' luminance). The mean keeps its direction
+//    shrubs seen from 25°, 1.34 and 1.21 times the meshes' luminance). The mean keeps its direction
 //    and is shortened by sin β, from the bake's own from straight above to an even spread edge-on:
 //      n' = n · |v_y| / |v|
 //    Measured, not derived (docs/representations/shells.md): on docs/measure_shells.py's far fields
