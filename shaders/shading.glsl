@@ -6,6 +6,16 @@
 
 layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
 
+// True where the cascades hold shadows: with shadows on, nearer than the last cascade's far end
+// (beyond it nothing shades anything but the terrain). The one rule for the cascades' reach:
+// cascade_sun_visibility is 1 outside it, and shaders/shell.frag's canopy shade holds only inside.
+bool within_cascades_at(float view_depth) {
+    return u_sun_direction.w >= 0.5 && view_depth <= u_cascade_split_far[int(u_sun_radiance.w) - 1];
+}
+bool within_cascades(vec3 position) {
+    return within_cascades_at(-(u_view * vec4(position, 1.0)).z);
+}
+
 // Cascade chosen by view depth; four hardware-PCF taps half a texel off centre, each a bilinear
 // 2x2 compare, together a smooth 3x3-texel footprint (a software rasteriser pays per tap). The
 // sample is pushed along the normal by about one texel to avoid acne on slopes.
@@ -16,13 +26,12 @@ layout(binding = 1) uniform sampler2DArrayShadow u_shadow_map;
 // 3.563 and 3.375 to 3.376, SSIM and FLIP by 0.0001, and saved 3.5 of the 40 ms of CPU per frame
 // that llvmpipe's vertex stage spent at d' = 3 (perf, 22 frames less 2, two runs each).
 float cascade_sun_visibility(vec3 position, vec3 normal, float view_depth) {
-    if (u_sun_direction.w < 0.5) return 1.0;
+    if (!within_cascades_at(view_depth)) return 1.0;
     int count = int(u_sun_radiance.w);
     int cascade = count - 1;
     for (int i = 0; i < count; ++i) {
         if (view_depth < u_cascade_split_far[i]) { cascade = i; break; }
     }
-    if (view_depth > u_cascade_split_far[count - 1]) return 1.0;
     vec3 offset_position = position + normal * (1.5 * u_cascade_texel_world[cascade]);
     vec4 light = u_cascade_view_projection[cascade] * vec4(offset_position, 1.0);
     vec3 p = light.xyz / light.w * 0.5 + 0.5;
@@ -38,14 +47,6 @@ float cascade_sun_visibility(vec3 position, vec3 normal, float view_depth) {
             sum += texture(u_shadow_map, vec4(p.xy + (vec2(x, y) - 0.5) * texel, float(cascade), p.z - bias));
     return sum * 0.25;
 #endif
-}
-
-// True where the cascades hold shadows: with shadows on, nearer than the last cascade's far end
-// (beyond it cascade_sun_visibility is 1: nothing shades anything there but the terrain).
-bool within_cascades(vec3 position) {
-    if (u_sun_direction.w < 0.5) return false;
-    float view_depth = -(u_view * vec4(position, 1.0)).z;
-    return view_depth <= u_cascade_split_far[int(u_sun_radiance.w) - 1];
 }
 
 // The terrain's shadow (lighting/terrain_shadow.h): a point is in it when its height above the
