@@ -8,6 +8,11 @@
 // of a two-sided leaf averaged (light reaches a leaf from either side; k_a does not know which):
 // the first SH coefficient of the radiance transfer (models/bake/radiance_transfer.h) divided by
 // its unoccluded value π·Y_00, so the rays and the leaves' alpha test are the transfer bake's.
+//
+// Beside them, how smooth the occlusion itself is: each leaf vertex ranked by the mean occlusion
+// of the other leaves' vertices within ρ/4 of it (the field's own grid cell). Where that ranks
+// well and −F does not, the occlusion is a smooth function of position but not one the density
+// field can give: the limit is Eq. 2-4's, not the rays' noise nor the vertex's own leaf.
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -16,6 +21,7 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -24,6 +30,7 @@
 #include "io/atomic_file.h"
 #include "measure/rank_correlation.h"
 #include "models/bake/implicit_illumination.h"
+#include "models/bake/nanoflann_points.h"
 #include "models/bake/radiance_transfer.h"
 
 namespace sylva {
@@ -44,10 +51,59 @@ struct ao_result {
     double ellipsoid_rho = 0.0;
     double density_rho = 0.0;  // −F itself: the best any k_a falling with F can rank
     double foliage_rho = 0.0;  // k_a on the leaves' vertices alone
+    double neighbours_rho =
+        0.0;  // the other leaves' mean occlusion within ρ/4, on the leaves' vertices
     double ka_min_share = 0.0;  // vertices at k_a,min (tied: Eq. 4 saturates at d_min)
     implicit_settings used;
     double bake_s = 0.0;  // bake_implicit_illumination on every level, on this machine's threads
 };
+
+// Every leaf vertex's card: vertices joined by the leaf submeshes' triangles (union-find).
+std::vector<std::uint32_t> leaf_cards(const mesh_data& mesh) {
+    std::vector<std::uint32_t> parent(mesh.vertices.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const submesh& s : mesh.submeshes)
+        if (s.material == material_kind::leaf)
+            for (std::uint32_t i = s.first_index; i + 2 < s.first_index + s.index_count; i += 3) {
+                const std::uint32_t a = root(mesh.indices[i]);
+                parent[root(mesh.indices[i + 1])] = a;
+                parent[root(mesh.indices[i + 2])] = a;
+            }
+    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = root(v);
+    return parent;
+}
+
+// Spearman over leaf vertices of their occlusion against the mean occlusion of the other cards'
+// vertices within `radius` (vertices with no such neighbour left out).
+double neighbours_correlation(const mesh_data& mesh, const std::vector<bool>& leaf,
+                              const std::vector<double>& visibility, float radius) {
+    const std::vector<std::uint32_t> card = leaf_cards(mesh);
+    std::vector<glm::vec3> points;
+    std::vector<std::uint32_t> vertex;
+    for (std::uint32_t v = 0; v < leaf.size(); ++v)
+        if (leaf[v]) points.push_back(mesh.vertices[v].position), vertex.push_back(v);
+    const nanoflann_points cloud{&points};
+    point_kd_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    nanoflann::SearchParams params;
+    params.sorted = false;
+    std::vector<double> predicted, own;
+    std::vector<std::pair<std::uint32_t, float>> near;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        tree.radiusSearch(&points[k].x, radius * radius, near, params);
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (const auto& [i, d2] : near)
+            if (card[vertex[i]] != card[vertex[k]]) sum += visibility[vertex[i]], ++n;
+        if (n == 0) continue;
+        predicted.push_back(sum / double(n));
+        own.push_back(visibility[vertex[k]]);
+    }
+    return spearman_correlation(predicted, own);
+}
 
 ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     plant_model plant = load_plant_argument(argument, o.seed, 64);
@@ -106,6 +162,8 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     for (std::size_t v = 0; v < ka.size(); ++v)
         if (leaf[v]) leaf_ka.push_back(ka[v]), leaf_visibility.push_back(visibility[v]);
     r.foliage_rho = spearman_correlation(leaf_ka, leaf_visibility);
+    r.neighbours_rho =
+        neighbours_correlation(original, leaf, visibility, 0.25f * report.used.rho_m);
     r.ka_min_share = double(at_min) / double(std::max<std::size_t>(ka.size(), 1));
     r.used = report.used;
     r.bake_s = bake_s;
@@ -127,17 +185,30 @@ int implicit_ao(const implicit_ao_options& o) {
             return k_exit_failure;
         }
     }
-    std::printf("%-16s %9s | %12s %12s %12s %12s | %9s | %7s %9s %9s | %6s\n", "model", "vertices", "Spearman k_a", "ellipsoid",
-                "-F (bound)", "leaves only", "at k_amin", "rho m", "tau", "d_min", "bake s");
+    std::printf("%-16s %9s | %12s %12s %12s %12s %12s | %9s | %7s %9s %9s | %6s\n", "model",
+                "vertices", "Spearman k_a", "ellipsoid", "-F (bound)", "leaves only", "neighbours",
+                "at k_amin", "rho m", "tau", "d_min", "bake s");
     nlohmann::ordered_json json = nlohmann::ordered_json::array();
     for (const ao_result& r : results) {
-        std::printf("%-16s %9zu | %12.3f %12.3f %12.3f %12.3f | %8.1f%% | %7.3f %9.4f %9.4f | %6.2f\n", r.name.c_str(), r.vertices,
-                    r.implicit_rho, r.ellipsoid_rho, r.density_rho, r.foliage_rho, 100.0 * r.ka_min_share, r.used.rho_m, r.used.tau,
-                    r.used.d_min, r.bake_s);
-        json.push_back({{"model", r.name}, {"vertices", r.vertices}, {"spearman_implicit", r.implicit_rho},
-                        {"spearman_ellipsoid", r.ellipsoid_rho}, {"spearman_density", r.density_rho}, {"spearman_foliage", r.foliage_rho},
-                        {"ka_min_share", r.ka_min_share}, {"rho_m", r.used.rho_m}, {"tau", r.used.tau},
-                        {"d_min", r.used.d_min}, {"bake_s", r.bake_s}, {"rays", o.rays}});
+        std::printf(
+            "%-16s %9zu | %12.3f %12.3f %12.3f %12.3f %12.3f | %8.1f%% | %7.3f %9.4f %9.4f | "
+            "%6.2f\n",
+            r.name.c_str(), r.vertices, r.implicit_rho, r.ellipsoid_rho, r.density_rho,
+            r.foliage_rho, r.neighbours_rho, 100.0 * r.ka_min_share, r.used.rho_m, r.used.tau,
+            r.used.d_min, r.bake_s);
+        json.push_back({{"model", r.name},
+                        {"vertices", r.vertices},
+                        {"spearman_implicit", r.implicit_rho},
+                        {"spearman_ellipsoid", r.ellipsoid_rho},
+                        {"spearman_density", r.density_rho},
+                        {"spearman_foliage", r.foliage_rho},
+                        {"spearman_neighbours", r.neighbours_rho},
+                        {"ka_min_share", r.ka_min_share},
+                        {"rho_m", r.used.rho_m},
+                        {"tau", r.used.tau},
+                        {"d_min", r.used.d_min},
+                        {"bake_s", r.bake_s},
+                        {"rays", o.rays}});
     }
     if (!o.json.empty()) write_atomically(o.json, json.dump(2) + "\n");
     return k_exit_ok;

@@ -55,7 +55,7 @@
 //                                                "pre_lit", "sh", "implicit" or "sh_implicit"
 //                                                (see lod.lighting)
 //     implicit           object     {}           Luft 2007, with lighting "implicit": {
-//       generator_fraction number   0.25         0.001 .. 1; the foliage triangles that are
+//       generator_fraction number   1            0.001 .. 1; the foliage triangles that are
 //                                                generators (§3.1)
 //       rho_m            number     0            0 .. 1000; ρ (Eq. 2); 0: 0.2 x the foliage's
 //       radius tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
@@ -294,7 +294,13 @@ struct ladder_step_settings {
 // baked into its model when its lighting is "implicit". 0 for rho_m, tau and d_min: derived
 // from the model's foliage (its size and its own density).
 struct implicit_lighting_settings {
-    float generator_fraction = 0.25f;  // §3.1: the share of foliage triangles that are generators
+    // §3.1: the share of foliage triangles that are generators. The paper takes one per primitive
+    // and offers a random fraction as a shortcut for speed; the bake needs none (broadleaf_hd's
+    // whole bake 0.49 s with every triangle, 0.30 s with a quarter), and a quarter made the field
+    // noisier: k_a ranked ray-cast occlusion worse on every model (`sylva implicit-ao`: broadleaf
+    // 0.698 against 0.642, conifer 0.701 against 0.676) and forest's crowns kept more noise
+    // (`sylva implicit-look forest`: -41.5 % against -39.2 %).
+    float generator_fraction = 1.0f;
     float rho_m = 0.0f;                // ρ (Eq. 2)
     float tau = 0.0f;                  // τ (Eq. 3)
     float ka_min = 0.3f;               // k_a,min (Eq. 4)
