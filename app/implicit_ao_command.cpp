@@ -51,8 +51,7 @@ struct ao_result {
     double ellipsoid_rho = 0.0;
     double density_rho = 0.0;  // −F itself: the best any k_a falling with F can rank
     double foliage_rho = 0.0;  // k_a on the leaves' vertices alone
-    double neighbours_rho =
-        0.0;  // the other leaves' mean occlusion within ρ/4, on the leaves' vertices
+    double neighbours_rho = 0.0;  // the other leaves' occlusion within ρ/4 (leaves only)
     double ka_min_share = 0.0;  // vertices at k_a,min (tied: Eq. 4 saturates at d_min)
     implicit_settings used;
     double bake_s = 0.0;  // bake_implicit_illumination on every level, on this machine's threads

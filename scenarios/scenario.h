@@ -296,10 +296,10 @@ struct ladder_step_settings {
 struct implicit_lighting_settings {
     // §3.1: the share of foliage triangles that are generators. The paper takes one per primitive
     // and offers a random fraction as a shortcut for speed; the bake needs none (broadleaf_hd's
-    // whole bake 0.49 s with every triangle, 0.30 s with a quarter), and a quarter made the field
-    // noisier: k_a ranked ray-cast occlusion worse on every model (`sylva implicit-ao`: broadleaf
-    // 0.698 against 0.642, conifer 0.701 against 0.676) and forest's crowns kept more noise
-    // (`sylva implicit-look forest`: -41.5 % against -39.2 %).
+    // whole bake about 0.5 s with every triangle, 0.2-0.3 s with a quarter), and a quarter made the
+    // field noisier: k_a ranked ray-cast occlusion worse on every model (`sylva implicit-ao`:
+    // broadleaf 0.698 against 0.642, conifer 0.701 against 0.676) and forest's crowns kept more
+    // noise (`sylva implicit-look forest`: -41.5 % against -39.2 %).
     float generator_fraction = 1.0f;
     float rho_m = 0.0f;                // ρ (Eq. 2)
     float tau = 0.0f;                  // τ (Eq. 3)

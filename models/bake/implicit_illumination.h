@@ -33,8 +33,7 @@ inline bool carries_ambient(const vertex& v) { return std::abs(glm::length(v.nor
 
 // The paper's parameters. 0 for rho_m, tau or d_min: derived from the model (implicit_defaults).
 struct implicit_settings {
-    float generator_fraction =
-        1.0f;  // §3.1: the share of foliage triangles that are generators (see scenario.h)
+    float generator_fraction = 1.0f;  // §3.1: generators' share of foliage triangles (scenario.h)
     std::uint64_t seed = 1;
     float rho_m = 0.0f;        // ρ, every generator's radius of influence (Eq. 2)
     float tau = 0.0f;          // τ, the threshold (Eq. 3)
