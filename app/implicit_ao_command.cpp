@@ -21,7 +21,6 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -30,6 +29,7 @@
 #include "io/atomic_file.h"
 #include "measure/rank_correlation.h"
 #include "models/bake/implicit_illumination.h"
+#include "models/bake/lodf_leaves.h"
 #include "models/bake/nanoflann_points.h"
 #include "models/bake/radiance_transfer.h"
 
@@ -57,23 +57,14 @@ struct ao_result {
     double bake_s = 0.0;  // bake_implicit_illumination on every level, on this machine's threads
 };
 
-// Every leaf vertex's card: vertices joined by the leaf submeshes' triangles (union-find).
+// Every leaf vertex's card (models/bake/lodf_leaves.h: the foliage's connected pieces).
 std::vector<std::uint32_t> leaf_cards(const mesh_data& mesh) {
-    std::vector<std::uint32_t> parent(mesh.vertices.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto root = [&](std::uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const submesh& s : mesh.submeshes)
-        if (s.material == material_kind::leaf)
-            for (std::uint32_t i = s.first_index; i + 2 < s.first_index + s.index_count; i += 3) {
-                const std::uint32_t a = root(mesh.indices[i]);
-                parent[root(mesh.indices[i + 1])] = a;
-                parent[root(mesh.indices[i + 2])] = a;
-            }
-    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = root(v);
-    return parent;
+    std::vector<std::uint32_t> card(mesh.vertices.size(), 0u);
+    const std::vector<foliage_leaf> leaves = find_foliage_leaves(mesh);
+    for (std::uint32_t l = 0; l < leaves.size(); ++l)
+        for (const std::uint32_t t : leaves[l].triangles)
+            for (std::size_t c = 0; c < 3; ++c) card[mesh.indices[3 * std::size_t(t) + c]] = l;
+    return card;
 }
 
 // Spearman over leaf vertices of their occlusion against the mean occlusion of the other cards'
