@@ -201,12 +201,14 @@ bench_configuration_spec ladder_shells_standard_blending() {
     return c;
 }
 
-// Behrendt 2005 §4 on the shells, measured: the same ladder with its shells lit by their normals
-// even where the tiled plants are lit by SH transfer (otherwise the same image as `ladder`).
+// Behrendt 2005 §4 and Luft 2007 on the shells, measured: the same ladder with its shells lit by
+// their normals as plain ones even where the tiled plants are lit by SH transfer or by the
+// implicit surface (otherwise the same image as `ladder`).
 bench_configuration_spec ladder_shells_normal_lit() {
     bench_configuration_spec c = shells_variant(
-        "ladder_shells_normal_lit", "each species' ladder, its shells lit by the slices' normals even where the plants "
-                                    "are lit by SH transfer (measurement only)");
+        "ladder_shells_normal_lit",
+        "each species' ladder, its shells lit by the slices' normals as plain ones even where "
+        "the plants are lit by SH transfer or the implicit surface (measurement only)");
     c.options.shell_lighting = "normal_mapped";
     return c;
 }

@@ -24,6 +24,10 @@ struct shell_textures {
     // Measurement only (scenario shells.blending "standard"): the renderer builds the pyramid and
     // blends with the standard equation (lod/shell_blending.h merge_slices_standard).
     bool standard_blending = false;
+    // Every tiled species is lit by Luft 2007's implicit surface (lighting "implicit" or
+    // "sh_implicit") and the slices by their normals: those normals carry k_a as their length, as
+    // the plants' do (§3.2), and shaders/shell.frag decodes it (IMPLICIT_LIGHTING).
+    bool implicit = false;
     bool empty() const { return tiles.empty(); }
 };
 

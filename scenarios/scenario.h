@@ -157,8 +157,10 @@
 //                                    and blending with the standard equation, which pops)
 //     lighting         string   "plants"  lit as the tiled plants are: by SH transfer baked into
 //                                    the slices when every tiled species is SH-lit (Behrendt
-//                                    2005 §4), else by the slices' normals; "normal_mapped"
-//                                    (measurement only): by the normals whatever the plants
+//                                    2005 §4), else by the slices' normals (their length read as
+//                                    Luft 2007's k_a when every tiled species is implicit-lit);
+//                                    "normal_mapped" (measurement only): by the normals as plain
+//                                    ones whatever the plants
 //   }
 //   eco_tiles {   Deussen 2002 §6.2 tiles for hierarchical culling (lod/eco_tiles.h)
 //     enabled              boolean  true

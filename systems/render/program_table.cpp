@@ -83,6 +83,7 @@ program_table::program_table(const program_options& options) : m_options(options
         std::vector<std::string> defines;
         if (options.toon) defines.push_back("STYLE_TOON");
         if (options.shell_transfer) defines.push_back("SH_TRANSFER");
+        if (options.shell_implicit) defines.push_back("IMPLICIT_LIGHTING");
         m_screen[std::size_t(screen_program::shell)] = m_shaders.program({"shell.vert", "shell.frag", defines, {}});
         if (options.shell_transfer) {
             m_screen[std::size_t(screen_program::shell_relight)] =

@@ -91,6 +91,7 @@ struct program_options {
     bool normals = false;        // renderer_settings::lines: the view writes its normal buffer
     bool shells = false;         // the scene has shell textures (passes/shell_pass.h)
     bool shell_transfer = false;  // ... lit by the SH transfer baked into them (SH_TRANSFER)
+    bool shell_implicit = false;  // ... by normals carrying Luft 2007's k_a (IMPLICIT_LIGHTING)
     // Some species is darkened by its neighbours (species.implicit.population): the implicit-lit
     // programs interpolate the instance's population factor (POPULATION_AMBIENT); without it every
     // factor is 1 and they skip it.

@@ -66,6 +66,7 @@ renderer::renderer(const renderer_settings& settings, const scene_assets& assets
       m_programs({settings.shadows, settings.id_buffer, settings.fade_dissolve, settings.toon,
                   settings.lines, !assets.shells.empty(),
                   !assets.shells.empty() && assets.shells.tiles.front().has_transfer(),
+                  !assets.shells.empty() && assets.shells.implicit,
                   has_population_receivers(assets)}),
       m_ring(std::size_t(4) << 20),
       m_target(settings.width, settings.height, settings.id_buffer, settings.lines),
