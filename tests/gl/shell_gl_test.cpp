@@ -156,64 +156,63 @@ glm::dvec3 mean_colour(const image_rgba8& image, const std::vector<bool>& mask) 
     return n ? sum / double(n) : sum;
 }
 
+// Mean colours over the pixels where the meshes' frame shows plants, every plant lit by
+// `lighting` under a sun `elevation_deg` high: as meshes, as shells lit as their plants are
+// (shells.lighting "plants"), and as the same shells lit by their normals as plain ones
+// ("normal_mapped", measurement only).
+struct shell_lighting_colours {
+    glm::dvec3 meshes, shells, plain_shells;
+    std::string describe() const {
+        const auto rgb = [](const glm::dvec3& c) {
+            return std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z);
+        };
+        return "meshes " + rgb(meshes) + ", shells " + rgb(shells) + ", plain shells " +
+               rgb(plain_shells);
+    }
+};
+shell_lighting_colours shell_lighting_colours_of(const char* lighting, double elevation_deg) {
+    const auto lit = [&](scenario s, const char* shell_lighting) {
+        s.lod.lighting = lighting;
+        s.shells.lighting = shell_lighting;
+        s.sun.keyframes = {{0.0, elevation_deg, 200.0}};
+        return s;
+    };
+    const frame meshes = play(lit(shrubs_from_above(false), "plants"), 2);
+    const frame bare = play(lit(shrubs_from_above(false, true), "plants"), 2);
+    const frame shells = play(lit(shrubs_from_above(true), "plants"), 2);
+    const frame plain = play(lit(shrubs_from_above(true), "normal_mapped"), 2);
+    const std::vector<bool> mask = plant_mask(meshes.image, bare.image);
+    return {mean_colour(meshes.image, mask), mean_colour(shells.image, mask),
+            mean_colour(plain.image, mask)};
+}
+
 // Behrendt 2005 §4 on the shells: with every plant lit by SH transfer, the shells carry the
 // plants' transfer and are lit by it, so their plants look as bright as the SH-lit meshes do
-// under a high and a low sun; shells lit by their normals (shells.lighting "normal_mapped",
-// measurement only) are further off.
+// under a high and a low sun; shells lit by their normals are further off.
 TEST(shell_gl, shells_of_sh_lit_plants_are_lit_like_their_plants) {
     SYLVA_REQUIRE_GL();
     for (const double elevation : {60.0, 15.0}) {
-        const auto lit = [&](scenario s, const char* shell_lighting) {
-            s.lod.lighting = "sh";
-            s.shells.lighting = shell_lighting;
-            s.sun.keyframes = {{0.0, elevation, 200.0}};
-            return s;
-        };
-        const frame meshes = play(lit(shrubs_from_above(false), "plants"), 2);
-        const frame bare = play(lit(shrubs_from_above(false, true), "plants"), 2);
-        const frame by_transfer = play(lit(shrubs_from_above(true), "plants"), 2);
-        const frame by_normals = play(lit(shrubs_from_above(true), "normal_mapped"), 2);
-        const std::vector<bool> mask = plant_mask(meshes.image, bare.image);
-        const glm::dvec3 m = mean_colour(meshes.image, mask);
-        const glm::dvec3 t = mean_colour(by_transfer.image, mask);
-        const glm::dvec3 n = mean_colour(by_normals.image, mask);
+        const shell_lighting_colours c = shell_lighting_colours_of("sh", elevation);
         // As built, in 8-bit steps: 29.3 against 85.0 at 60°, 15.8 against 44.1 at 15° (the
         // normal-lit shells are what the transfer-lit ones become without the transfer).
-        EXPECT_LT(glm::length(t - m), 0.5 * glm::length(n - m))
-            << "sun at " << elevation << " deg: meshes " << m.x << " " << m.y << " " << m.z << ", shells by transfer "
-            << t.x << " " << t.y << " " << t.z << ", by normals " << n.x << " " << n.y << " " << n.z;
+        EXPECT_LT(glm::length(c.shells - c.meshes), 0.5 * glm::length(c.plain_shells - c.meshes))
+            << "sun at " << elevation << " deg: " << c.describe();
     }
 }
 
 // Luft 2007 on the shells: with every plant implicit-lit, the slices' normals are the mean of the
 // plants' baked ones, whose length is k_a, and the shells decode it as the plants' rungs do (the
 // sky's light darkened inside the crowns, the sun by the realigned direction, seen from the
-// view's elevation as a plain slice's normal is). Shells that read
-// the same normals as plain ones (shells.lighting "normal_mapped", measurement only: k_a taken
-// for the leaves' spread) are further from the implicit-lit meshes.
+// view's elevation as a plain slice's normal is). Shells that read the same normals as plain
+// ones (k_a taken for the leaves' spread) are further from the implicit-lit meshes.
 TEST(shell_gl, shells_of_implicit_lit_plants_are_lit_like_their_plants) {
     SYLVA_REQUIRE_GL();
     for (const double elevation : {60.0, 15.0}) {
-        const auto lit = [&](scenario s, const char* shell_lighting) {
-            s.lod.lighting = "implicit";
-            s.shells.lighting = shell_lighting;
-            s.sun.keyframes = {{0.0, elevation, 200.0}};
-            return s;
-        };
-        const frame meshes = play(lit(shrubs_from_above(false), "plants"), 2);
-        const frame bare = play(lit(shrubs_from_above(false, true), "plants"), 2);
-        const frame decoded = play(lit(shrubs_from_above(true), "plants"), 2);
-        const frame plain = play(lit(shrubs_from_above(true), "normal_mapped"), 2);
-        const std::vector<bool> mask = plant_mask(meshes.image, bare.image);
-        const glm::dvec3 m = mean_colour(meshes.image, mask);
-        const glm::dvec3 d = mean_colour(decoded.image, mask);
-        const glm::dvec3 p = mean_colour(plain.image, mask);
+        const shell_lighting_colours c = shell_lighting_colours_of("implicit", elevation);
         // As built 12.3 against 23.0 (60°) and 5.7 against 14.2 (15°) in 8-bit steps; decoded
         // without the shortening by the view's elevation, 27.1 and 9.6 (shaders/shell.frag).
-        EXPECT_LT(glm::length(d - m), 0.65 * glm::length(p - m))
-            << "sun at " << elevation << " deg: meshes " << m.x << " " << m.y << " " << m.z
-            << ", shells decoding k_a " << d.x << " " << d.y << " " << d.z << ", plain " << p.x
-            << " " << p.y << " " << p.z;
+        EXPECT_LT(glm::length(c.shells - c.meshes), 0.65 * glm::length(c.plain_shells - c.meshes))
+            << "sun at " << elevation << " deg: " << c.describe();
     }
 }
 
