@@ -51,20 +51,19 @@ shell_textures build_shell_assets(const scenario& s, const scene_assets& assets,
     // texels a side: the transfer varies with depth in the crown, not leaf by leaf); a mix of
     // SH-lit and normal-lit species keeps the normals, which every species has.
     bool by_transfer = s.shells.lighting == "plants";
-    for (std::size_t p : tiled) {
-        const species_entry& entry = assets.library.species.at(species_index_of(s, s.populations[p].species));
-        by_transfer = by_transfer && uses_transfer(entry.lighting) && !assets.meshes.at(entry.mesh_reduced).transfer.empty();
-    }
-    if (by_transfer) settings.transfer_texels = std::max(1u, settings.texels / 4);
     // Luft 2007 on the shells: the slices' normals are the mean of their plants' baked normals,
     // whose length is k_a when the species is implicit-lit. Decoded only when every tiled species'
     // is: a plain leaf's mean normal is short by its leaves' spread, not by an ambient coefficient.
-    out.implicit = s.shells.lighting == "plants" && !by_transfer;
+    bool implicit = s.shells.lighting == "plants";
     for (std::size_t p : tiled) {
         const species_entry& entry =
             assets.library.species.at(species_index_of(s, s.populations[p].species));
-        out.implicit = out.implicit && uses_implicit_normals(entry.lighting);
+        by_transfer = by_transfer && uses_transfer(entry.lighting) &&
+                      !assets.meshes.at(entry.mesh_reduced).transfer.empty();
+        implicit = implicit && uses_implicit_normals(entry.lighting);
     }
+    out.implicit = implicit && !by_transfer;
+    if (by_transfer) settings.transfer_texels = std::max(1u, settings.texels / 4);
     // One slice height for every tile (the slices are offset surfaces of the whole terrain):
     // the stack is as tall as the tallest plant any tiled population can have.
     for (std::size_t p : tiled) {

@@ -141,22 +141,23 @@ void main() {
     // FLIP fell from 0.060/0.068/0.071 to 0.057/0.063/0.063 at 5°/10°/20° (landscape's: 0.0267
     // to 0.0258), SSIM +0.001.
     vec4 seen_from_above = textureGrad(u_shell_normal, vec3(uv, layer), dx, dy);
+    vec3 n = seen_from_above.rgb * 2.0 - 1.0;
 #ifdef IMPLICIT_LIGHTING
     // Luft 2007 §3.2: the plants' normals carry k_a as their length, and the slices' are their
     // mean (setup/shell_assets.cpp): k_a decoded as the implicit-lit billboards and clouds decode
-    // it, the direction then shortened by sin β as a plain slice's is (seen_normal): the slices
-    // show the crowns' tops, the frame their sides. In tests/gl/shell_gl_test.cpp's shrubs seen
-    // from 25° the shells' mean colour came 0.54x and 0.40x as far from the implicit-lit meshes'
-    // as the same slices read as plain normals (sun at 60° and 15°); decoded but not shortened,
-    // 1.18x and 0.68x.
-    vec3 encoded = seen_from_above.rgb * 2.0 - 1.0;
-    float ka = min(length(encoded), 1.0);
-    vec3 n = (ka > 0.0 ? encoded / length(encoded) : vec3(0.0, 1.0, 0.0)) * abs(normalize(v_position).y);
+    // it, the direction then shortened by sin β as a plain slice's is (below): the slices show the
+    // crowns' tops, the frame their sides. In tests/gl/shell_gl_test.cpp's shrubs seen from 25° the
+    // shells' mean colour came 0.54x and 0.40x as far from the implicit-lit meshes' as the same
+    // slices read as plain normals (sun at 60° and 15°); decoded but not shortened, 1.18x and 0.68x.
+    float encoded_length = length(n);
+    float ka = min(encoded_length, 1.0);
+    n = encoded_length > 0.0 ? n / encoded_length : vec3(0.0, 1.0, 0.0);
 #else
+    n = filtered_normal(n);
+#endif
     // Seen from β above the horizontal the leaves' seen sides agree less than from above: the
     // mean shortened by sin β (lod/shell_sampling.h seen_normal, where it is measured).
-    vec3 n = filtered_normal(seen_from_above.rgb * 2.0 - 1.0) * abs(normalize(v_position).y);
-#endif
+    n *= abs(normalize(v_position).y);
     // The sun through the slices above (alpha: their vertical transmittance T, lod/shell_canopy.h),
     // crossed over 1/sin e of each slab's thickness, so T^(1/sin e); only where the cascades hold
     // shadows, as the plants' rungs are shadowed by their neighbours only there. (On
