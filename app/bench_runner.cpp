@@ -53,11 +53,13 @@ scenario_player make_player(const bench_run& run, const bench_configuration_spec
 }
 
 // Plays frame 0 once and rewinds, so shader compilation and first-use allocation are not timed
-// (each configuration has its own renderer). Playback is a function of the frame number, so
-// the frames that follow are the same as without it.
+// (each configuration has its own renderer). Playback is a function of the frame number, and
+// the rewound player forgets the frame it showed, so the frames that follow are the same as
+// without it.
 void warm_up(scenario_player& player) {
     player.step();
     player.set_frame(0);
+    player.forget_shown_frame();
 }
 
 bool stop_requested(const bench_settings& settings) { return settings.stop && settings.stop(); }

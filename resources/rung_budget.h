@@ -27,6 +27,11 @@ struct rung_budget {
     // A plant that changes rung keeps drawing the old one as its partner, dissolving over this
     // many frames (the new rung is whole at once, so the plant never thins).
     std::uint32_t fade_frames = 8;
+    // The frame before was not shown: the first frame, a rehearsal of it (scenario_player::step)
+    // or a jump (scenario_player::forget_shown_frame). Then no plant holds or dissolves from the
+    // rung it had: each takes its choice whole, as nothing on screen can pop. select_representation
+    // clears it once it has chosen.
+    bool cut = true;
 
     // Written by select_representation each frame.
     double lambda = 0.0;

@@ -71,8 +71,11 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         if (!shells || l.count < 2 || l.rungs[l.count - 1] != representation::shell) return 0.0f;
         return shell_fade_at(*shells, float(glm::length(t.position - cam.position)));
     };
-    // The plant's rung last frame: in the shell's band, the shell's partner.
+    // The plant's rung last frame: in the shell's band, the shell's partner. After a cut
+    // (rung_budget::cut) none was shown: nothing to hold (hysteresis, the shell's band) or
+    // dissolve.
     const auto rung_before = [&](const lod_state& lod, const fade_alpha& fade) {
+        if (budget.cut) return representation::none;
         return solver_rung(lod.current == representation::shell ? fade.partner : lod.current);
     };
     // The rung (an index) a plant in the far half of the shell's band holds, k_max_rungs for none.
@@ -153,6 +156,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         const rung_candidates c = by_error ? candidates_at(tables, size, lod.visible, texel > 0.0f,
                                                            shown_of(i, tables, lod), texel)
                                            : *offered++;
+        if (budget.cut) fade = {};  // nothing dissolves from a rung never shown
         const representation was = rung_before(lod, fade);
         const std::uint8_t previous = rung_index(tables, was);
         const std::uint8_t held = held_in_band(shell_fade, tables, was);
@@ -209,6 +213,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     });
     budget.predicted_us = 0.0;
     for (const double cost : budget.costs) budget.predicted_us += cost;
+    budget.cut = false;
 }
 
 }  // namespace
