@@ -239,6 +239,26 @@ bench_configuration_spec auto_ladder(double budget_ms) {
     return c;
 }
 
+// The auto ladder at a fixed gain: a plant buys a dearer rung only where each ms of it puts right
+// `gain_per_ms` of error, in every frame alike, so the frames where plants are near and large
+// take more time than those where they are far (as the engine baseline's do), instead of every
+// frame spending one budget.
+bench_configuration_spec auto_gain(double gain_per_ms) {
+    bench_configuration_spec c = ladder_configuration();
+    std::ostringstream value;
+    value << gain_per_ms;
+    c.name = "auto_gain_" + value.str();
+    c.family = "auto_gain";
+    c.description =
+        "each species' ladder, every plant's rung chosen per frame from measured error and cost "
+        "tables: "
+        "a dearer rung only where each ms of it puts right " +
+        value.str() + " pixels' worth of error";
+    c.quality = gain_per_ms;
+    c.options.gain_per_ms = gain_per_ms;
+    return c;
+}
+
 // `c` with every species lit by SH transfer (Behrendt 2005 §4), named `<name>_sh`: measured
 // against the SH-lit reference, beside the other SH configurations.
 bench_configuration_spec lit_by_transfer(bench_configuration_spec c) {
@@ -343,6 +363,11 @@ std::vector<bench_configuration_spec> default_bench_configurations() {
                              150.0, 180.0, 210.0, 250.0, 300.0, 350.0, 420.0, 500.0, 700.0, 1000.0,
                              2000.0})
         list.push_back(auto_ladder(budget_ms));
+    // From what buys a near tree's mesh (a few hundred pixels' worth a ms) down to what buys
+    // every plant its best rung.
+    for (double gain : {500.0, 300.0, 200.0, 120.0, 80.0, 60.0, 50.0, 40.0, 30.0, 20.0, 15.0, 10.0,
+                        7.0, 5.0, 3.0})
+        list.push_back(auto_gain(gain));
     for (float d : {1.0f, 0.5f, 2.0f, 2.25f, 2.5f, 3.0f, 4.0f}) {
         list.push_back(points_lines(d));
         if (d == 1.0f) list.push_back(lit_implicitly(points_lines(d)));
@@ -389,7 +414,8 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
     // With a ladder a frame-time target drives the auto ladder's budget, not d'.
     const bool points_options = o.sample_distance_px || o.splats || o.primitive_budget ||
                                 (o.target_frame_ms && representation != "ladder");
-    if (!o.representation && !points_options && !o.plant_budget_ms && !o.max_error && !o.target_frame_ms)
+    if (!o.representation && !points_options && !o.plant_budget_ms && !o.max_error &&
+        !o.target_frame_ms && !o.gain_per_ms)
         return std::nullopt;
     if (points_options && representation != "points_lines") {
         const char* option = o.sample_distance_px ? "--sample-distance"
@@ -422,6 +448,18 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
                             "to a GPU frame time of " + value.str() + " ms (timing-dependent: its errors vary from "
                             "run to run)";
             c.options.target_frame_ms = lod.target_frame_ms;
+        }
+        if (lod.gain_per_ms > 0.0) {
+            std::ostringstream gain;
+            gain << lod.gain_per_ms;
+            if (c.family == "auto") {
+                c.name += "_gain_" + gain.str();
+                c.description += ", a dearer rung only where each ms of it puts right " +
+                                 gain.str() + " pixels' worth of error";
+                c.options.gain_per_ms = lod.gain_per_ms;
+            } else {
+                c = auto_gain(lod.gain_per_ms);
+            }
         }
     } else if (representation == "billboard_clouds") {
         c = billboard_clouds(s.lod.lighting, s.lod.cloud_distance_m);

@@ -98,11 +98,13 @@ int implicit_look(const implicit_look_options& o) {
             // its own rung tables (default's budget put 681 plants on clouds implicit-lit and 379
             // normal-lit in the first frame), so the look would compare representations as well
             // as lightings. Its ladder is played by projected size (the sizes in the file) instead.
-            if (s.lod.plant_budget_ms > 0.0 || s.lod.max_error > 0.0 || s.lod.target_frame_ms > 0.0) {
+            if (s.lod.plant_budget_ms > 0.0 || s.lod.max_error > 0.0 ||
+                s.lod.target_frame_ms > 0.0 || s.lod.gain_per_ms > 0.0) {
                 spdlog::info("implicit-look: {} chooses its rungs under a budget; both lightings play its ladder by "
                              "projected size, so every plant is on the same rung in both",
                              s.name);
-                s.lod.plant_budget_ms = s.lod.max_error = s.lod.target_frame_ms = 0.0;
+                s.lod.plant_budget_ms = s.lod.max_error = s.lod.target_frame_ms =
+                    s.lod.gain_per_ms = 0.0;
             }
             scenarios.push_back(std::move(s));
         } catch (const scenario_error& e) {

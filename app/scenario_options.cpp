@@ -87,6 +87,18 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "With --representation ladder, instead of a budget: draw every plant on the cheapest rung whose "
                     "measured mean colour error per plant pixel (0..1) is at most this (overrides lod.max_error)")
         ->check(CLI::Range(0.0, 1.0));
+    command
+        .add_option("--gain-per-ms", options.gain_per_ms,
+                    "With --representation ladder: buy a plant a dearer rung only where each ms of "
+                    "it puts right at "
+                    "least this much error (pixels' worth of colour error, from the same tables), "
+                    "in every frame "
+                    "alike: alone it spends what each frame is worth (the file's plant budget is "
+                    "dropped); with "
+                    "--plant-budget-ms or --target-frame-ms the budget also caps it (overrides "
+                    "lod.gain_per_ms; 0: "
+                    "none)")
+        ->check(CLI::Range(0.0, 1e6));
 }
 
 scenario load_scenario_file_or_bundled(const std::string& path) {
@@ -130,18 +142,28 @@ scenario load_with_overrides(const scenario_options& options) {
         s.lod.plant_budget_ms = *options.plant_budget_ms;
         s.lod.max_error = 0.0;
     }
+    if (options.gain_per_ms) {
+        s.lod.gain_per_ms = *options.gain_per_ms;
+        s.lod.max_error = 0.0;
+        // A gain asked for alone spends what each frame is worth: the file's budget would cap it
+        // at one frame's, as a budget it was not chosen with (--plant-budget-ms beside it caps it).
+        if (!options.plant_budget_ms) s.lod.plant_budget_ms = 0.0;
+    }
     if (options.max_error) {
         s.lod.max_error = *options.max_error;
-        s.lod.plant_budget_ms = 0.0;
+        s.lod.plant_budget_ms = s.lod.gain_per_ms = 0.0;
         if (s.lod.representation == "ladder") s.lod.target_frame_ms = 0.0;
-        if (options.plant_budget_ms || (options.target_frame_ms && s.lod.representation == "ladder"))
-            throw scenario_error(s.source, "/lod/max_error", std::to_string(s.lod.max_error),
-                                 "--max-error chooses the rungs without a budget: give it or "
-                                 "--plant-budget-ms/--target-frame-ms, not both");
+        if (options.plant_budget_ms || options.gain_per_ms ||
+            (options.target_frame_ms && s.lod.representation == "ladder"))
+            throw scenario_error(
+                s.source, "/lod/max_error", std::to_string(s.lod.max_error),
+                "--max-error chooses the rungs without a budget or a gain: give it or "
+                "--plant-budget-ms/--target-frame-ms/--gain-per-ms, not both");
     }
     for (const auto& [field, option, value] :
          {std::tuple{"plant_budget_ms", "--plant-budget-ms", s.lod.plant_budget_ms},
-          std::tuple{"max_error", "--max-error", s.lod.max_error}})
+          std::tuple{"max_error", "--max-error", s.lod.max_error},
+          std::tuple{"gain_per_ms", "--gain-per-ms", s.lod.gain_per_ms}})
         if (value > 0.0 && s.lod.representation != "ladder")
             throw scenario_error(s.source, std::string("/lod/") + field, std::to_string(value),
                                  std::string(option) + " chooses the rungs of a ladder, but the scenario draws " +

@@ -25,6 +25,7 @@ struct scenario_options {
     std::optional<double> target_frame_ms;
     std::optional<double> plant_budget_ms;
     std::optional<double> max_error;
+    std::optional<double> gain_per_ms;
 };
 
 void add_scenario_options(CLI::App& command, scenario_options& options);

@@ -84,13 +84,18 @@ struct ladder_aim {
     double plant_budget_ms = 0.0;
     double target_frame_ms = 0.0;
     double max_error = 0.0;
-    bool any() const { return plant_budget_ms > 0.0 || target_frame_ms > 0.0 || max_error > 0.0; }
+    double gain_per_ms = 0.0;
+    bool any() const {
+        return plant_budget_ms > 0.0 || target_frame_ms > 0.0 || max_error > 0.0 ||
+               gain_per_ms > 0.0;
+    }
 };
 
 ladder_aim aim_of(const scenario& s, const player_options& o) {
-    const ladder_aim own{o.plant_budget_ms, o.target_frame_ms, o.max_error};
+    const ladder_aim own{o.plant_budget_ms, o.target_frame_ms, o.max_error, o.gain_per_ms};
     if (own.any()) return own;
-    if (o.scenario_lod) return {s.lod.plant_budget_ms, s.lod.target_frame_ms, s.lod.max_error};
+    if (o.scenario_lod)
+        return {s.lod.plant_budget_ms, s.lod.target_frame_ms, s.lod.max_error, s.lod.gain_per_ms};
     return {};
 }
 
@@ -427,6 +432,7 @@ rung_budget scenario_player::auto_ladder(const lod_policy& policy, const player_
     rung_budget budget;
     const ladder_aim aim = aim_of(m_scenario, options);
     budget.max_error = aim.max_error;
+    budget.gain_per_us = aim.gain_per_ms / 1000.0;
     budget.target_frame_ms = aim.target_frame_ms;
     // Under a frame-time target alone the budget climbs from every plant on its cheapest rung
     // (systems/adapt_plant_budget_system.h).

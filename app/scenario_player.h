@@ -69,6 +69,9 @@ struct player_options {
     // scenario's.
     double target_frame_ms = 0.0;
     double max_error = 0.0;
+    // The least error a ms of a plant's cost must buy (resources/rung_budget.h gain_per_us), alone
+    // or with a budget or target; set here it replaces the scenario's lod.gain_per_ms.
+    double gain_per_ms = 0.0;
     // Behrendt 2005 Eq. 2's f for the shells (scenario shells.slant); negative: the scenario's.
     double shell_slant = -1.0;
     std::string shell_blending;  // scenario shells.blending; empty: the scenario's

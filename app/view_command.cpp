@@ -171,8 +171,9 @@ void fly(GLFWwindow* window, walk_state& state, camera& cam, float dt) {
 }
 
 // The auto ladder's aim as a slider (issue 21 item 6): the frame-time target, the error
-// threshold or the plants' budget, whichever the run chose its rungs by; the next frame solves
-// for the new value. Nothing without measured rung tables.
+// threshold or the plants' budget, whichever the run chose its rungs by, and the gain a ms must
+// buy when the run gave one; the next frame solves for the new value. Nothing without measured
+// rung tables.
 void budget_slider(rung_budget& budget) {
     if (!budget.active()) return;
     if (budget.max_error > 0.0) {
@@ -184,10 +185,16 @@ void budget_slider(rung_budget& budget) {
         if (ImGui::SliderFloat("target frame ms", &t, 5.0f, 2000.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
             budget.target_frame_ms = double(t);
         ImGui::Text("plant budget %.1f ms (adapted)", budget.plant_budget_us / 1000.0);
-    } else {
+    } else if (budget.plant_budget_us > 0.0) {
         float ms = float(budget.plant_budget_us / 1000.0);
         if (ImGui::SliderFloat("plant budget ms", &ms, 1.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
             budget.plant_budget_us = double(ms) * 1000.0;
+    }
+    if (budget.gain_per_us > 0.0) {
+        float g = float(budget.gain_per_us * 1000.0);
+        if (ImGui::SliderFloat("gain per ms", &g, 1.0f, 1000.0f, "%.0f",
+                               ImGuiSliderFlags_Logarithmic))
+            budget.gain_per_us = double(g) / 1000.0;
     }
     ImGui::Text("predicted plants %.1f ms  lambda %.3g", budget.predicted_us / 1000.0, budget.lambda);
 }

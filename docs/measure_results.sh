@@ -23,6 +23,8 @@ normal+=",mesh_lod,mesh_lod_x0.25,mesh_lod_x0.5,mesh_lod_x2,billboard_clouds,bil
 normal+=",points_lines,points_lines_d2,points_lines_d2.5,points_lines_d3,points_lines_d4"
 normal+=",ladder,ladder_x0.5,ladder_x2,auto_15,auto_20,auto_30,auto_38,auto_45,auto_60,auto_75,auto_90,auto_105,auto_120,auto_150,auto_180,auto_210"
 normal+=",auto_250,auto_300,auto_350,auto_420,auto_500"
+normal+=",auto_gain_500,auto_gain_300,auto_gain_200,auto_gain_120,auto_gain_80,auto_gain_60,auto_gain_50"
+normal+=",auto_gain_40,auto_gain_30,auto_gain_20,auto_gain_15,auto_gain_10,auto_gain_7,auto_gain_5,auto_gain_3"
 sh="brute_force_sh,crossed_billboard_only_sh,baseline_25m_sh,baseline_sh,baseline_100m_sh"
 sh+=",mesh_lod_sh,billboard_clouds_sh,points_lines_sh,points_lines_d2_sh"
 

@@ -17,6 +17,12 @@ struct rung_budget {
     // per plant pixel (of 1, as the tables measure it) is at most this (lod/rung_solver.h
     // cheapest_within).
     double max_error = 0.0;
+    // Above 0: the least error a microsecond of a plant's cost must put right (error as the
+    // tables sum it over the plant's pixels), so λ never falls below it (lod/rung_solver.h): each
+    // plant buys a dearer rung only where it is worth this much, in every frame alike; with a
+    // budget too, the budget's λ where it is higher. Alone (no budget, no target) it spends what
+    // each frame is worth: little where the plants are far, more where they are near.
+    double gain_per_us = 0.0;
     // Above 0: plant_budget_us is adapted every frame so that the GPU frame takes this long
     // (systems/adapt_plant_budget_system.h; not deterministic).
     double target_frame_ms = 0.0;

@@ -231,6 +231,14 @@
 //                                       colour error per plant pixel (of 1, in the same tables)
 //                                       is at most this; not with plant_budget_ms or
 //                                       target_frame_ms
+//     gain_per_ms        number  0      0 .. 1e6; with representation "ladder": the auto ladder
+//                                       buys a plant a dearer rung only where each ms of it puts
+//                                       right at least this much error (the tables' colour
+//                                       error summed over the plant's pixels: pixels' worth).
+//                                       Alone it spends what each frame is worth (more where
+//                                       plants are near and large, little where they are far);
+//                                       with plant_budget_ms or target_frame_ms the budget also
+//                                       caps it; not with max_error
 //     lodf_slots         integer 32     1 .. 65536; plants a ladder with a "lodf" rung can
 //                                       draw by LoDF at once (each slot holds the species'
 //                                       cluster entities and indirect commands); a plant that
@@ -470,6 +478,7 @@ struct lod_settings {
     std::vector<ladder_step_settings> ladder;  // empty: the papers' ladder (lod/ladder.h)
     double plant_budget_ms = 0.0;  // ladder: rungs chosen by measured tables within this cost
     double max_error = 0.0;        // ladder: the cheapest rung within this error per plant pixel
+    double gain_per_ms = 0.0;  // ladder: a dearer rung only where a ms of it buys this much error
     std::uint32_t lodf_slots = 32;  // plants on the LoDF rung at once (resources/lodf_slots.h)
     bool operator==(const lod_settings&) const = default;
 };

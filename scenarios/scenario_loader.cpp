@@ -428,40 +428,49 @@ const field_table<eco_tile_settings>& eco_tile_fields() {
 
 const field_table<lod_settings>& lod_fields() {
     using t = lod_settings;
-    static const auto table = field_table<t>()
-                                  .choice("representation", &t::representation,
-                                          k_lod_representations)
-                                  .number("sample_distance_px", &t::sample_distance_px,
-                                          {0.05, 64.0})
-                                  .number("splat_factor", &t::splat_factor, {1.0, 4.0})
-                                  .choice("splats", &t::splats, k_splat_styles)
-                                  .boolean("fog_weighted_samples", &t::fog_weighted_samples)
-                                  .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
-                                  .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
-                                  .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})
-                                  .choice("lighting", &t::lighting, k_lightings)
-                                  .integer("sh_bands", &t::sh_bands, {2, 3})
-                                  .boolean("sh_interreflection", &t::sh_interreflection)
-                                  .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
-                                       [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
-                                  .number("plant_budget_ms", &t::plant_budget_ms, {0.0, 1e5})
-                                  .number("max_error", &t::max_error, {0.0, 1.0})
-                                  .integer("lodf_slots", &t::lodf_slots, {1, 65536})
-                                  .check([](const json_node& n, const t& s) {
-                                      if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
-                                          n.find("target_frame_ms")
-                                              ->fail("give either primitive_budget or target_frame_ms, not both");
-                                      const char* const needs_ladder =
-                                          "chooses the rungs of a ladder: it needs representation \"ladder\"";
-                                      if (s.plant_budget_ms > 0.0 && s.representation != "ladder")
-                                          n.find("plant_budget_ms")->fail(needs_ladder);
-                                      if (s.max_error > 0.0 && s.representation != "ladder")
-                                          n.find("max_error")->fail(needs_ladder);
-                                      if (s.max_error > 0.0 && (s.plant_budget_ms > 0.0 || s.target_frame_ms > 0.0))
-                                          n.find("max_error")
-                                              ->fail("an error threshold chooses the rungs without a budget: give "
-                                                     "max_error or plant_budget_ms/target_frame_ms, not both");
-                                  });
+    static const auto table =
+        field_table<t>()
+            .choice("representation", &t::representation, k_lod_representations)
+            .number("sample_distance_px", &t::sample_distance_px, {0.05, 64.0})
+            .number("splat_factor", &t::splat_factor, {1.0, 4.0})
+            .choice("splats", &t::splats, k_splat_styles)
+            .boolean("fog_weighted_samples", &t::fog_weighted_samples)
+            .number("primitive_budget", &t::primitive_budget, {0.0, 1e9})
+            .number("target_frame_ms", &t::target_frame_ms, {0.0, 1e5})
+            .number("cloud_distance_m", &t::cloud_distance_m, {0.1, 1e5})
+            .choice("lighting", &t::lighting, k_lightings)
+            .integer("sh_bands", &t::sh_bands, {2, 3})
+            .boolean("sh_interreflection", &t::sh_interreflection)
+            .add(
+                "ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
+                [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
+            .number("plant_budget_ms", &t::plant_budget_ms, {0.0, 1e5})
+            .number("max_error", &t::max_error, {0.0, 1.0})
+            .number("gain_per_ms", &t::gain_per_ms, {0.0, 1e6})
+            .integer("lodf_slots", &t::lodf_slots, {1, 65536})
+            .check([](const json_node& n, const t& s) {
+                if (s.primitive_budget > 0.0 && s.target_frame_ms > 0.0)
+                    n.find("target_frame_ms")
+                        ->fail("give either primitive_budget or target_frame_ms, not both");
+                const char* const needs_ladder =
+                    "chooses the rungs of a ladder: it needs representation \"ladder\"";
+                if (s.plant_budget_ms > 0.0 && s.representation != "ladder")
+                    n.find("plant_budget_ms")->fail(needs_ladder);
+                if (s.max_error > 0.0 && s.representation != "ladder")
+                    n.find("max_error")->fail(needs_ladder);
+                if (s.gain_per_ms > 0.0 && s.representation != "ladder")
+                    n.find("gain_per_ms")->fail(needs_ladder);
+                if (s.gain_per_ms > 0.0 && s.max_error > 0.0)
+                    n.find("gain_per_ms")
+                        ->fail(
+                            "an error threshold chooses each plant's rung on its own: give "
+                            "max_error or gain_per_ms, not both");
+                if (s.max_error > 0.0 && (s.plant_budget_ms > 0.0 || s.target_frame_ms > 0.0))
+                    n.find("max_error")
+                        ->fail(
+                            "an error threshold chooses the rungs without a budget: give "
+                            "max_error or plant_budget_ms/target_frame_ms, not both");
+            });
     return table;
 }
 
@@ -670,7 +679,8 @@ scenario load_default_scenario() {
 
 void draw_by(scenario& s, std::string representation) {
     s.lod.representation = std::move(representation);
-    if (s.lod.representation != "ladder") s.lod.plant_budget_ms = s.lod.max_error = 0.0;
+    if (s.lod.representation != "ladder")
+        s.lod.plant_budget_ms = s.lod.max_error = s.lod.gain_per_ms = 0.0;
 }
 
 std::vector<std::string> bundled_scenario_names() {

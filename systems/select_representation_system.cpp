@@ -1,5 +1,6 @@
 #include "systems/select_representation_system.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 #include "ecs/parallel.h"
@@ -25,9 +26,10 @@ std::uint8_t rung_index(const species_rung_tables& tables, representation r) {
 // DESIGN §1.5 `auto`: every plant drawn (seen or casting) on the rung the budget solver picks
 // (lod/rung_solver.h). Under a budget, two passes over the plants: each chunk's histogram of
 // cost savings over λ, merged in chunk order; then each plant's choice at λ, with hysteresis,
-// and its predicted cost summed per chunk. Under an error threshold only the second pass, each
-// plant on its cheapest rung within it. A plant whose rung changed keeps the old one as a
-// partner dissolving over fade_frames frames.
+// and its predicted cost summed per chunk (λ at least the gain, rung_budget::gain_per_us). Under
+// an error threshold only the second pass, each plant on its cheapest rung within it; at a gain
+// alone the same, each plant's choice at λ = the gain. A plant whose rung changed keeps the old
+// one as a partner dissolving over fade_frames frames.
 void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     const camera& cam = ctx.single<camera>();
     const auto& library = ctx.resource<species_library>().species;
@@ -104,6 +106,11 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     budget.histograms.assign(chunks, lambda_histogram{});
     budget.costs.assign(chunks, 0.0);
     const bool by_error = budget.max_error > 0.0;
+    // At a fixed gain alone (no budget to hold, no target to adapt it to) λ is the gain: no
+    // histogram, each plant judged once, in the choosing pass, as under an error threshold.
+    const bool one_pass =
+        by_error || (budget.gain_per_us > 0.0 && !(budget.plant_budget_us > 0.0) &&
+                     !(budget.target_frame_ms > 0.0));
     budget.offers.resize(std::max(budget.offers.size(), chunks));
     for (std::size_t k = 0; k < chunks; ++k) budget.offers[k].clear();
     // The per-plant work of both passes is out of line (noinline): only the plants seen or
@@ -122,7 +129,7 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
             c = {{c.error[held]}, {c.cost_us[held]}, c.plant_pixels, 1};  // no choice: no saving to offer
         budget.histograms[chunk].add(c);
     };
-    if (!by_error) {
+    if (!one_pass) {
         ctx.parallel_for(plants.size(), [&](std::size_t begin, std::size_t end, std::size_t chunk) {
             std::size_t plant = begin;  // the dense index each_chunk walks
             plants.each_chunk(begin, end, [&](ecs::entity, const world_transform& t, const bounds& b,
@@ -134,8 +141,9 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
     }
     lambda_histogram total;
     for (const lambda_histogram& h : budget.histograms) total.merge(h);
-    const lambda_choice lambda = by_error ? lambda_choice{} : solve_lambda(total, budget.plant_budget_us);
-    budget.lambda = lambda.at;
+    const lambda_choice lambda =
+        one_pass ? lambda_choice{} : solve_lambda(total, budget.plant_budget_us);
+    budget.lambda = std::max(lambda.at, budget.gain_per_us);
     budget.most_useful_us = total.cost_at_zero_us;
     budget.least_possible_us = total.cheapest_cost_us();
     const float fade_step = 1.0f / float(std::max<std::uint32_t>(budget.fade_frames, 1));
@@ -152,8 +160,8 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         }
         const species_rung_tables& tables = budget.tables[std::size_t(p.species)];
         const float size = size_of(t, p);
-        const float texel = by_error ? caster_texel_of(t, b, lod) : 0.0f;
-        const rung_candidates c = by_error ? candidates_at(tables, size, lod.visible, texel > 0.0f,
+        const float texel = one_pass ? caster_texel_of(t, b, lod) : 0.0f;
+        const rung_candidates c = one_pass ? candidates_at(tables, size, lod.visible, texel > 0.0f,
                                                            shown_of(i, tables, lod), texel)
                                            : *offered++;
         if (budget.cut) fade = {};  // nothing dissolves from a rung never shown
@@ -163,10 +171,14 @@ void choose_by_budget(ecs::system_context<select_representation_system>& ctx) {
         // Only under a budget does a plant need its dither (the hash is per plant, per frame).
         const std::uint8_t chosen =
             held < c.count ? held
-            : by_error     ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous, budget.hysteresis)
-                           : choose_at(c,
-                                       lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part), budget.hysteresis),
-                                       previous, budget.hysteresis);
+            : by_error
+                ? cheapest_within(c, budget.max_error * double(c.plant_pixels), previous,
+                                  budget.hysteresis)
+                : choose_at(c,
+                            std::max(budget.gain_per_us,
+                                     lambda.for_plant(sample_dither(p.seed, k_lambda_dither_part),
+                                                      budget.hysteresis)),
+                            previous, budget.hysteresis);
         const double chosen_cost = double(c.cost_us[chosen]);
         const representation rung = tables.rungs[chosen].rung;
         if (fade.partner == representation::eco_tile || (was == representation::points && fade.partner == representation::points))

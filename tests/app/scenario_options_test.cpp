@@ -50,5 +50,26 @@ TEST(scenario_options,
     EXPECT_EQ(s.lod.plant_budget_ms, 40.0);
 }
 
+TEST(scenario_options, a_gain_alone_spends_what_each_frame_is_worth_not_the_file_s_budget) {
+    scenario_options o;
+    o.path = std::string(SYLVA_SOURCE_DIR) + "/scenarios/default.json";
+    ASSERT_GT(load_with_overrides(o).lod.plant_budget_ms, 0.0);
+    o.gain_per_ms = 40.0;
+    scenario s = load_with_overrides(o);
+    EXPECT_EQ(s.lod.gain_per_ms, 40.0);
+    EXPECT_EQ(s.lod.plant_budget_ms, 0.0);
+    o.plant_budget_ms = 60.0;  // a budget given beside it caps it
+    s = load_with_overrides(o);
+    EXPECT_EQ(s.lod.gain_per_ms, 40.0);
+    EXPECT_EQ(s.lod.plant_budget_ms, 60.0);
+    o.max_error = 0.05;  // an error threshold is another aim
+    try {
+        (void)load_with_overrides(o);
+        FAIL() << "an error threshold beside a gain was accepted";
+    } catch (const scenario_error& e) {
+        EXPECT_NE(std::string(e.what()).find("--gain-per-ms"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace sylva

@@ -132,6 +132,23 @@ TEST(ladder_fields, an_error_threshold_needs_a_ladder_and_no_budget) {
     EXPECT_EQ(load(j).lod.target_frame_ms, 30.0) << "a frame-time target drives a ladder's budget";
 }
 
+TEST(ladder_fields, a_gain_needs_a_ladder_and_no_error_threshold) {
+    json j = with_ladder(k_three);
+    j["lod"]["gain_per_ms"] = 40;
+    EXPECT_EQ(load(j).lod.gain_per_ms, 40.0);
+    j["lod"]["plant_budget_ms"] = 60;
+    EXPECT_EQ(load(j).lod.gain_per_ms, 40.0) << "a budget caps what a gain spends";
+    j["lod"].erase("plant_budget_ms");
+    j["lod"]["gain_per_ms"] = -1;
+    expect_error(j, "/lod/gain_per_ms", "");
+    j["lod"]["gain_per_ms"] = 40;
+    j["lod"]["representation"] = "mesh_levels";
+    expect_error(j, "/lod/gain_per_ms", "chooses the rungs of a ladder");
+    j["lod"]["representation"] = "ladder";
+    j["lod"]["max_error"] = 0.04;
+    expect_error(j, "/lod/gain_per_ms", "an error threshold chooses each plant's rung on its own");
+}
+
 // LoDF whole is the full mesh's foliage (lod/ladder.h seamless_step): the step from mesh_full into
 // it is a hard switch, its band 0 when left out and refused when given; after another rung, or
 // into the rung after LoDF, the band is the usual fade.

@@ -406,7 +406,7 @@ TEST(scenario_loader, unknown_field_in_every_section_is_rejected) {
          "primitive_budget, "
          "target_frame_ms, "
          "cloud_distance_m, lighting, sh_bands, sh_interreflection, ladder, plant_budget_ms, "
-         "max_error, lodf_slots"},
+         "max_error, gain_per_ms, lodf_slots"},
     };
     for (const auto& [pointer, known] : cases) {
         SCOPED_TRACE(pointer);

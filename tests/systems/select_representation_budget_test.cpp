@@ -1,17 +1,18 @@
 // The budget solver in the frame (systems/select_representation_system.cpp), by hand: with a
 // ladder ending in the shell (Behrendt 2005 §3.3 end) the shell takes over by its own fade, as by
 // size, and its plants are neither a choice nor a cost of the solver's; a plant's shadow is
-// costed at the cascade it casts into, and not at all when it casts into none.
-#include "systems/select_representation_system.h"
-
+// costed at the cascade it casts into, and not at all when it casts into none; a gain (error per
+// µs a dearer rung must buy) holds λ from below, alone or under a budget.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "ecs/executor.h"
 #include "ecs/schedule.h"
+#include "systems/select_representation_system.h"
 #include "tests/systems/origin_camera.h"
 
 namespace sylva {
@@ -167,6 +168,40 @@ TEST(select_representation_budget, a_shadow_is_costed_at_its_cascade_and_not_whe
     scene.run();
     EXPECT_EQ(scene.lod(0).current, representation::crossed_billboard);
     EXPECT_DOUBLE_EQ(scene.world.resource<rung_budget>().predicted_us, 15.0);
+}
+
+// The scene's tables by hand: the full mesh puts right an error of 1,000 for 99 µs more than the
+// crossed billboard, 1000 / 99 = 10.10 per µs (10,101 pixels' worth a ms).
+TEST(select_representation_budget,
+     a_gain_alone_buys_a_dearer_rung_only_where_it_is_worth_the_gain) {
+    for (const auto& [gain, rung, cost] :
+         {std::tuple{10.0, representation::mesh_full, 300.0},
+          std::tuple{10.2, representation::crossed_billboard, 3.0}}) {
+        shell_budget_scene scene({50.0, 100.0, 150.0}, 0.0);  // no budget
+        scene.world.resource<rung_budget>().gain_per_us = gain;
+        scene.run();
+        for (std::size_t i = 0; i < 3; ++i)
+            EXPECT_EQ(scene.lod(i).current, rung) << "gain " << gain << ", plant " << i;
+        const rung_budget& budget = scene.world.resource<rung_budget>();
+        EXPECT_DOUBLE_EQ(budget.predicted_us, cost)
+            << "gain " << gain;  // no budget holds it: each plant alike
+        EXPECT_DOUBLE_EQ(budget.lambda, gain);
+    }
+}
+
+TEST(select_representation_budget, under_a_budget_a_gain_is_a_floor_on_lambda) {
+    // The higher λ rules. A budget of 1,000 µs holds three meshes (λ 0): a gain below the
+    // breakpoint keeps them, one above it puts every plant on its crossed billboard. A budget of
+    // 5 µs needs every plant there, whatever the gain below the breakpoint says.
+    for (const auto& [budget_us, gain, cost] :
+         {std::tuple{1000.0, 1.0, 300.0}, std::tuple{1000.0, 10.2, 3.0},
+          std::tuple{5.0, 1.0, 3.0}}) {
+        shell_budget_scene scene({50.0, 100.0, 150.0}, budget_us);
+        scene.world.resource<rung_budget>().gain_per_us = gain;
+        scene.run();
+        EXPECT_DOUBLE_EQ(scene.world.resource<rung_budget>().predicted_us, cost)
+            << "budget " << budget_us << " µs, gain " << gain;
+    }
 }
 
 }  // namespace
