@@ -39,14 +39,15 @@ TEST(viewer, xvfb_screenshot_matches_the_headless_render_of_the_same_frame) {
     fs::remove_all(dir);
 }
 
-// The overlay's auto-ladder slider (budget, frame-time target or error threshold) draws with
-// each of the three aims, and the viewer runs through them to the end.
+// The overlay's auto-ladder slider (budget, frame-time target, error threshold or gain) draws
+// with each of the four aims, and the viewer runs through them to the end.
 TEST(viewer, the_overlay_draws_the_auto_ladder_slider_for_each_aim) {
     if (run("command -v xvfb-run") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
     const std::string command = "env -u WAYLAND_DISPLAY xvfb-run -a -s '-screen 0 640x480x24' " +
                                 std::string(SYLVA_BINARY) + " view " + SYLVA_SOURCE_DIR +
                                 "/scenarios/tiny.json --representation ladder --exit-after 3 ";
-    for (const char* aim : {"--plant-budget-ms 5", "--target-frame-ms 50", "--max-error 0.05"})
+    for (const char* aim : {"--plant-budget-ms 5", "--target-frame-ms 50", "--max-error 0.05", "--gain-per-ms 40",
+                            "--gain-per-ms 40 --plant-budget-ms 5"})
         EXPECT_EQ(run(command + aim), 0) << aim;
     EXPECT_NE(run(command + "--max-error 0.05 --plant-budget-ms 5"), 0) << "two aims at once are refused";
 }
