@@ -251,8 +251,7 @@ bench_configuration_spec auto_gain(double gain_per_ms) {
     c.family = "auto_gain";
     c.description =
         "each species' ladder, every plant's rung chosen per frame from measured error and cost "
-        "tables: "
-        "a dearer rung only where each ms of it puts right " +
+        "tables: a dearer rung only where each ms of it puts right " +
         value.str() + " pixels' worth of error";
     c.quality = gain_per_ms;
     c.options.gain_per_ms = gain_per_ms;

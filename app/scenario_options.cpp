@@ -88,16 +88,13 @@ void add_scenario_options(CLI::App& command, scenario_options& options) {
                     "measured mean colour error per plant pixel (0..1) is at most this (overrides lod.max_error)")
         ->check(CLI::Range(0.0, 1.0));
     command
-        .add_option("--gain-per-ms", options.gain_per_ms,
-                    "With --representation ladder: buy a plant a dearer rung only where each ms of "
-                    "it puts right at "
-                    "least this much error (pixels' worth of colour error, from the same tables), "
-                    "in every frame "
-                    "alike: alone it spends what each frame is worth (the file's plant budget is "
-                    "dropped); with "
-                    "--plant-budget-ms or --target-frame-ms the budget also caps it (overrides "
-                    "lod.gain_per_ms; 0: "
-                    "none)")
+        .add_option(
+            "--gain-per-ms", options.gain_per_ms,
+            "With --representation ladder: buy a plant a dearer rung only where each ms of it puts "
+            "right at least this much error (pixels' worth of colour error, from the same tables), "
+            "in every frame alike: alone it spends what each frame is worth (the file's plant "
+            "budget is dropped); with --plant-budget-ms or --target-frame-ms the budget also caps "
+            "it (overrides lod.gain_per_ms; 0: none)")
         ->check(CLI::Range(0.0, 1e6));
 }
 

@@ -322,8 +322,8 @@ void scenario_player::step(frame_record& record) {
     const seen_pixels& seen = m_world.resource<seen_pixels>();
     if (budget.active() && budget.cut && seen.wanted && !seen.measured &&
         m_world.resource<render_device>().renderer) {
-        m_executor.run(
-            [&] { m_schedule.run(m_world, m_executor); });  // the rehearsal (step's comment)
+        // The rehearsal (step's comment in the header): drawn for its counts, never shown.
+        m_executor.run([&] { m_schedule.run(m_world, m_executor); });
         budget.cut = true;
     }
     const auto start = clock_type::now();
