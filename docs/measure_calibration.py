@@ -54,6 +54,19 @@ def main():
             worst = max(worst, spread)
             label = f"{splats} splat" if what == "point" else "line"
             rows.append(f"| {d:g} | {label} | {median:.3f} | {min(values):.3f} – {max(values):.3f} | ±{spread:.1f} % |")
+    # The auto ladder's cost coefficients (lod/shader_work_costs.h): what its rung tables' shader
+    # work is priced at, so how far they spread is how far a budget's choices can move between
+    # calibrations of one device.
+    work_rows = []
+    for key, label in (("vertex_us", "c_v, µs per vertex"), ("fragment_us", "c_f, µs per view fragment"),
+                       ("shadow_fragment_us", "c_s, µs per shadow fragment")):
+        values = [r["shader_work"]["costs"][key] for r in runs if "costs" in r.get("shader_work", {})]
+        if not values:
+            continue
+        median = statistics.median(values)
+        spread = max(abs(v / median - 1.0) for v in values) * 100.0
+        work_rows.append(f"| {label} | {median:.5f} | {min(values):.5f} – {max(values):.5f} | ±{spread:.1f} % |")
+    work_refused = [r["shader_work"]["refused"] for r in runs if "refused" in r.get("shader_work", {})]
     commit = measure_meta.commit()
     seconds = [r["seconds"] for r in runs if "seconds" in r]
     page = [
@@ -72,6 +85,17 @@ def main():
         "| d' px | primitive | median | range | spread |",
         "|---:|---|---:|---|---:|",
         *rows,
+        "",
+        "## Shader work (the auto ladder's rung costs)",
+        "",
+        "What `sylva calibrate` fits from frames of tiny, small and large triangles and a shadow map "
+        "(lod/shader_work_costs.h); the auto ladder prices its rung tables' vertex and fragment invocations "
+        "with them, so their spread is how far a plant budget's choices can move between calibrations of one "
+        f"device. Refused runs: {len(work_refused)}.",
+        "",
+        "| coefficient | median | range | spread |",
+        "|---|---:|---|---:|",
+        *work_rows,
         "",
     ]
     os.makedirs(os.path.join(ROOT, "docs", "results"), exist_ok=True)
