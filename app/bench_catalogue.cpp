@@ -224,17 +224,39 @@ bench_configuration_spec ladder_shells_full_resolution() {
     return c;
 }
 
+// A value as the bench names and describes it (shortest form: 40, 0.25).
+std::string value_text(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+// An auto ladder configuration of sweep `family`, named `<prefix><value>` (the value its quality).
+bench_configuration_spec auto_configuration(const std::string& prefix, std::string family,
+                                            double value, std::string description) {
+    bench_configuration_spec c = ladder_configuration();
+    c.name = prefix + value_text(value);
+    c.family = std::move(family);
+    c.description = std::move(description);
+    c.quality = value;
+    return c;
+}
+
+// What a gain asks of a plant's rung, in a configuration's description.
+std::string gain_clause(double gain_per_ms) {
+    return "a dearer rung only where each ms of it puts right " + value_text(gain_per_ms) +
+           " pixels' worth of error";
+}
+
 // DESIGN §1.5 `auto`: each species' ladder with every plant's rung chosen per frame from the
 // species' measured rung tables so that the plants' predicted cost stays within `budget_ms`.
 bench_configuration_spec auto_ladder(double budget_ms) {
-    bench_configuration_spec c = ladder_configuration();
-    std::ostringstream value;
-    value << budget_ms;
-    c.name = "auto_" + value.str();
-    c.family = "auto";
-    c.description = "each species' ladder, every plant's rung chosen per frame by the budget solver from measured "
-                    "error and cost tables, plants' predicted cost within " + value.str() + " ms";
-    c.quality = budget_ms;
+    bench_configuration_spec c =
+        auto_configuration("auto_", "auto", budget_ms,
+                           "each species' ladder, every plant's rung chosen per frame by the "
+                           "budget solver from measured error and "
+                           "cost tables, plants' predicted cost within " +
+                               value_text(budget_ms) + " ms");
     c.options.plant_budget_ms = budget_ms;
     return c;
 }
@@ -244,16 +266,11 @@ bench_configuration_spec auto_ladder(double budget_ms) {
 // take more time than those where they are far (as the engine baseline's do), instead of every
 // frame spending one budget.
 bench_configuration_spec auto_gain(double gain_per_ms) {
-    bench_configuration_spec c = ladder_configuration();
-    std::ostringstream value;
-    value << gain_per_ms;
-    c.name = "auto_gain_" + value.str();
-    c.family = "auto_gain";
-    c.description =
-        "each species' ladder, every plant's rung chosen per frame from measured error and cost "
-        "tables: a dearer rung only where each ms of it puts right " +
-        value.str() + " pixels' worth of error";
-    c.quality = gain_per_ms;
+    bench_configuration_spec c =
+        auto_configuration("auto_gain_", "auto_gain", gain_per_ms,
+                           "each species' ladder, every plant's rung chosen per frame from "
+                           "measured error and cost tables: " +
+                               gain_clause(gain_per_ms));
     c.options.gain_per_ms = gain_per_ms;
     return c;
 }
@@ -449,12 +466,9 @@ std::optional<bench_configuration_spec> command_line_configuration(const scenari
             c.options.target_frame_ms = lod.target_frame_ms;
         }
         if (lod.gain_per_ms > 0.0) {
-            std::ostringstream gain;
-            gain << lod.gain_per_ms;
             if (c.family == "auto") {
-                c.name += "_gain_" + gain.str();
-                c.description += ", a dearer rung only where each ms of it puts right " +
-                                 gain.str() + " pixels' worth of error";
+                c.name += "_gain_" + value_text(lod.gain_per_ms);
+                c.description += ", " + gain_clause(lod.gain_per_ms);
                 c.options.gain_per_ms = lod.gain_per_ms;
             } else {
                 c = auto_gain(lod.gain_per_ms);

@@ -320,8 +320,7 @@ void scenario_player::step(frame_record& record) {
     m_world.set_frame_index(m_frame);
     rung_budget& budget = m_world.resource<rung_budget>();
     const seen_pixels& seen = m_world.resource<seen_pixels>();
-    if (budget.active() && budget.cut && seen.wanted && !seen.measured &&
-        m_world.resource<render_device>().renderer) {
+    if (budget.cut && seen.wanted && !seen.measured && m_world.resource<render_device>().renderer) {
         // The rehearsal (step's comment in the header): drawn for its counts, never shown.
         m_executor.run([&] { m_schedule.run(m_world, m_executor); });
         budget.cut = true;

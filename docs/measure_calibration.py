@@ -23,6 +23,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SYLVA = os.path.join(ROOT, "build", "bin", "sylva")
 
 
+def median_and_spread(values):
+    """The median and the largest distance of a value from it, in percent of it."""
+    median = statistics.median(values)
+    return median, max(abs(v / median - 1.0) for v in values) * 100.0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=5)
@@ -49,8 +55,7 @@ def main():
                 continue  # lines do not depend on the splat style
             values = [next(c[what] for c in r["costs_per_triangle"] if c["sample_distance_px"] == d and c["splats"] == splats)
                       for r in runs if "costs_per_triangle" in r]
-            median = statistics.median(values)
-            spread = max(abs(v / median - 1.0) for v in values) * 100.0
+            median, spread = median_and_spread(values)
             worst = max(worst, spread)
             label = f"{splats} splat" if what == "point" else "line"
             rows.append(f"| {d:g} | {label} | {median:.3f} | {min(values):.3f} – {max(values):.3f} | ±{spread:.1f} % |")
@@ -63,8 +68,7 @@ def main():
         values = [r["shader_work"]["costs"][key] for r in runs if "costs" in r.get("shader_work", {})]
         if not values:
             continue
-        median = statistics.median(values)
-        spread = max(abs(v / median - 1.0) for v in values) * 100.0
+        median, spread = median_and_spread(values)
         work_rows.append(f"| {label} | {median:.5f} | {min(values):.5f} – {max(values):.5f} | ±{spread:.1f} % |")
     work_refused = [r["shader_work"]["refused"] for r in runs if "refused" in r.get("shader_work", {})]
     commit = measure_meta.commit()
