@@ -2,7 +2,7 @@
 // The `ladder` arrays of a scenario's lod section and of a species (scenarios/scenario.h): read,
 // checked as a whole with the runtime's own rules (lod/ladder.h find_ladder_problem, so a ladder
 // the loader accepts is one the runtime can draw) and written back; an empty ladder is not
-// written. Apart from scenario_loader.cpp because two tables share it.
+// written. Apart from scenario_fields.cpp because two tables share it.
 #include <nlohmann/json.hpp>
 #include <vector>
 
