@@ -125,15 +125,16 @@ const field_table<terrain_settings>& terrain_fields() {
 
 const field_table<implicit_lighting_settings>& implicit_fields() {
     using t = implicit_lighting_settings;
-    static const auto table = field_table<t>()
-                                  .number("generator_fraction", &t::generator_fraction, {0.001, 1.0})
-                                  .number("rho_m", &t::rho_m, {0.0, 1000.0})
-                                  .number("tau", &t::tau, {0.0, 1000.0})
-                                  .number("ka_min", &t::ka_min, {0.0, 1.0})
-                                  .number("d_min", &t::d_min, {0.0, 1000.0})
-                                  .number("exponent", &t::exponent, {0.05, 20.0})
-                                  .number("blend", &t::blend, {0.0, 1.0})
-                                  .boolean("population", &t::population);
+    static const auto table =
+        field_table<t>()
+            .number("generator_fraction", &t::generator_fraction, {0.001, 1.0})
+            .number("rho_m", &t::rho_m, {0.0, 1000.0})
+            .number("tau", &t::tau, {0.0, 1000.0})
+            .number("ka_min", &t::ka_min, {0.0, 1.0})
+            .number("d_min", &t::d_min, {0.0, 1000.0})
+            .number("exponent", &t::exponent, {0.05, 20.0})
+            .number("blend", &t::blend, {0.0, 1.0})
+            .boolean("population", &t::population);
     return table;
 }
 
@@ -153,8 +154,9 @@ const field_table<species_settings>& species_fields() {
             .integer("octree_depth", &t::octree_depth, {0, 3})
             .choice("lighting", &t::lighting, k_species_lightings)
             .object("implicit", &t::implicit, implicit_fields())
-            .add("ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
-                 [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
+            .add(
+                "ladder", [](const json_node& n, t& s) { read_ladder(n, s.ladder); },
+                [](const t& s, nlohmann::json& j) { write_ladder(s.ladder, j); })
             .check([](const json_node& n, const t& s) {
                 expect_ordered(n, "reduced_distance_m", s.reduced_distance_m, "far_distance_m",
                                s.far_distance_m, false);
@@ -210,16 +212,19 @@ const field_table<population_settings>& population_fields() {
                 static const population_settings no_rules;
                 const bool ruled[] = {p.max_slope_deg != no_rules.max_slope_deg,
                                       p.min_altitude_m != no_rules.min_altitude_m,
-                                      p.max_altitude_m != no_rules.max_altitude_m, !p.density_map.empty(),
-                                      p.density.enabled};
-                const char* const keys[] = {"max_slope_deg", "min_altitude_m", "max_altitude_m", "density_map",
-                                            "density"};
+                                      p.max_altitude_m != no_rules.max_altitude_m,
+                                      !p.density_map.empty(), p.density.enabled};
+                const char* const keys[] = {"max_slope_deg", "min_altitude_m", "max_altitude_m",
+                                            "density_map", "density"};
                 if (p.placement == "wang_tiles")
                     for (std::size_t k = 0; k < std::size(keys); ++k)
                         if (ruled[k])
-                            n.find(keys[k])->fail("a population with placement \"wang_tiles\" is its tiles' plants wherever a "
-                                        "tile lies (so a shell of the tile shows exactly them): slope, altitude and "
-                                        "density rules cannot apply to it");
+                            n.find(keys[k])->fail(
+                                "a population with placement \"wang_tiles\" is its tiles' plants "
+                                "wherever a "
+                                "tile lies (so a shell of the tile shows exactly them): slope, "
+                                "altitude and "
+                                "density rules cannot apply to it");
             });
     return table;
 }
@@ -380,13 +385,16 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
     for (std::size_t i = 0; i < s.populations.size(); ++i) {
         const population_settings& p = s.populations[i];
         if (p.placement != "wang_tiles") continue;
-        if (!first_tiled) first_tiled = &p;
+        if (!first_tiled)
+            first_tiled = &p;
         else if (p.area != first_tiled->area) {
             const json_node population = n.find("populations")->at(i);
             const auto area = population.find("area");
             (area ? *area : population)
-                .fail("every population with placement \"wang_tiles\" must grow on the same area (its shells "
-                      "cover one area)");
+                .fail(
+                    "every population with placement \"wang_tiles\" must grow on the same area "
+                    "(its shells "
+                    "cover one area)");
         }
     }
     // Behrendt 2005 §3: the shell rung draws the Wang tiling's plants; a species drawn by it must
@@ -395,13 +403,17 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
     for (std::size_t sp = 0; sp < s.species.size(); ++sp) {
         const bool own = !s.species[sp].ladder.empty();
         const auto& steps = own ? s.species[sp].ladder : s.lod.ladder;
-        const auto shell = std::find_if(steps.begin(), steps.end(), [](const ladder_step_settings& st) { return st.rung == "shell"; });
+        const auto shell =
+            std::find_if(steps.begin(), steps.end(),
+                         [](const ladder_step_settings& st) { return st.rung == "shell"; });
         if (shell == steps.end() || s.lod.representation != "ladder") continue;
-        const json_node ladder = own ? *n.find("species")->at(sp).find("ladder") : *n.find("lod")->find("ladder");
+        const json_node ladder =
+            own ? *n.find("species")->at(sp).find("ladder") : *n.find("lod")->find("ladder");
         const json_node rung = *ladder.at(std::size_t(shell - steps.begin())).find("rung");
         for (const population_settings& p : s.populations)
             if (p.species == s.species[sp].name && p.placement != "wang_tiles")
-                rung.fail("species " + s.species[sp].name + " has a population not placed by \"wang_tiles\": the shell "
+                rung.fail("species " + s.species[sp].name +
+                          " has a population not placed by \"wang_tiles\": the shell "
                           "shows the Wang tiling's plants, and would lose the others");
     }
 }

@@ -1,17 +1,18 @@
 #pragma once
 // Billboard clouds for plants, Behrendt 2005 §2: the plant's triangles are clustered
-// (models/bake/vertex_clustering.h), each cluster gets a minimum-volume box (models/bake/oriented_box.h)
-// and one to three billboards by the shape of that box, and both sides of every billboard are
-// rendered from the cluster's own triangles (models/bake/billboard_bake.h) into one texture atlas.
+// (models/bake/vertex_clustering.h), each cluster gets a minimum-volume box
+// (models/bake/oriented_box.h) and one to three billboards by the shape of that box, and both sides
+// of every billboard are rendered from the cluster's own triangles (models/bake/billboard_bake.h)
+// into one texture atlas.
 //
 // The mesh: per billboard two one-sided quads in the same plane, the front side and the back
 // side (back_side()), each with its own image, the plane's normal toward its viewer and
 // counter-clockwise winding seen from that viewer, all in one material_kind::billboard sub-mesh.
 // Drawn with back faces culled, each side shows only to its own viewer (true two-sided
 // billboards): the runtime relabels the sub-mesh material_kind::billboard_cloud and draws it so
-// (setup/spawn_scenario.cpp, systems/render/passes/cloud_draw.cpp). Drawn double-sided, as crossed
-// billboards are, the two quads of a billboard share a depth and either may win; the loser's
-// image is the other's mirror with the same silhouette, so that degrades to the crossed
+// (setup/build_scene_assets.cpp, systems/render/passes/cloud_draw.cpp). Drawn double-sided, as
+// crossed billboards are, the two quads of a billboard share a depth and either may win; the
+// loser's image is the other's mirror with the same silhouette, so that degrades to the crossed
 // billboard's look, not to holes.
 //
 // The atlas (one layout, several pages of the same size):
