@@ -221,10 +221,8 @@ const field_table<population_settings>& population_fields() {
                         if (ruled[k])
                             n.find(keys[k])->fail(
                                 "a population with placement \"wang_tiles\" is its tiles' plants "
-                                "wherever a "
-                                "tile lies (so a shell of the tile shows exactly them): slope, "
-                                "altitude and "
-                                "density rules cannot apply to it");
+                                "wherever a tile lies (so a shell of the tile shows exactly them): "
+                                "slope, altitude and density rules cannot apply to it");
             });
     return table;
 }
@@ -393,8 +391,7 @@ void expect_wang_tiles_fit(const json_node& n, const scenario& s) {
             (area ? *area : population)
                 .fail(
                     "every population with placement \"wang_tiles\" must grow on the same area "
-                    "(its shells "
-                    "cover one area)");
+                    "(its shells cover one area)");
         }
     }
     // Behrendt 2005 §3: the shell rung draws the Wang tiling's plants; a species drawn by it must
