@@ -254,8 +254,8 @@ bench_configuration_spec auto_ladder(double budget_ms) {
     bench_configuration_spec c =
         auto_configuration("auto_", "auto", budget_ms,
                            "each species' ladder, every plant's rung chosen per frame by the "
-                           "budget solver from measured error and "
-                           "cost tables, plants' predicted cost within " +
+                           "budget solver from measured error and cost tables, plants' "
+                           "predicted cost within " +
                                value_text(budget_ms) + " ms");
     c.options.plant_budget_ms = budget_ms;
     return c;

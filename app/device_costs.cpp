@@ -4,10 +4,9 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <mutex>
-#include <set>
 
 #include "app/metrics.h"
+#include "io/once_per_process.h"
 
 namespace sylva {
 namespace {
@@ -55,10 +54,7 @@ device_calibration decode(const std::vector<std::byte>& bytes) {
 
 // A refusal is said once per process and device, not once per player.
 void warn_once(const std::string& device, const std::string& why) {
-    static std::mutex mutex;
-    static std::set<std::string> said;
-    const std::lock_guard lock(mutex);
-    if (!said.insert(device).second) return;
+    if (!first_time_in_process("primitive cost refusal", device)) return;
     spdlog::warn(
         "the device calibration of primitive costs was refused ({}); points and lines select "
         "with the paper's costs (a triangle as three points). `sylva calibrate --force` "

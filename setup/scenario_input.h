@@ -4,23 +4,18 @@
 // the scenario is said once per process. Shared by build_scene_assets and spawn_scenario.
 #include <spdlog/spdlog.h>
 
-#include <mutex>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <string>
 
+#include "io/once_per_process.h"
 #include "scenarios/scenario.h"
 #include "scenarios/scenario_loader.h"
 
 namespace sylva {
 
-// A scenario's warning once per process: the bench and the tests build many players from one
-// scenario, and each would repeat it word for word.
+// A scenario's warning once per process (io/once_per_process.h).
 inline void warn_once(const std::string& message) {
-    static std::mutex mutex;
-    static std::set<std::string> said;
-    const std::lock_guard lock(mutex);
-    if (said.insert(message).second) spdlog::warn("{}", message);
+    if (first_time_in_process("scenario warning", message)) spdlog::warn("{}", message);
 }
 
 // Reads a file the scenario names (field `pointer`, a JSON Pointer); a file that cannot be used

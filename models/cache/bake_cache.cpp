@@ -7,12 +7,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <mutex>
-#include <set>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
 #include "io/input_file.h"
+#include "io/once_per_process.h"
 
 namespace sylva {
 
@@ -102,10 +101,7 @@ std::optional<std::vector<std::byte>> payload_of(const std::string& bytes, std::
 
 // Each damaged entry is reported once per process, however many players read it.
 bool first_report(const std::filesystem::path& path) {
-    static std::mutex mutex;
-    static std::set<std::string> reported;
-    const std::lock_guard lock(mutex);
-    return reported.insert(path.string()).second;
+    return first_time_in_process("damaged cache entry", path.string());
 }
 
 }  // namespace
