@@ -177,6 +177,9 @@ public:
     std::uint32_t shell_relights() const { return m_renderer ? m_renderer->shell_relights() : 0; }
     // What primitives cost where this player draws (measured, or as given in its options).
     const primitive_costs& costs() const { return m_world.resource<primitive_costs>(); }
+    // The auto ladder's tables (error and cost of each rung by size) and its budget; empty tables
+    // when the ladders switch by size.
+    const rung_budget& ladder_budget() const { return m_world.resource<rung_budget>(); }
 
 private:
     // The auto ladder's tables and budget (measured through `cache` on `context`), or an empty
