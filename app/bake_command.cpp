@@ -12,10 +12,10 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "app/rung_table_report.h"
 #include "app/scenario_options.h"
 #include "app/scenario_player.h"
 #include "io/input_file.h"
-#include "lod/ladder.h"
 #include "models/cache/bake_cache.h"
 #include "models/cache/plant_model_io.h"
 #include "scenarios/scenario_loader.h"
@@ -62,41 +62,6 @@ std::vector<species_settings> species_to_bake(const bake_options& o, std::uint64
     return out;
 }
 
-// What the auto ladder's solver chooses from (lod/rung_solver.h), per species: for each rung and
-// table size, the mean colour error per pixel of the plant's full geometry (of 1), and the cost
-// in microseconds of drawing it in the view and of casting its shadow, as this device's
-// calibration prices them. To see why a plant of some size takes the rung it does.
-void print_rung_tables(const scenario& s, const rung_budget& budget) {
-    if (!budget.active()) {
-        std::printf("'%s' switches its rungs by projected size: no rung tables\n", s.name.c_str());
-        return;
-    }
-    for (std::size_t species = 0; species < budget.tables.size(); ++species) {
-        const species_rung_tables& tables = budget.tables[species];
-        std::printf(
-            "\n%s: error per plant pixel (of 1), view and shadow cost (us), by projected size\n",
-            s.species[species].name.c_str());
-        std::printf("%-18s %-6s", "rung", "");
-        for (const float size : k_rung_table_sizes_px) std::printf(" %9.0fpx", double(size));
-        std::printf("\n%-18s %-6s", "plant pixels", "");
-        for (const float pixels : tables.plant_pixels) std::printf(" %11.0f", double(pixels));
-        std::printf("\n");
-        for (const rung_table& t : tables.rungs) {
-            const std::string name(rung_name(t.rung));
-            std::printf("%-18s %-6s", name.c_str(), "error");
-            for (std::size_t i = 0; i < k_rung_table_size_count; ++i)
-                std::printf(" %11.4f", tables.plant_pixels[i] > 0.0f
-                                           ? double(t.error[i] / tables.plant_pixels[i])
-                                           : 0.0);
-            std::printf("\n%-18s %-6s", "", "view");
-            for (const float us : t.cost_us) std::printf(" %11.1f", double(us));
-            std::printf("\n%-18s %-6s", "", "shadow");
-            for (const float us : t.shadow_cost_us) std::printf(" %11.1f", double(us));
-            std::printf("\n");
-        }
-    }
-}
-
 // What playing `s` makes beyond its species' bakes, made as `sylva play` makes it: the player
 // is built on a headless context at the scenario's size, through `cache`, and dropped.
 int bake_what_play_makes(const scenario& s, bake_cache& cache, bool print_tables) {
@@ -111,7 +76,11 @@ int bake_what_play_makes(const scenario& s, bake_cache& cache, bool print_tables
         spdlog::info("making what playing '{}' ({} representation) needs on {}", s.name,
                      s.lod.representation, context->renderer());
         const scenario_player player(s, 0, context.get(), &cache);
-        if (print_tables) print_rung_tables(s, player.ladder_budget());
+        if (print_tables) {
+            std::vector<std::string> names;
+            for (const species_settings& species : s.species) names.push_back(species.name);
+            std::fputs(rung_table_report(s.name, names, player.ladder_budget()).c_str(), stdout);
+        }
     } catch (const std::exception& e) {
         spdlog::error("{}; the species above are baked, the rest is made at the first play",
                       e.what());
