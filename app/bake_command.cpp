@@ -105,6 +105,11 @@ int bake(const bake_options& o) {
         spdlog::error("{}", e.what());
         return k_exit_bad_input;
     }
+    if (o.print_tables && !loaded) {
+        spdlog::error("{}: --print-tables prints a scenario's rung tables; a model has none",
+                      o.input);
+        return k_exit_bad_input;
+    }
     bake_cache cache(o.cache_dir);
     if (o.force) cache.rebake_all();
     try {

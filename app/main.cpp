@@ -1,7 +1,8 @@
 // sylva: real-time rendering of plant ecosystems. See README.md, or `sylva --help`.
-#include <CLI/CLI.hpp>
 #include <malloc.h>
 #include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
 
 #include "app/commands.h"
 #include "app/run_options.h"

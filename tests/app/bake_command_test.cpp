@@ -1,5 +1,6 @@
 // `sylva bake`: the first run bakes every species into the cache, the second finds them all; for
-// a scenario playing the auto ladder it also measures the rung tables, so its play measures none.
+// a scenario playing the auto ladder it also measures the rung tables, so its play measures none,
+// and prints them when asked.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -71,8 +72,13 @@ TEST(bake_command, a_scenario_s_auto_ladder_tables_are_measured_so_its_play_meas
     ASSERT_EQ(baked.first, 0) << baked.second;
     EXPECT_NE(baked.second.find("measuring the rung tables of spruce"), std::string::npos)
         << baked.second;
-    const auto again = run("bake " + scenario.string() + cache);
+    // Again, printing what the solver chooses from: the tables come from the cache.
+    const auto again = run("bake " + scenario.string() + cache + " --print-tables");
     EXPECT_NE(again.second.find(", 0 made,"), std::string::npos) << again.second;
+    EXPECT_NE(again.second.find("spruce: error per plant pixel"), std::string::npos)
+        << again.second;
+    EXPECT_NE(again.second.find("\nmesh_full          error"), std::string::npos) << again.second;
+    EXPECT_NE(again.second.find("\ncrossed_billboard  error"), std::string::npos) << again.second;
     const test::command_result played = test::run_command(
         "SYLVA_CACHE_DIR=" + (dir / "cache").string() + " " + test::sylva_binary() + " play " +
         scenario.string() + " --headless --out " + (dir / "out").string());
