@@ -9,6 +9,10 @@
 // the first SH coefficient of the radiance transfer (models/bake/radiance_transfer.h) divided by
 // its unoccluded value π·Y_00, so the rays and the leaves' alpha test are the transfer bake's.
 //
+// Eq. 4's d_v is the bake's (ambient_source: the depth below the iso-surface by default, or the
+// paper's density F(v) with --ambient-from density); beside k_a the unclamped d_v, which bounds
+// what any Eq. 4 mapping (k_a,min, d_min, n) can rank for that ρ and τ.
+//
 // Beside them, how smooth the occlusion itself is: each leaf vertex ranked by the mean occlusion
 // of the other leaves' vertices within ρ/4 of it (the field's own grid cell). Where that ranks
 // well and −F does not, the occlusion is a smooth function of position but not one the density
@@ -32,6 +36,7 @@
 #include "models/bake/lodf_leaves.h"
 #include "models/bake/nanoflann_points.h"
 #include "models/bake/radiance_transfer.h"
+#include "scenarios/scenario.h"
 
 namespace sylva {
 namespace {
@@ -41,6 +46,7 @@ struct implicit_ao_options {
     std::uint32_t rays = 256;
     std::uint64_t seed = 1;
     implicit_settings implicit;  // 0 for rho/tau/d_min: the bake's defaults
+    std::string ambient_from = "depth";  // implicit.source, one of k_ambient_sources
     std::string json;
 };
 
@@ -49,10 +55,11 @@ struct ao_result {
     std::size_t vertices = 0;
     double implicit_rho = 0.0;
     double ellipsoid_rho = 0.0;
-    double density_rho = 0.0;  // −F itself: the best any k_a falling with F can rank
+    double unclamped_rho = 0.0;  // −d_v itself: the best any k_a falling with d_v can rank
     double foliage_rho = 0.0;  // k_a on the leaves' vertices alone
     double neighbours_rho = 0.0;  // the other leaves' occlusion within ρ/4 (leaves only)
     double ka_min_share = 0.0;  // vertices at k_a,min (tied: Eq. 4 saturates at d_min)
+    double bark_share = 0.0;    // vertices not on a leaf: trunk and branches
     implicit_settings used;
     double bake_s = 0.0;  // bake_implicit_illumination on every level, on this machine's threads
 };
@@ -117,6 +124,7 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     }
     // Eq. 4's k_a, as the bake stores it.
     implicit_settings implicit = o.implicit;
+    implicit.source = o.ambient_from == "density" ? ambient_source::density : ambient_source::depth;
     implicit.seed = o.seed;
     const auto start = std::chrono::steady_clock::now();
     const implicit_report report = bake_implicit_illumination(plant, implicit);
@@ -127,12 +135,32 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
         ka[v] = glm::length(plant.lods[0].vertices[v].normal);
         at_min += ka[v] <= double(report.used.ka_min) + 1e-4 ? 1 : 0;
     }
-    // The field itself, unclamped: Eq. 4 is monotone in F, so −F bounds what any (k_a,min, d_min,
+    // d_v itself, unclamped: Eq. 4 is monotone in d_v, so −d_v bounds what any (k_a,min, d_min,
     // n) can reach for this ρ and τ.
     const implicit_field field(foliage_generators(original, implicit.generator_fraction, implicit.seed),
                                report.used.rho_m, report.used.tau);
-    std::vector<double> density(ka.size());
-    for (std::size_t v = 0; v < ka.size(); ++v) density[v] = -double(field.value(original.vertices[v].position));
+    std::vector<double> unclamped(ka.size());
+    if (report.used.source == ambient_source::density) {
+        for (std::size_t v = 0; v < ka.size(); ++v)
+            unclamped[v] = -double(field.value(original.vertices[v].position));
+    } else {
+        const density_grid grid =
+            sample_density(field, report.used.rho_m / report.used.cells_per_rho);
+        const iso_surface surface = extract_iso_surface(field, grid);
+        const nanoflann_points cloud{&surface.positions};
+        point_kd_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+        tree.buildIndex();
+        for (std::size_t v = 0; v < ka.size(); ++v) {
+            const glm::vec3& q = original.vertices[v].position;
+            std::uint32_t j = 0;
+            float d2 = 0.0f;
+            tree.knnSearch(&q.x, 1, &j, &d2);
+            unclamped[v] =
+                surface.positions.empty()
+                    ? 0.0
+                    : -double(depth_below_surface(grid.density_at(q) - report.used.tau, d2));
+        }
+    }
     // The naive method: 1 − the vertex's radial depth inside the foliage's axis-aligned bounding
     // ellipsoid (1 at its rim, 0 at its centre).
     glm::vec3 lo(1e30f), hi(-1e30f);
@@ -147,7 +175,7 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     r.vertices = ka.size();
     r.implicit_rho = spearman_correlation(ka, visibility);
     r.ellipsoid_rho = spearman_correlation(ellipsoid, visibility);
-    r.density_rho = spearman_correlation(density, visibility);
+    r.unclamped_rho = spearman_correlation(unclamped, visibility);
     std::vector<double> leaf_ka, leaf_visibility;
     for (std::size_t v = 0; v < ka.size(); ++v)
         if (leaf[v]) leaf_ka.push_back(ka[v]), leaf_visibility.push_back(visibility[v]);
@@ -155,6 +183,7 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     r.neighbours_rho =
         neighbours_correlation(original, leaf, visibility, 0.25f * report.used.rho_m);
     r.ka_min_share = double(at_min) / double(std::max<std::size_t>(ka.size(), 1));
+    r.bark_share = 1.0 - double(leaf_ka.size()) / double(std::max<std::size_t>(ka.size(), 1));
     r.used = report.used;
     r.bake_s = bake_s;
     return r;
@@ -175,28 +204,33 @@ int implicit_ao(const implicit_ao_options& o) {
             return k_exit_failure;
         }
     }
+    const bool depth = o.ambient_from != "density";
     std::printf("%-16s %9s | %12s %12s %12s %12s %12s | %9s | %7s %9s %9s | %6s\n", "model",
-                "vertices", "Spearman k_a", "ellipsoid", "-F (bound)", "leaves only", "neighbours",
-                "at k_amin", "rho m", "tau", "d_min", "bake s");
+                "vertices", "Spearman k_a", "ellipsoid", depth ? "-depth bound" : "-F (bound)",
+                "leaves only", "neighbours", "at k_amin", "rho m", "tau",
+                depth ? "d_min m" : "d_min", "bake s");
     nlohmann::ordered_json json = nlohmann::ordered_json::array();
     for (const ao_result& r : results) {
         std::printf(
             "%-16s %9zu | %12.3f %12.3f %12.3f %12.3f %12.3f | %8.1f%% | %7.3f %9.4f %9.4f | "
             "%6.2f\n",
-            r.name.c_str(), r.vertices, r.implicit_rho, r.ellipsoid_rho, r.density_rho,
+            r.name.c_str(), r.vertices, r.implicit_rho, r.ellipsoid_rho, r.unclamped_rho,
             r.foliage_rho, r.neighbours_rho, 100.0 * r.ka_min_share, r.used.rho_m, r.used.tau,
-            r.used.d_min, r.bake_s);
+            depth ? r.used.depth_min_m : r.used.d_min, r.bake_s);
         json.push_back({{"model", r.name},
                         {"vertices", r.vertices},
                         {"spearman_implicit", r.implicit_rho},
                         {"spearman_ellipsoid", r.ellipsoid_rho},
-                        {"spearman_density", r.density_rho},
+                        {"ambient_from", depth ? "depth" : "density"},
+                        {"spearman_unclamped", r.unclamped_rho},
                         {"spearman_foliage", r.foliage_rho},
                         {"spearman_neighbours", r.neighbours_rho},
                         {"ka_min_share", r.ka_min_share},
+                        {"bark_share", r.bark_share},
                         {"rho_m", r.used.rho_m},
                         {"tau", r.used.tau},
                         {"d_min", r.used.d_min},
+                        {"depth_min_m", r.used.depth_min_m},
                         {"bake_s", r.bake_s},
                         {"rays", o.rays}});
     }
@@ -218,7 +252,17 @@ command_runner add_implicit_ao_command(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     app.add_option("--tau", options->implicit.tau, "Threshold tau (Eq. 3; 0: the bake's default)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--d-min", options->implicit.d_min, "d_min of Eq. 4 (0: the bake's default)")
+    app.add_option(
+           "--ambient-from", options->ambient_from,
+           "Eq. 4's d_v: depth (below the iso-surface; the default) or density (F, the paper's)")
+        ->check(CLI::IsMember(
+            std::vector<std::string>(k_ambient_sources.begin(), k_ambient_sources.end())))
+        ->capture_default_str();
+    app.add_option("--d-min", options->implicit.d_min,
+                   "d_min of Eq. 4 for density (0: the bake's default)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--depth-min", options->implicit.depth_min_m,
+                   "d_min of Eq. 4 for depth, in metres (0: the bake's default)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--generator-fraction", options->implicit.generator_fraction,
                    "Share of foliage triangles that are generators (§3.1)")

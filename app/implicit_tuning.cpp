@@ -65,7 +65,9 @@ void write_implicit_settings(const std::filesystem::path& path, std::size_t inde
     implicit["rho_m"] = settings.rho_m;
     implicit["tau"] = settings.tau;
     implicit["ka_min"] = settings.ka_min;
+    implicit["ambient_from"] = settings.ambient_from;
     implicit["d_min"] = settings.d_min;
+    implicit["depth_min_m"] = settings.depth_min_m;
     implicit["exponent"] = settings.exponent;
     implicit["blend"] = settings.blend;
     implicit["population"] = settings.population;

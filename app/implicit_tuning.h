@@ -1,11 +1,11 @@
 #pragma once
 // Luft 2007 §3.1: "Experience proved that the interactive specification of these parameters is
 // necessary ... only user-driven fine tuning offers the best results." The viewer's tuning panel
-// (app/view_command.cpp) edits a species' ρ, τ, k_a,min, d_min, n and blend; this re-bakes the
-// scene's assets with the new values on a background thread (most species come from the bake
-// cache; the tuned one is baked again), reports its progress, and hands the assets over for the
-// viewer to swap its player. write_implicit_settings writes the chosen values back into the
-// scenario file, changing nothing else in it.
+// (app/view_command.cpp) edits a species' ρ, τ, k_a,min, Eq. 4's d_v and d_min, n and blend;
+// this re-bakes the scene's assets with the new values on a background thread (most species come
+// from the bake cache; the tuned one is baked again), reports its progress, and hands the assets
+// over for the viewer to swap its player. write_implicit_settings writes the chosen values back
+// into the scenario file, changing nothing else in it.
 #include <atomic>
 #include <filesystem>
 #include <future>

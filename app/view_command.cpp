@@ -104,7 +104,17 @@ bool tuning_panel(tuning_state& t, const scenario& s, const scene_assets& assets
     ImGui::SliderFloat("rho (m)", &v.rho_m, 0.01f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     ImGui::SliderFloat("tau", &v.tau, 0.01f, 500.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     ImGui::SliderFloat("ka,min", &v.ka_min, 0.0f, 1.0f, "%.2f");
-    ImGui::SliderFloat("d_min", &v.d_min, 0.01f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    int source = v.ambient_from == "density" ? 1 : 0;
+    if (ImGui::Combo("ambient from", &source, "depth below the surface\0density F (paper)\0"))
+        v.ambient_from = std::string(k_ambient_sources[std::size_t(source)]);
+    if (source == 1) {
+        ImGui::SliderFloat("d_min", &v.d_min, 0.01f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    } else {
+        // 0 asks the bake for its default (twice the foliage's median depth), which only the bake
+        // knows: it needs the iso-surface.
+        ImGui::SliderFloat("depth d_min (m)", &v.depth_min_m, 0.0f, 20.0f,
+                           v.depth_min_m > 0.0f ? "%.3f" : "derived", ImGuiSliderFlags_Logarithmic);
+    }
     ImGui::SliderFloat("n", &v.exponent, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     ImGui::SliderFloat("blend", &v.blend, 0.0f, 1.0f, "%.2f");
     bool rebake = false;

@@ -61,8 +61,12 @@
 //       radius tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
 //                                                foliage's own median density
 //       ka_min           number     0.3          0 .. 1; k_a,min (Eq. 4)
-//       d_min            number     0            0 .. 1000; d_min (Eq. 4); 0: the foliage's
-//                                                median density less τ
+//       ambient_from     string     "depth"      Eq. 4's d_v: "depth" (below the iso-surface,
+//                                                metres) or "density" (F(v), the paper's)
+//       d_min            number     0            0 .. 1000; d_min (Eq. 4) for "density"; 0:
+//                                                twice the foliage's median density less τ
+//       depth_min_m      number     0            0 .. 1000; d_min (Eq. 4) for "depth"; 0: twice
+//                                                the foliage's median depth
 //       exponent         number     1            0.05 .. 20; n (Eq. 4)
 //       blend            number     1            0 .. 1; 1: the iso-surface's normal, 0: the
 //                                                original (§3.3)
@@ -300,6 +304,8 @@ struct ladder_step_settings {
     bool operator==(const ladder_step_settings&) const = default;
 };
 
+inline constexpr std::array<std::string_view, 2> k_ambient_sources{"depth", "density"};
+
 // Luft 2007 (models/bake/implicit_illumination.h): a species' implicit-surface illumination,
 // baked into its model when its lighting is "implicit". 0 for rho_m, tau and d_min: derived
 // from the model's foliage (its size and its own density).
@@ -314,7 +320,11 @@ struct implicit_lighting_settings {
     float rho_m = 0.0f;                // ρ (Eq. 2)
     float tau = 0.0f;                  // τ (Eq. 3)
     float ka_min = 0.3f;               // k_a,min (Eq. 4)
-    float d_min = 0.0f;                // d_min (Eq. 4)
+    // Eq. 4's d_v (models/bake/implicit_illumination.h, ambient_source): "depth" below the
+    // iso-surface (ranks ray-cast occlusion better) or "density", the paper's F(v).
+    std::string ambient_from = "depth";  // one of k_ambient_sources
+    float d_min = 0.0f;                  // d_min (Eq. 4) for "density"
+    float depth_min_m = 0.0f;            // d_min (Eq. 4) for "depth", in metres
     float exponent = 1.0f;             // n (Eq. 4)
     float blend = 1.0f;                // 1: the iso-surface's normal; 0: the original (§3.3)
     // §5: this species' plants are darkened by their neighbours' density too (the field of the

@@ -131,7 +131,9 @@ const field_table<implicit_lighting_settings>& implicit_fields() {
             .number("rho_m", &t::rho_m, {0.0, 1000.0})
             .number("tau", &t::tau, {0.0, 1000.0})
             .number("ka_min", &t::ka_min, {0.0, 1.0})
+            .choice("ambient_from", &t::ambient_from, k_ambient_sources)
             .number("d_min", &t::d_min, {0.0, 1000.0})
+            .number("depth_min_m", &t::depth_min_m, {0.0, 1000.0})
             .number("exponent", &t::exponent, {0.05, 20.0})
             .number("blend", &t::blend, {0.0, 1.0})
             .boolean("population", &t::population);

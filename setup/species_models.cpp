@@ -89,8 +89,16 @@ std::uint64_t species_model_key(const species_settings& species, std::uint64_t s
     if (!bakes_implicit(species)) return key;
     // Luft 2007's normals are the model's own: every bake made from the model keys on them.
     const implicit_lighting_settings& i = species.implicit;
-    const std::array<float, 8> fields{float(k_implicit_format), i.generator_fraction, i.rho_m, i.tau, i.ka_min,
-                                      i.d_min, i.exponent, i.blend};
+    const std::array<float, 10> fields{float(k_implicit_format),
+                                       i.generator_fraction,
+                                       i.rho_m,
+                                       i.tau,
+                                       i.ka_min,
+                                       i.d_min,
+                                       i.exponent,
+                                       i.blend,
+                                       float(implicit_settings_of(species, seed).source),
+                                       i.depth_min_m};
     return hash_bytes(std::as_bytes(std::span(fields)), hash_string("implicit", key));
 }
 
@@ -103,6 +111,8 @@ implicit_settings implicit_settings_of(const species_settings& species, std::uin
     out.tau = i.tau;
     out.ka_min = i.ka_min;
     out.d_min = i.d_min;
+    out.source = i.ambient_from == "density" ? ambient_source::density : ambient_source::depth;
+    out.depth_min_m = i.depth_min_m;
     out.exponent = i.exponent;
     out.blend = i.blend;
     return out;
@@ -127,10 +137,11 @@ plant_model load_species_model(const species_settings& species, std::uint64_t se
                                 : import_species_model(species.model);
         if (bakes_implicit(species)) {
             const implicit_report r = bake_implicit_illumination(model, implicit_settings_of(species, seed));
-            spdlog::info("{}: implicit illumination from {} generators, ρ {:.3g} m, τ {:.3g}, d_min {:.3g}: "
-                         "{} surface vertices, mean k_a {:.2f}",
-                         species.name, r.generators, r.used.rho_m, r.used.tau, r.used.d_min, r.surface_vertices,
-                         r.mean_ka);
+            spdlog::info(
+                "{}: implicit illumination from {} generators, ρ {:.3g} m, τ {:.3g}, d_min {:.3g}, "
+                "depth d_min {:.3g} m: {} surface vertices, mean k_a {:.2f}",
+                species.name, r.generators, r.used.rho_m, r.used.tau, r.used.d_min,
+                r.used.depth_min_m, r.surface_vertices, r.mean_ka);
         }
         return serialize_plant_model(model);
     };

@@ -29,7 +29,8 @@ std::uint64_t species_seed_of(std::uint64_t scenario_seed, std::size_t index);
 std::uint64_t species_model_key(const species_settings& species, std::uint64_t seed);
 
 // Bumped when the implicit illumination bake (models/bake/implicit_illumination.h) changes.
-constexpr std::uint32_t k_implicit_format = 2;  // 2: F read from samples, d_min = 2 (m − τ)
+constexpr std::uint32_t k_implicit_format =
+    3;  // 3: Eq. 4 of the depth below the surface by default
 
 // `species` with its lighting resolved: "scenario" becomes the scenario's lod.lighting. Every
 // load_species_* below reads `lighting` ("implicit" bakes Luft 2007 into the model), so callers

@@ -1,12 +1,14 @@
 #include "models/bake/implicit_illumination.h"
 
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <memory>
 #include <nanoflann.hpp>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/VolumeToMesh.h>
 #include <stdexcept>
 
 #include "ecs/parallel.h"
@@ -235,6 +237,30 @@ sampled_defaults sample_with_defaults(const std::vector<glm::vec3>& generators, 
 
 }  // namespace
 
+float default_depth_min(const std::vector<glm::vec3>& generators, const density_grid& grid,
+                        const iso_surface& surface, float tau) {
+    // implicit_defaults' rule for d_min, in depth: twice the foliage's median depth. The nearest
+    // surface vertex lies on a marching-cubes cell edge, so a depth reads up to about a cell
+    // long; at least one cell, the depth's own resolution.
+    float median = 0.0f;
+    if (!surface.positions.empty() && !generators.empty()) {
+        const point_cloud cloud{&surface.positions};
+        point_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+        tree.buildIndex();
+        std::vector<float> depths(generators.size());
+        for (std::size_t i = 0; i < generators.size(); ++i) {
+            std::uint32_t j = 0;
+            float d2 = 0.0f;
+            tree.knnSearch(&generators[i].x, 1, &j, &d2);
+            depths[i] = depth_below_surface(grid.density_at(generators[i]) - tau, d2);
+        }
+        std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2),
+                         depths.end());
+        median = depths[depths.size() / 2];
+    }
+    return std::max(2.0f * median, grid.cell_m);
+}
+
 implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings s) {
     if (generators.empty()) return s;
     if (s.tau > 0.0f && s.d_min > 0.0f) {
@@ -257,18 +283,24 @@ void apply_implicit_illumination(mesh_data& mesh, const density_grid& grid, cons
         const std::size_t end = std::min(mesh.vertices.size(), (chunk + 1) * k_chunk);
         for (std::size_t i = chunk * k_chunk; i < end; ++i) {
             vertex& v = mesh.vertices[i];
-            // §3.2: k_a from the density at the vertex (Eq. 4), F = Σ D_i − τ (Eq. 3).
-            const float ka = ambient_coefficient(grid.density_at(v.position) - settings.tau, settings.ka_min,
-                                                 settings.d_min, settings.exponent);
+            const float f = grid.density_at(v.position) - settings.tau;  // F = Σ D_i − τ (Eq. 3)
             // §3.3: the normal of the nearest iso-surface vertex, or a mix with the original.
             glm::vec3 n = glm::length(v.normal) > 0.0f ? glm::normalize(v.normal) : glm::vec3(0.0f, 1.0f, 0.0f);
+            float depth = -std::numeric_limits<float>::infinity();  // no surface: nothing is inside
             if (nearest) {
                 std::uint32_t j = 0;
                 float d2 = 0.0f;
                 nearest->knnSearch(&v.position.x, 1, &j, &d2);
+                depth = depth_below_surface(f, d2);
                 const glm::vec3 mixed = glm::mix(n, surface.normals[j], settings.blend);
                 if (glm::length(mixed) > 1e-6f) n = glm::normalize(mixed);
             }
+            // §3.2, Eq. 4: k_a from d_v, the depth below the surface or F itself (ambient_source).
+            const float ka =
+                settings.source == ambient_source::depth
+                    ? ambient_coefficient(depth, settings.ka_min, settings.depth_min_m,
+                                          settings.exponent)
+                    : ambient_coefficient(f, settings.ka_min, settings.d_min, settings.exponent);
             // §3.2 end: the normal's length carries k_a; never 0, which would lose its direction.
             v.normal = n * std::max(ka, 1.0f / 256.0f);
         }
@@ -287,6 +319,8 @@ implicit_report bake_implicit_illumination(plant_model& plant, const implicit_se
     const implicit_field field(generators, report.used.rho_m, report.used.tau);
     const iso_surface surface = extract_iso_surface(field, grid);
     report.surface_vertices = surface.positions.size();
+    if (report.used.source == ambient_source::depth && !(report.used.depth_min_m > 0.0f))
+        report.used.depth_min_m = default_depth_min(generators, grid, surface, report.used.tau);
     for (mesh_data& level : plant.lods) apply_implicit_illumination(level, grid, surface, report.used);
     double sum = 0.0;
     for (const vertex& v : plant.lods[0].vertices) sum += double(glm::length(v.normal));

@@ -10,8 +10,10 @@
 //   - Its iso-surface F = 0, extracted by OpenVDB's volume-to-mesh from F sampled on a grid
 //     (§2.3: "a Marching Cube algorithm [LC87] or one of its derivatives").
 //   - Per vertex of the plant (foliage, trunk and branches alike, §3.2 end): the ambient
-//     coefficient k_a from F at the vertex by Eq. 4, and the normal of the nearest iso-surface
-//     vertex (§3.3), optionally blended with the original.
+//     coefficient k_a by Eq. 4, and the normal of the nearest iso-surface vertex (§3.3),
+//     optionally blended with the original. Eq. 4's input d_v is by default the vertex's depth
+//     below the iso-surface (ambient_source::depth), not the paper's F(v) (ambient_source::
+//     density, kept): see ambient_source.
 //   - Stored as the normal scaled by k_a (§3.2 end: "the normal vector of each vertex is scaled by
 //     the corresponding ambient reflection coefficient"), so the vertex format does not grow; a
 //     shader decodes k_a as the normal's length.
@@ -31,14 +33,31 @@ namespace sylva {
 // not a plain unit normal: bakes made from the model keep the length where it does.
 inline bool carries_ambient(const vertex& v) { return std::abs(glm::length(v.normal) - 1.0f) >= 1e-4f; }
 
-// The paper's parameters. 0 for rho_m, tau or d_min: derived from the model (implicit_defaults).
+// What Eq. 4 maps to k_a. Luft 2007 §3.2 motivates the ambient term by "a gradual darkening from
+// the outer to the inner parts of the foliage" and then takes the density at the vertex,
+// d_v = F(v). F measures how many leaves lie within ρ, not how deep the vertex is: our crowns
+// bear their leaves on the outer twigs, so the densest foliage is near the crown's skin and the
+// inside is sparse, and F ranked ray-cast occlusion no better than 0.698 (broadleaf) whatever ρ
+// (`sylva implicit-ao --ambient-from density`, docs/results/implicit_lighting.md). The depth below
+// the paper's own iso-surface F = 0 - the distance to the nearest surface vertex, which §3.3's
+// realignment finds anyway, positive inside and negative outside - is that darkening from outer
+// to inner itself: it ranks occlusion 0.80 on broadleaf, and better on every generated tree.
+enum class ambient_source : std::uint8_t {
+    depth,    // d_v = depth below the iso-surface, in metres (d_min: depth_min_m)
+    density,  // d_v = F(v), the paper's (d_min: d_min)
+};
+
+// The paper's parameters. 0 for rho_m, tau, d_min or depth_min_m: derived from the model
+// (implicit_defaults).
 struct implicit_settings {
     float generator_fraction = 1.0f;  // §3.1: generators' share of foliage triangles (scenario.h)
     std::uint64_t seed = 1;
     float rho_m = 0.0f;        // ρ, every generator's radius of influence (Eq. 2)
     float tau = 0.0f;          // τ, the threshold (Eq. 3)
     float ka_min = 0.3f;       // k_a,min (Eq. 4)
-    float d_min = 0.0f;        // d_min (Eq. 4): the density of the foliage's core
+    float d_min = 0.0f;        // d_min (Eq. 4) for d_v = F(v): the density of the foliage's core
+    ambient_source source = ambient_source::depth;  // Eq. 4's d_v
+    float depth_min_m = 0.0f;  // d_min (Eq. 4) for d_v = depth: the depth of the foliage's core
     float exponent = 1.0f;     // n (Eq. 4)
     float blend = 1.0f;        // N' = normalize(mix(N, N_s, blend)); the paper uses 1 (§3.3)
     float cells_per_rho = 4.0f;  // the grid F is sampled on for the iso-surface: ρ / this
@@ -51,7 +70,7 @@ inline float generator_density(float d2, float rho) {
     return s2 < 1.0f ? (1.0f - s2) * (1.0f - s2) : 0.0f;
 }
 
-// Eq. 4: the ambient coefficient at density value d = F(v).
+// Eq. 4: the ambient coefficient at d = d_v (F(v) or the depth below the surface).
 float ambient_coefficient(float d, float ka_min, float d_min, float exponent);
 
 // The density field of a generator set (Eq. 3), with a k-d tree over the generators (nanoflann).
@@ -121,9 +140,24 @@ std::vector<glm::vec3> foliage_generators(const mesh_data& mesh, float fraction,
 //   the densest core reaches k_a,min (§3.2: "the core of the foliage where no variant ambient
 //   lighting is observed"). Measured: with m − τ the crown of single_tree lost 11.6 % of its
 //   mean luma and 42-51 % of a tree's vertices tied at k_a,min; with 2 (m − τ) 2.6 % and about
-//   10 %, and k_a ranks ray-cast occlusion better (docs/results/implicit_lighting.md).
+//   10 %, and k_a ranks ray-cast occlusion better (docs/results/implicit_lighting.md);
+//   depth_min_m = 2 × the generators' median depth below the iso-surface, by the same rule (the
+//   typical leaf halfway down the ramp): about 5 % of a tree's vertices at k_a,min.
 // The median is read from the sampled density (density_grid) at cells of ρ / cells_per_rho.
+// depth_min_m needs the iso-surface: implicit_defaults leaves it 0, the bake fills it in.
 implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings settings);
+
+// The depth of q below the iso-surface: the distance to its nearest vertex, positive where
+// F(q) > 0 (inside), negative outside; `nearest` finds that vertex's squared distance.
+inline float depth_below_surface(float f_at_q, float nearest_d2) {
+    const float d = std::sqrt(nearest_d2);
+    return f_at_q > 0.0f ? d : -d;
+}
+
+// depth_min_m's default: 2 × the generators' median depth below `surface` (F from `grid` less
+// τ), at least one of grid's cells.
+float default_depth_min(const std::vector<glm::vec3>& generators, const density_grid& grid,
+                        const iso_surface& surface, float tau);
 
 // What the bake did, for `sylva inspect` and the tests.
 struct implicit_report {
@@ -134,7 +168,8 @@ struct implicit_report {
 };
 
 // Rewrites every vertex normal of `mesh` as normalize(mix(N, N_s, blend)) × k_a, F at a vertex
-// read from `grid` (less settings.tau).
+// read from `grid` (less settings.tau), k_a by Eq. 4 of settings.source's d_v (depth_min_m must
+// be filled in for the depth).
 void apply_implicit_illumination(mesh_data& mesh, const density_grid& grid, const iso_surface& surface,
                                  const implicit_settings& settings);
 

@@ -36,6 +36,8 @@ TEST(implicit_tuning, write_back_changes_only_the_species_implicit_object) {
     v.ka_min = 0.1f;
     v.exponent = 2.0f;
     v.population = true;
+    v.ambient_from = "density";
+    v.depth_min_m = 0.75f;
     write_implicit_settings(file, 1, v);
     const std::string text = read_all(file);
     // Key order kept: "fps" before "frames" (a sorted writer would swap them).

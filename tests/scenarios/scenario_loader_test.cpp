@@ -886,9 +886,13 @@ TEST(scenario_loader, species_lighting_overrides_and_round_trips) {
 TEST(scenario_loader, implicit_lighting_parameters_load_and_round_trip) {
     json j = minimal();
     j["species"][0]["lighting"] = "implicit";
-    j["species"][0]["implicit"] = {{"rho_m", 0.8}, {"tau", 2.5}, {"ka_min", 0.2}, {"exponent", 3},
-                                   {"blend", 0.5}, {"generator_fraction", 0.1}, {"population", true}};
+    j["species"][0]["implicit"] = {{"rho_m", 0.8},       {"tau", 2.5},
+                                   {"ka_min", 0.2},      {"exponent", 3},
+                                   {"blend", 0.5},       {"generator_fraction", 0.1},
+                                   {"population", true}, {"depth_min_m", 1.5}};
     const scenario s = load(j);
+    EXPECT_EQ(s.species[0].implicit.ambient_from, "depth");  // the default
+    EXPECT_FLOAT_EQ(s.species[0].implicit.depth_min_m, 1.5f);
     EXPECT_TRUE(s.species[0].implicit.population);
     EXPECT_EQ(s.species[0].lighting, "implicit");
     EXPECT_FLOAT_EQ(s.species[0].implicit.rho_m, 0.8f);
@@ -899,6 +903,10 @@ TEST(scenario_loader, implicit_lighting_parameters_load_and_round_trip) {
     EXPECT_FLOAT_EQ(s.species[0].implicit.generator_fraction, 0.1f);
     EXPECT_FLOAT_EQ(s.species[0].implicit.d_min, 0.0f);  // derived from the model
     EXPECT_EQ(load_scenario_text(scenario_to_json_text(s), k_source), s);
+    j["species"][0]["implicit"]["ambient_from"] = "density";
+    const scenario paper = load(j);
+    EXPECT_EQ(paper.species[0].implicit.ambient_from, "density");
+    EXPECT_EQ(load_scenario_text(scenario_to_json_text(paper), k_source), paper);
 }
 
 TEST(scenario_loader, lod_fields_name_the_bad_value) {
@@ -922,8 +930,13 @@ TEST(scenario_loader, lod_fields_name_the_bad_value) {
     expect_error(set(set(minimal(), "/species/0/lighting", "implicit"), "/species/0/implicit", json{{"ka_min", 1.5}}),
                  {"/species/0/implicit/ka_min", "out of range; expected a number from 0 to 1", "1.5"});
     expect_error(set(minimal(), "/species/0/implicit", json{{"rho", 1}}),
-                 {"/species/0/implicit/rho", "unknown field; expected one of: generator_fraction, rho_m, tau, ka_min, "
-                  "d_min, exponent, blend, population", "1"});
+                 {"/species/0/implicit/rho",
+                  "unknown field; expected one of: generator_fraction, rho_m, tau, ka_min, "
+                  "ambient_from, d_min, depth_min_m, exponent, blend, population",
+                  "1"});
+    expect_error(set(minimal(), "/species/0/implicit", json{{"ambient_from", "occlusion"}}),
+                 {"/species/0/implicit/ambient_from",
+                  "unknown value; expected one of: depth, density", "\"occlusion\""});
     expect_error(set(minimal(), "/species/0/implicit", json{{"population", 1}}),
                  {"/species/0/implicit/population", "expected true or false", "1"});
     expect_error(set(minimal(), "/lod/sample_distance_px", 0),

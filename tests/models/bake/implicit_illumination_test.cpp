@@ -74,6 +74,7 @@ TEST(implicit_illumination, a_vertex_takes_the_nearest_surface_normal_and_ka_as_
     const density_grid grid = sample_density(field, 0.05f);
     const iso_surface surface = extract_iso_surface(field, grid);
     implicit_settings s;
+    s.source = ambient_source::density;  // the paper's d_v = F(v)
     s.tau = 0.25f;
     s.ka_min = 0.2f;
     s.d_min = 1.0f;
@@ -96,6 +97,42 @@ TEST(implicit_illumination, a_vertex_takes_the_nearest_surface_normal_and_ka_as_
     apply_implicit_illumination(kept, grid, surface, s);
     EXPECT_NEAR(glm::normalize(kept.vertices[0].normal).y, 1.0f, 1e-6f);
     EXPECT_NEAR(glm::length(kept.vertices[0].normal), glm::length(mesh.vertices[0].normal), 1e-6f);
+}
+
+// ambient_source::depth: Eq. 4 of the depth below the iso-surface instead of F.
+TEST(implicit_illumination, the_depth_below_the_surface_feeds_eq4) {
+    // The sphere of radius sqrt(1/2) above, sampled 0.05 apart from −1.05: on the +x axis the
+    // samples x = 0.70 and 0.75 hold D = 0.51² = 0.2601 and 0.4375² = 0.19140625, so marching
+    // cubes puts a vertex where D = τ = 1/4: x = 0.70 + 0.05·0.0101/0.06869375 = 0.707351.
+    const implicit_field field({{0.0f, 0.0f, 0.0f}}, 1.0f, 0.25f);
+    const density_grid grid = sample_density(field, 0.05f);
+    const iso_surface surface = extract_iso_surface(field, grid);
+    EXPECT_FLOAT_EQ(depth_below_surface(0.5f, 0.04f), 0.2f);    // inside: positive
+    EXPECT_FLOAT_EQ(depth_below_surface(-0.1f, 0.04f), -0.2f);  // outside: negative
+    EXPECT_FLOAT_EQ(depth_below_surface(0.0f, 0.04f),
+                    -0.2f);  // on F = 0: not inside (Eq. 4: k_a 1)
+    implicit_settings s;
+    ASSERT_EQ(s.source, ambient_source::depth);  // the default
+    s.tau = 0.25f;
+    s.ka_min = 0.2f;
+    s.depth_min_m = 1.0f;
+    s.d_min = 1e6f;  // the density's d_min: unused by the depth
+    s.exponent = 1.0f;
+    mesh_data mesh;
+    mesh.vertices = {{{0.3f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {}},   // inside, 0.407351 deep
+                     {{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {}},   // the centre, ~0.7071 deep
+                     {{0.0f, 0.0f, 2.0f}, {0.0f, 1.0f, 0.0f}, {}}};  // outside
+    apply_implicit_illumination(mesh, grid, surface, s);
+    // k_a = 0.2 + 0.8·(1 − 0.407351) = 0.674119; at the centre 0.2 + 0.8·(1 − 0.7071) = 0.4343
+    // (the nearest of the surface's vertices, each within half a cell of the sphere: ±0.02).
+    EXPECT_NEAR(glm::length(mesh.vertices[0].normal), 0.674119f, 2e-3f);
+    EXPECT_NEAR(glm::length(mesh.vertices[1].normal), 0.4343f, 0.02f);
+    EXPECT_NEAR(glm::length(mesh.vertices[2].normal), 1.0f, 1e-6f);
+    // The default d_min for depth: twice the generators' median depth, here the one generator at
+    // the centre: 2·sqrt(1/2) = 1.4142 (±2 half cells).
+    EXPECT_NEAR(default_depth_min({{0.0f, 0.0f, 0.0f}}, grid, surface, 0.25f), 1.4142f, 0.05f);
+    // No generator inside (τ above every density): at least one cell.
+    EXPECT_FLOAT_EQ(default_depth_min({{0.0f, 0.0f, 0.0f}}, grid, iso_surface{}, 0.25f), 0.05f);
 }
 
 TEST(implicit_illumination, the_sampled_density_interpolates_between_its_samples) {
@@ -167,6 +204,9 @@ TEST(implicit_illumination, a_generated_tree_is_darker_inside_and_bakes_the_same
     plant_model tree = generate_plant_model("broadleaf", 5, 64);
     plant_model again = tree;
     const implicit_report r = bake_implicit_illumination(tree, implicit_settings{});
+    // The depth's d_min filled in: the typical leaf a metre or so deep in a crown ~9 m across.
+    EXPECT_GT(r.used.depth_min_m, 1.0f);
+    EXPECT_LT(r.used.depth_min_m, 5.0f);
     EXPECT_GT(r.generators, 100u);
     EXPECT_GT(r.surface_vertices, 100u);
     EXPECT_GT(r.mean_ka, r.used.ka_min);
