@@ -124,7 +124,7 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
     }
     // Eq. 4's k_a, as the bake stores it.
     implicit_settings implicit = o.implicit;
-    implicit.source = o.ambient_from == "density" ? ambient_source::density : ambient_source::depth;
+    implicit.source = ambient_source_named(o.ambient_from);
     implicit.seed = o.seed;
     const auto start = std::chrono::steady_clock::now();
     const implicit_report report = bake_implicit_illumination(plant, implicit);
@@ -204,7 +204,7 @@ int implicit_ao(const implicit_ao_options& o) {
             return k_exit_failure;
         }
     }
-    const bool depth = o.ambient_from != "density";
+    const bool depth = ambient_source_named(o.ambient_from) == ambient_source::depth;
     std::printf("%-16s %9s | %12s %12s %12s %12s %12s | %9s | %7s %9s %9s | %6s\n", "model",
                 "vertices", "Spearman k_a", "ellipsoid", depth ? "-depth bound" : "-F (bound)",
                 "leaves only", "neighbours", "at k_amin", "rho m", "tau",

@@ -97,7 +97,7 @@ std::uint64_t species_model_key(const species_settings& species, std::uint64_t s
                                        i.d_min,
                                        i.exponent,
                                        i.blend,
-                                       float(implicit_settings_of(species, seed).source),
+                                       float(ambient_source_named(i.ambient_from)),
                                        i.depth_min_m};
     return hash_bytes(std::as_bytes(std::span(fields)), hash_string("implicit", key));
 }
@@ -111,7 +111,7 @@ implicit_settings implicit_settings_of(const species_settings& species, std::uin
     out.tau = i.tau;
     out.ka_min = i.ka_min;
     out.d_min = i.d_min;
-    out.source = i.ambient_from == "density" ? ambient_source::density : ambient_source::depth;
+    out.source = ambient_source_named(i.ambient_from);
     out.depth_min_m = i.depth_min_m;
     out.exponent = i.exponent;
     out.blend = i.blend;

@@ -22,6 +22,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "models/mesh.h"
@@ -46,6 +47,10 @@ enum class ambient_source : std::uint8_t {
     depth,    // d_v = depth below the iso-surface, in metres (d_min: depth_min_m)
     density,  // d_v = F(v), the paper's (d_min: d_min)
 };
+// The source a scenario's "ambient_from" names ("depth" or "density", scenarios/scenario.h).
+inline ambient_source ambient_source_named(std::string_view name) {
+    return name == "density" ? ambient_source::density : ambient_source::depth;
+}
 
 // The paper's parameters. 0 for rho_m, tau, d_min or depth_min_m: derived from the model
 // (implicit_defaults).
@@ -147,8 +152,8 @@ std::vector<glm::vec3> foliage_generators(const mesh_data& mesh, float fraction,
 // depth_min_m needs the iso-surface: implicit_defaults leaves it 0, the bake fills it in.
 implicit_settings implicit_defaults(const std::vector<glm::vec3>& generators, implicit_settings settings);
 
-// The depth of q below the iso-surface: the distance to its nearest vertex, positive where
-// F(q) > 0 (inside), negative outside; `nearest` finds that vertex's squared distance.
+// The depth of q below the iso-surface from F(q) and the squared distance to the surface's
+// nearest vertex: that distance, positive where F(q) > 0 (inside), negative outside.
 inline float depth_below_surface(float f_at_q, float nearest_d2) {
     const float d = std::sqrt(nearest_d2);
     return f_at_q > 0.0f ? d : -d;

@@ -113,6 +113,8 @@ TEST(implicit_illumination, the_depth_below_the_surface_feeds_eq4) {
                     -0.2f);  // on F = 0: not inside (Eq. 4: k_a 1)
     implicit_settings s;
     ASSERT_EQ(s.source, ambient_source::depth);  // the default
+    EXPECT_EQ(ambient_source_named("depth"), ambient_source::depth);
+    EXPECT_EQ(ambient_source_named("density"), ambient_source::density);
     s.tau = 0.25f;
     s.ka_min = 0.2f;
     s.depth_min_m = 1.0f;
