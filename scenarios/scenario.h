@@ -58,7 +58,8 @@
 //       generator_fraction number   1            0.001 .. 1; the foliage triangles that are
 //                                                generators (§3.1)
 //       rho_m            number     0            0 .. 1000; ρ (Eq. 2); 0: 0.2 x the foliage's
-//       radius tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
+//                                                radius
+//       tau              number     0            0 .. 1000; τ (Eq. 3); 0: a quarter of the
 //                                                foliage's own median density
 //       ka_min           number     0.3          0 .. 1; k_a,min (Eq. 4)
 //       ambient_from     string     "depth"      Eq. 4's d_v: "depth" (below the iso-surface,
@@ -307,8 +308,8 @@ struct ladder_step_settings {
 inline constexpr std::array<std::string_view, 2> k_ambient_sources{"depth", "density"};
 
 // Luft 2007 (models/bake/implicit_illumination.h): a species' implicit-surface illumination,
-// baked into its model when its lighting is "implicit". 0 for rho_m, tau and d_min: derived
-// from the model's foliage (its size and its own density).
+// baked into its model when its lighting is "implicit". 0 for rho_m, tau, d_min and depth_min_m:
+// derived from the model's foliage (its size, its own density and depth).
 struct implicit_lighting_settings {
     // §3.1: the share of foliage triangles that are generators. The paper takes one per primitive
     // and offers a random fraction as a shortcut for speed; the bake needs none (broadleaf_hd's
