@@ -147,19 +147,12 @@ ao_result measure(const std::string& argument, const implicit_ao_options& o) {
         const density_grid grid =
             sample_density(field, report.used.rho_m / report.used.cells_per_rho);
         const iso_surface surface = extract_iso_surface(field, grid);
-        const nanoflann_points cloud{&surface.positions};
-        point_kd_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-        tree.buildIndex();
-        for (std::size_t v = 0; v < ka.size(); ++v) {
-            const glm::vec3& q = original.vertices[v].position;
-            std::uint32_t j = 0;
-            float d2 = 0.0f;
-            tree.knnSearch(&q.x, 1, &j, &d2);
-            unclamped[v] =
-                surface.positions.empty()
-                    ? 0.0
-                    : -double(depth_below_surface(grid.density_at(q) - report.used.tau, d2));
-        }
+        std::vector<glm::vec3> positions(ka.size());
+        for (std::size_t v = 0; v < ka.size(); ++v) positions[v] = original.vertices[v].position;
+        const std::vector<float> depths =
+            depths_below_surface(positions, grid, surface, report.used.tau);
+        for (std::size_t v = 0; v < ka.size(); ++v)
+            unclamped[v] = surface.positions.empty() ? 0.0 : -double(depths[v]);
     }
     // The naive method: 1 − the vertex's radial depth inside the foliage's axis-aligned bounding
     // ellipsoid (1 at its rim, 0 at its centre).

@@ -237,6 +237,23 @@ sampled_defaults sample_with_defaults(const std::vector<glm::vec3>& generators, 
 
 }  // namespace
 
+std::vector<float> depths_below_surface(const std::vector<glm::vec3>& points,
+                                        const density_grid& grid, const iso_surface& surface,
+                                        float tau) {
+    std::vector<float> depths(points.size(), -std::numeric_limits<float>::infinity());
+    if (surface.positions.empty()) return depths;
+    const point_cloud cloud{&surface.positions};
+    point_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        std::uint32_t j = 0;
+        float d2 = 0.0f;
+        tree.knnSearch(&points[i].x, 1, &j, &d2);
+        depths[i] = depth_below_surface(grid.density_at(points[i]) - tau, d2);
+    }
+    return depths;
+}
+
 float default_depth_min(const std::vector<glm::vec3>& generators, const density_grid& grid,
                         const iso_surface& surface, float tau) {
     // implicit_defaults' rule for d_min, in depth: twice the foliage's median depth. The nearest
@@ -244,16 +261,7 @@ float default_depth_min(const std::vector<glm::vec3>& generators, const density_
     // long; at least one cell, the depth's own resolution.
     float median = 0.0f;
     if (!surface.positions.empty() && !generators.empty()) {
-        const point_cloud cloud{&surface.positions};
-        point_tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-        tree.buildIndex();
-        std::vector<float> depths(generators.size());
-        for (std::size_t i = 0; i < generators.size(); ++i) {
-            std::uint32_t j = 0;
-            float d2 = 0.0f;
-            tree.knnSearch(&generators[i].x, 1, &j, &d2);
-            depths[i] = depth_below_surface(grid.density_at(generators[i]) - tau, d2);
-        }
+        std::vector<float> depths = depths_below_surface(generators, grid, surface, tau);
         std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2),
                          depths.end());
         median = depths[depths.size() / 2];

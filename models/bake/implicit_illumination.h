@@ -159,6 +159,12 @@ inline float depth_below_surface(float f_at_q, float nearest_d2) {
     return f_at_q > 0.0f ? d : -d;
 }
 
+// depth_below_surface at every point of `points` (F from `grid` less τ); none inside when the
+// surface is empty.
+std::vector<float> depths_below_surface(const std::vector<glm::vec3>& points,
+                                        const density_grid& grid, const iso_surface& surface,
+                                        float tau);
+
 // depth_min_m's default: 2 × the generators' median depth below `surface` (F from `grid` less
 // τ), at least one of grid's cells.
 float default_depth_min(const std::vector<glm::vec3>& generators, const density_grid& grid,
